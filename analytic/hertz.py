@@ -1,0 +1,752 @@
+r"""Hertz contact of two elastic bodies: point (elliptical) and line contact.
+
+Conventions (Hamrock & Dowson 1981, ch. 3; Ricci 2009 §2):
+
+* x is the rolling direction, y the transverse direction, z the depth into the body;
+* principal radii ``rx1, ry1`` (body 1) and ``rx2, ry2`` (body 2) are positive for
+  convex surfaces, negative for concave ones (a race groove), ``np.inf`` for flat;
+* ``1/Rx = 1/rx1 + 1/rx2``, ``1/Ry = 1/ry1 + 1/ry2``, ``1/R = 1/Rx + 1/Ry``;
+  radius ratio ``alpha_r = Ry/Rx``; curvature difference ``(1/Rx - 1/Ry) R``;
+* ``a >= b`` always: ``a`` is the semi-major axis, lying along y when Ry >= Rx
+  (the ball-bearing case) and along x otherwise; ``k = a/b >= 1``;
+* ``E'`` is Hamrock & Dowson's effective modulus, twice Johnson's E*
+  (:func:`ballrace.analytic.materials.effective_modulus`).
+
+The exact solution needs the ellipticity k from Hertz's transcendental equation
+
+.. math:: \alpha_r = \frac{R_y}{R_x} = \frac{k^2\,\mathcal{E}(m) - \mathcal{K}(m)}
+          {\mathcal{K}(m) - \mathcal{E}(m)}, \qquad m = 1 - 1/k^2,
+
+with the complete elliptic integrals K (first kind) and E (second kind).  It is
+solved here to 1e-12 relative in k for 1 <= alpha_r <= 1e8: a spline of ln k against
+ln alpha_r (built once, lazily, from the exact relation) gives a start accurate to
+~1e-11, one Newton step polishes it, and every result is checked against the
+residual before it is returned.  Near the circle the difference K - E is summed as a
+series so there is no cancellation.
+
+Accuracy of the simplified formulas: maximum |relative error| against the exact
+solution over 1 <= alpha_r <= alpha_max (4001 log-spaced ratios; regenerate with
+``python -m ballrace.analytic.hertz``).  Both fits were made for ball bearings
+(alpha_r up to ~100); beyond that they drift badly, so use ``method="exact"``.
+
+=====================  =========  ======  ======  ======  ======  ======  ========  ======
+method                 alpha_max  k       E       K       a       b       approach  p_max
+=====================  =========  ======  ======  ======  ======  ======  ========  ======
+brewe-hamrock-1977     10          3.39 %  1.67 %  2.74 %  2.81 %  0.58 %   5.41 %   2.19 %
+brewe-hamrock-1977     100         6.34 %  1.67 %  2.74 %  4.20 %  2.01 %   5.41 %   2.19 %
+brewe-hamrock-1977     1e4        49.24 %  1.67 %  2.88 % 30.61 % 12.49 %  21.23 %  12.51 %
+hamrock-brewe-1983     10          3.81 %  0.91 %  1.00 %  2.68 %  1.19 %   2.70 %   1.62 %
+hamrock-brewe-1983     100         3.81 %  0.91 %  2.10 %  2.68 %  1.19 %   4.10 %   1.62 %
+hamrock-brewe-1983     1e4        45.17 %  0.91 %  2.10 % 28.21 % 11.68 %  22.56 %  11.68 %
+=====================  =========  ======  ======  ======  ======  ======  ========  ======
+
+The documented bounds are :data:`APPROXIMATION_ERROR` (the table rounded up to
+0.1 %) and are asserted by the test suite.
+"""
+from __future__ import annotations
+
+import functools
+import logging
+from dataclasses import dataclass
+
+import numpy as np
+from scipy import special
+
+from ._checks import as_array, check_choice, check_nonnegative, check_positive
+from .materials import Material, effective_modulus
+
+__all__ = [
+    "Curvature",
+    "HertzContact",
+    "LineContact",
+    "METHODS",
+    "APPROXIMATION_ERROR",
+    "curvature",
+    "ellipticity",
+    "point_contact",
+    "elliptical_contact",
+    "contact_stiffness",
+    "load_from_approach",
+    "line_contact",
+    "approximation_errors",
+]
+
+log = logging.getLogger(__name__)
+
+METHODS = ("exact", "brewe-hamrock-1977", "hamrock-brewe-1983")
+
+#: Documented maximum |relative error| of each simplified method:
+#: ``APPROXIMATION_ERROR[method][alpha_max][quantity]`` over 1 <= alpha_r <= alpha_max
+#: (the module table rounded up to 0.1 %).  Asserted in ``tests/test_hertz.py``.
+APPROXIMATION_ERROR = {
+    "brewe-hamrock-1977": {
+        10.0: {"k": 0.034, "ellipe": 0.017, "ellipk": 0.028, "a": 0.029, "b": 0.006,
+               "approach": 0.055, "p_max": 0.022},
+        100.0: {"k": 0.064, "ellipe": 0.017, "ellipk": 0.028, "a": 0.043, "b": 0.021,
+                "approach": 0.055, "p_max": 0.022},
+        1e4: {"k": 0.493, "ellipe": 0.017, "ellipk": 0.029, "a": 0.307, "b": 0.125,
+              "approach": 0.213, "p_max": 0.126},
+    },
+    "hamrock-brewe-1983": {
+        10.0: {"k": 0.039, "ellipe": 0.010, "ellipk": 0.010, "a": 0.027, "b": 0.012,
+               "approach": 0.027, "p_max": 0.017},
+        100.0: {"k": 0.039, "ellipe": 0.010, "ellipk": 0.022, "a": 0.027, "b": 0.012,
+                "approach": 0.042, "p_max": 0.017},
+        1e4: {"k": 0.452, "ellipe": 0.010, "ellipk": 0.022, "a": 0.283, "b": 0.117,
+              "approach": 0.226, "p_max": 0.117},
+    },
+}
+
+_ALPHA_MAX = 1e8          # largest radius ratio handled (k ~ 1.2e5)
+_RTOL_K = 1e-12           # required relative accuracy of k
+_SERIES_M = 0.05          # below this m, K - E is summed as a series
+
+
+# --------------------------------------------------------------------------- geometry
+@dataclass(frozen=True)
+class Curvature:
+    """Effective radii of two bodies in contact (frozen).
+
+    Attributes
+    ----------
+    Rx, Ry : float or ndarray
+        Effective radius in the rolling (x) and transverse (y) planes [m].
+    """
+
+    Rx: np.ndarray
+    Ry: np.ndarray
+
+    @property
+    def curvature_sum(self):
+        """Curvature sum 1/R = 1/Rx + 1/Ry [1/m] (Ricci 2009 eq. 8)."""
+        return 1.0 / self.Rx + 1.0 / self.Ry
+
+    @property
+    def R(self):
+        """Curvature-sum radius R = 1/(1/Rx + 1/Ry) [m] (Hamrock & Dowson 1981 eq. 3.2)."""
+        return 1.0 / self.curvature_sum
+
+    @property
+    def curvature_difference(self):
+        """Curvature difference (1/Rx - 1/Ry) R [-] (Ricci 2009 eq. 9)."""
+        return (1.0 / self.Rx - 1.0 / self.Ry) * self.R
+
+    @property
+    def alpha_r(self):
+        """Radius ratio Ry/Rx [-] (Hamrock & Dowson 1981 eq. 3.6)."""
+        return self.Ry / self.Rx
+
+
+def curvature(rx1, ry1, rx2, ry2) -> Curvature:
+    r"""Effective radii of two bodies from their principal radii.
+
+    .. math:: \frac{1}{R_x} = \frac{1}{r_{x1}} + \frac{1}{r_{x2}}, \qquad
+              \frac{1}{R_y} = \frac{1}{r_{y1}} + \frac{1}{r_{y2}}
+
+    Parameters
+    ----------
+    rx1, ry1 : float or array_like
+        Principal radii of body 1 in the x (rolling) and y planes [m];
+        negative for concave, ``np.inf`` for flat.
+    rx2, ry2 : float or array_like
+        Principal radii of body 2 [m], same convention.
+
+    Returns
+    -------
+    Curvature
+        ``Rx``, ``Ry`` [m] and derived curvature sum and difference.
+
+    Raises
+    ------
+    ValueError
+        When a radius is zero or NaN, or when the curvature sum in a plane is not
+        positive (a concave body as curved as, or more curved than, the convex one:
+        the bodies would conform and Hertz theory does not apply).
+
+    References
+    ----------
+    Hamrock & Dowson (1981) eqs. (3.1)–(3.3); Ricci (2009) eqs. (8)–(11).
+
+    Examples
+    --------
+    Ball of 12.7 mm diameter in a groove of radius 0.52 D, on a flat in rolling:
+
+    >>> c = curvature(6.35e-3, 6.35e-3, np.inf, -0.52 * 12.7e-3)
+    >>> round(float(c.Rx) * 1e3, 4), round(float(c.Ry) * 1e3, 4)
+    (6.35, 165.1)
+    """
+    inv = {}
+    for name, r in (("rx1", rx1), ("ry1", ry1), ("rx2", rx2), ("ry2", ry2)):
+        arr = as_array(r, name, allow_inf=True)
+        if np.any(arr == 0):
+            raise ValueError(f"{name} must be non-zero (use np.inf for a flat surface) [m]")
+        inv[name] = 1.0 / arr
+    cx = inv["rx1"] + inv["rx2"]
+    cy = inv["ry1"] + inv["ry2"]
+    for plane, c, n1, n2 in (("x", cx, "rx1", "rx2"), ("y", cy, "ry1", "ry2")):
+        if np.any(c <= 0):
+            raise ValueError(
+                f"curvature sum in the {plane} plane, 1/{n1} + 1/{n2}, must be > 0 [1/m]; "
+                f"got {float(np.min(c)):g}. Zero means a line (cylinder) contact "
+                "(use line_contact); negative means the concave body is more curved than "
+                "the convex one (inconsistent for a Hertz contact)")
+    return Curvature(Rx=_scalar(1.0 / cx), Ry=_scalar(1.0 / cy))
+
+
+# --------------------------------------------------------------------------- ellipticity
+def _ellip_parts(k: np.ndarray):
+    """Return (ln alpha_r(k), K(m), E(m)) for k >= 1 without cancellation near k = 1.
+
+    Uses alpha_r = (E - (1-m) K) / ((1-m)(K - E)) = D2 / (p D1) with p = 1/k^2,
+    D1 = (K - E)/m, D2 = (E - pK)/m = K - D1 (Hamrock & Dowson 1981 eq. 3.14 rearranged).
+    """
+    p = 1.0 / (k * k)
+    m = (k - 1.0) * (k + 1.0) * p
+    K = special.ellipkm1(p)           # K(m) with m = 1 - p; accurate as m -> 1
+    E = special.ellipe(m)
+    small = m < _SERIES_M
+    with np.errstate(divide="ignore", invalid="ignore"):
+        D1 = (K - E) / m
+    if np.any(small):
+        D1 = np.where(small, _d1_series(np.where(small, m, 0.0)), D1)
+    D2 = K - D1
+    return np.log(D2 / (p * D1)), K, E
+
+
+_D1_COEF = None
+
+
+def _d1_series(m: np.ndarray) -> np.ndarray:
+    """(K(m) - E(m))/m as a power series, exact to rounding for m < 0.05.
+
+    K - E = (pi/2) sum_{n>=1} c_n 2n/(2n-1) m^n, c_n = [(2n)!/(4^n n!^2)]^2
+    (Abramowitz & Stegun 1964, eqs. 17.3.11–17.3.12).
+    """
+    global _D1_COEF
+    if _D1_COEF is None:
+        coef = []
+        c = 1.0
+        for n in range(1, 16):
+            c *= ((2 * n - 1) / (2 * n)) ** 2
+            coef.append(0.5 * np.pi * c * 2 * n / (2 * n - 1))
+        _D1_COEF = np.array(coef[::-1])
+    return np.polyval(_D1_COEF, m)
+
+
+@functools.cache
+def _spline():
+    """Cubic spline of ln k against ln alpha_r on [0, ln 1e8], built once from the exact relation."""
+    from scipy.interpolate import CubicSpline
+
+    u = np.linspace(0.0, np.log(1.3e5), 6001)          # ln k; k(1e8) ~ 1.2e5
+    v, _, _ = _ellip_parts(np.exp(u))
+    v[0] = 0.0
+    return CubicSpline(v, u)
+
+
+def _solve_k(alpha: np.ndarray):
+    """Ellipticity k(alpha) for alpha >= 1 to 1e-12 relative; returns (k, K, E)."""
+    v = np.log(alpha)
+    spl = _spline()
+    u = spl(v)
+    s = spl(v, 1)                                        # du/dv from the spline
+    r, _, _ = _ellip_parts(np.exp(u))
+    u = u - s * (r - v)                                  # one Newton step
+    k = np.exp(u)
+    r, K, E = _ellip_parts(k)
+    err = np.abs(s * (r - v))
+    it = 0
+    while np.any(err > _RTOL_K):
+        it += 1
+        if it > 20:
+            i = int(np.argmax(err))
+            raise RuntimeError(
+                f"Hertz ellipticity did not converge: residual {err.flat[i]:.3e} "
+                f"(relative in k) after {it} iterations at alpha_r={alpha.flat[i]!r}")
+        bad = err > _RTOL_K
+        u = np.where(bad, u - s * (r - v), u)
+        k = np.exp(u)
+        r, K, E = _ellip_parts(k)
+        err = np.abs(s * (r - v))
+    if it:
+        log.debug("ellipticity: %d extra Newton iterations", it)
+    return k, K, E
+
+
+def _approx_k(alpha: np.ndarray, method: str):
+    """Simplified ellipticity and elliptic integrals (k, K, E) for alpha >= 1."""
+    if method == "brewe-hamrock-1977":
+        # Brewe & Hamrock (1977) J. Lubr. Technol. 99(4) 485-487; H&D (1981) eqs. 3.28-3.30
+        k = 1.0339 * alpha**0.6360
+        E = 1.0003 + 0.5968 / alpha
+        K = 1.5277 + 0.6023 * np.log(alpha)
+    else:
+        # Hamrock & Brewe (1983) J. Lubr. Technol. 105(2) 171-177, eqs. (8)-(10)
+        q = 0.5 * np.pi - 1.0
+        k = alpha ** (2.0 / np.pi)
+        E = 1.0 + q / alpha
+        K = 0.5 * np.pi + q * np.log(alpha)
+    return k, K, E
+
+
+def _ellipticity(alpha: np.ndarray, method: str):
+    """Internal: (k, K, E) for alpha >= 1, validated already."""
+    if method == "exact":
+        return _solve_k(alpha)
+    return _approx_k(alpha, method)
+
+
+def ellipticity(alpha_r, method: str = "exact"):
+    r"""Ellipticity k = a/b and the elliptic integrals of an elliptical Hertz contact.
+
+    Solves Hertz's transcendental equation (Hamrock & Dowson 1981 eq. 3.14; Ricci 2009
+    eq. 14) in the form
+
+    .. math:: \alpha_r = \frac{k^2\,\mathcal{E} - \mathcal{K}}{\mathcal{K} - \mathcal{E}},
+              \quad m = 1 - k^{-2}
+
+    to 1e-12 relative in k, or evaluates one of the simplified formulas.
+
+    Parameters
+    ----------
+    alpha_r : float or array_like
+        Radius ratio, the larger effective radius over the smaller [-]; values below
+        1 are inverted (the axes are swapped), so k >= 1 always.  Must be in
+        [1e-8, 1e8].
+    method : {"exact", "brewe-hamrock-1977", "hamrock-brewe-1983"}
+        Exact solution or simplified formula.
+
+    Returns
+    -------
+    k : ndarray
+        Ellipticity a/b >= 1 [-].
+    ellipk, ellipe : ndarray
+        Complete elliptic integrals of the first and second kind at m = 1 - 1/k^2 [-]
+        (their approximations for the simplified methods).
+
+    Examples
+    --------
+    >>> k, K, E = ellipticity(1.0)
+    >>> float(k), round(float(K), 12) == round(np.pi / 2, 12)
+    (1.0, True)
+    >>> k, K, E = ellipticity(np.array([10.0, 100.0]))
+    >>> np.round(k, 6)
+    array([ 4.499447, 18.187103])
+    """
+    check_choice(method, "method", METHODS)
+    alpha = check_positive(alpha_r, "alpha_r", "-")
+    alpha = np.where(alpha < 1.0, 1.0 / alpha, alpha)
+    if np.any(alpha > _ALPHA_MAX):
+        raise ValueError(f"alpha_r must be in [1e-8, 1e8] [-]; got {float(np.max(alpha)):g} "
+                         "(close to line contact: use line_contact)")
+    k, K, E = _ellipticity(alpha, method)
+    return _scalar(k), _scalar(K), _scalar(E)
+
+
+# --------------------------------------------------------------------------- point contact
+@dataclass(frozen=True)
+class HertzContact:
+    """Result of an elliptical Hertz contact (frozen).  Arrays when inputs were arrays.
+
+    Attributes
+    ----------
+    load : Normal load Q [N].
+    Rx, Ry : Effective radii in the rolling and transverse planes [m].
+    E_prime : Hamrock–Dowson effective modulus E' = 2E* [Pa].
+    k : Ellipticity a/b >= 1 [-].
+    a, b : Semi-major and semi-minor axes of the contact ellipse [m]; a >= b.
+    approach : Mutual approach of distant points of the two bodies, delta [m].
+    p_max : Maximum (central) contact pressure p0 [Pa].
+    stiffness : Load-deflection constant K with Q = K delta^1.5 [N/m^1.5].
+    ellipk, ellipe : Complete elliptic integrals of the first and second kind [-].
+    method : Solution method used.
+    """
+
+    load: np.ndarray
+    Rx: np.ndarray
+    Ry: np.ndarray
+    E_prime: np.ndarray
+    k: np.ndarray
+    a: np.ndarray
+    b: np.ndarray
+    approach: np.ndarray
+    p_max: np.ndarray
+    stiffness: np.ndarray
+    ellipk: np.ndarray
+    ellipe: np.ndarray
+    method: str = "exact"
+
+    @property
+    def R(self):
+        """Curvature-sum radius 1/(1/Rx + 1/Ry) [m]."""
+        return self.Rx * self.Ry / (self.Rx + self.Ry)
+
+    @property
+    def alpha_r(self):
+        """Radius ratio Ry/Rx [-] (below 1 when the major axis lies along x)."""
+        return self.Ry / self.Rx
+
+    @property
+    def p_mean(self):
+        """Mean contact pressure Q/(pi a b) = 2/3 p_max [Pa]."""
+        return 2.0 / 3.0 * self.p_max
+
+    @property
+    def area(self):
+        """Contact area pi a b [m^2]."""
+        return np.pi * self.a * self.b
+
+    @property
+    def major_axis_along_y(self):
+        """True where the semi-major axis a lies along y (Ry >= Rx)."""
+        return np.asarray(self.Ry >= self.Rx)[()]
+
+    @property
+    def semi_axis_x(self):
+        """Semi-axis of the ellipse along the rolling direction x [m]."""
+        return np.where(self.major_axis_along_y, self.b, self.a)[()]
+
+    @property
+    def semi_axis_y(self):
+        """Semi-axis of the ellipse along the transverse direction y [m]."""
+        return np.where(self.major_axis_along_y, self.a, self.b)[()]
+
+    def pressure(self, x, y):
+        r"""Hertz pressure p0 sqrt(1 - (x/ax)^2 - (y/ay)^2) at surface point (x, y) [Pa].
+
+        Parameters
+        ----------
+        x, y : float or array_like
+            Coordinates along the rolling and transverse directions [m]; broadcast
+            against the contact's shape.
+
+        References
+        ----------
+        Hertz (1882); Johnson (1985) eq. (4.35).
+        """
+        s = 1.0 - (np.asarray(x) / self.semi_axis_x) ** 2 - (np.asarray(y) / self.semi_axis_y) ** 2
+        return self.p_max * np.sqrt(np.clip(s, 0.0, None))
+
+
+def _contact_from_parts(Q, Rx, Ry, Ep, method) -> HertzContact:
+    """Internal: contact for validated, broadcast arrays."""
+    R = Rx * Ry / (Rx + Ry)
+    alpha = np.where(Ry >= Rx, Ry / Rx, Rx / Ry)
+    if np.any(alpha > _ALPHA_MAX):
+        raise ValueError(f"radius ratio Ry/Rx must be in [1e-8, 1e8] [-]; got "
+                         f"{float(np.max(alpha)):g} (close to line contact: use line_contact)")
+    k, K, E = _ellipticity(alpha, method)
+    # Hamrock & Dowson (1981) eqs. 3.8-3.16; Ricci (2009) eqs. 12-13
+    c = 6.0 * E * Q * R / (np.pi * Ep)
+    a = np.cbrt(c * k * k)
+    b = np.cbrt(c / k)
+    approach = K * np.cbrt(4.5 / (E * R) * (Q / (np.pi * k * Ep)) ** 2)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        p_max = np.where(Q > 0, 1.5 * Q / (np.pi * a * b), 0.0)
+    # Hamrock & Dowson (1981) eq. 3.33: Q = K delta^1.5
+    stiffness = np.pi * k * Ep * np.sqrt(2.0 * E * R / (9.0 * K**3))
+    s = _scalar
+    return HertzContact(load=s(Q), Rx=s(Rx), Ry=s(Ry), E_prime=s(Ep), k=s(k), a=s(a), b=s(b),
+                        approach=s(approach), p_max=s(p_max), stiffness=s(stiffness),
+                        ellipk=s(K), ellipe=s(E), method=method)
+
+
+def elliptical_contact(load, Rx, Ry, E_prime, method: str = "exact") -> HertzContact:
+    r"""Elliptical Hertz contact from effective radii and effective modulus.
+
+    .. math::
+        a = \left(\frac{6 k^2 \mathcal{E} Q R}{\pi E'}\right)^{1/3},\quad
+        b = \left(\frac{6 \mathcal{E} Q R}{\pi k E'}\right)^{1/3},\quad
+        \delta = \mathcal{K}\left[\frac{9}{2\mathcal{E}R}
+                 \left(\frac{Q}{\pi k E'}\right)^2\right]^{1/3},\quad
+        p_{max} = \frac{3Q}{2\pi a b}
+
+    Parameters
+    ----------
+    load : float or array_like
+        Normal load Q [N], >= 0.
+    Rx, Ry : float or array_like
+        Effective radii in the rolling and transverse planes [m], > 0.
+    E_prime : float or array_like
+        Hamrock–Dowson effective modulus E' [Pa], > 0.
+    method : {"exact", "brewe-hamrock-1977", "hamrock-brewe-1983"}
+        Exact Hertz or a simplified formula (errors in ``APPROXIMATION_ERROR``).
+
+    Returns
+    -------
+    HertzContact
+
+    References
+    ----------
+    Hamrock & Dowson (1981) *Ball Bearing Lubrication* ch. 3, eqs. (3.8)–(3.16), (3.33);
+    Ricci (2009) eqs. (12)–(16); Harris (2001) *Rolling Bearing Analysis* §6.
+
+    Examples
+    --------
+    Sphere of radius 5 mm on a flat, steel on steel (Johnson 1985 eq. 4.22:
+    a = (3QR/4E*)^(1/3) = 0.3244 mm):
+
+    >>> c = elliptical_contact(1000.0, 0.005, 0.005, 219.78e9)
+    >>> round(float(c.a) * 1e3, 4), round(float(c.p_max) / 1e9, 4)
+    (0.3244, 4.5383)
+    """
+    check_choice(method, "method", METHODS)
+    Q = check_nonnegative(load, "load", "N")
+    Rx = check_positive(Rx, "Rx", "m")
+    Ry = check_positive(Ry, "Ry", "m")
+    Ep = check_positive(E_prime, "E_prime", "Pa")
+    Q, Rx, Ry, Ep = np.broadcast_arrays(Q, Rx, Ry, Ep)
+    return _contact_from_parts(Q, Rx, Ry, Ep, method)
+
+
+def point_contact(load, rx1, ry1, rx2, ry2, material1: Material,
+                  material2: Material | None = None, method: str = "exact") -> HertzContact:
+    r"""Hertz contact of two bodies given their principal radii and materials.
+
+    Parameters
+    ----------
+    load : float or array_like
+        Normal load Q [N], >= 0.
+    rx1, ry1 : float or array_like
+        Principal radii of body 1 in the x (rolling) and y planes [m]; concave < 0,
+        ``np.inf`` for flat.
+    rx2, ry2 : float or array_like
+        Principal radii of body 2 [m], same convention.
+    material1 : Material
+        Body 1.
+    material2 : Material, optional
+        Body 2 (default: same as body 1).
+    method : {"exact", "brewe-hamrock-1977", "hamrock-brewe-1983"}
+        Exact Hertz or a simplified formula.
+
+    Returns
+    -------
+    HertzContact
+        ``a >= b`` [m], ``k``, ``approach`` [m], ``p_max`` [Pa], ``stiffness`` [N/m^1.5],
+        ``Rx``, ``Ry`` [m], ``E_prime`` [Pa], ``load`` [N].
+
+    References
+    ----------
+    Hamrock & Dowson (1981) ch. 3, eqs. (3.1)–(3.16); Ricci (2009) eqs. (8)–(16).
+
+    Examples
+    --------
+    Two steel balls of 12.7 mm diameter pressed together with 100 N:
+
+    >>> import ballrace
+    >>> steel = ballrace.Material(E=200e9, nu=0.3)
+    >>> c = point_contact(100.0, 6.35e-3, 6.35e-3, 6.35e-3, 6.35e-3, steel, steel)
+    >>> round(float(c.a) * 1e6, 2), round(float(c.p_max) / 1e6, 1), round(float(c.approach) * 1e6, 3)
+    (129.4, 2851.3, 5.274)
+    """
+    if not isinstance(material1, Material):
+        raise TypeError(f"material1 must be a ballrace.Material; got {type(material1).__name__}")
+    if material2 is not None and not isinstance(material2, Material):
+        raise TypeError(f"material2 must be a ballrace.Material; got {type(material2).__name__}")
+    geo = curvature(rx1, ry1, rx2, ry2)
+    return elliptical_contact(load, geo.Rx, geo.Ry, effective_modulus(material1, material2),
+                              method=method)
+
+
+def contact_stiffness(Rx, Ry, E_prime, method: str = "exact"):
+    r"""Load–deflection constant K of a point contact, Q = K delta^(3/2) [N/m^1.5].
+
+    .. math:: K = \pi k E' \left(\frac{2 \mathcal{E} R}{9 \mathcal{K}^3}\right)^{1/2}
+
+    Parameters
+    ----------
+    Rx, Ry : float or array_like
+        Effective radii in the rolling and transverse planes [m], > 0.
+    E_prime : float or array_like
+        Effective modulus E' [Pa], > 0.
+    method : {"exact", "brewe-hamrock-1977", "hamrock-brewe-1983"}
+        Exact or simplified ellipticity.
+
+    References
+    ----------
+    Hamrock & Dowson (1981) eqs. (3.31)–(3.33); Ricci (2009) eqs. (15)–(16).
+
+    Examples
+    --------
+    >>> K = contact_stiffness(0.005, 0.005, 219.78e9)
+    >>> c = elliptical_contact(1000.0, 0.005, 0.005, 219.78e9)
+    >>> bool(np.isclose(K * c.approach**1.5, 1000.0, rtol=1e-12))
+    True
+    """
+    check_choice(method, "method", METHODS)
+    Rx = check_positive(Rx, "Rx", "m")
+    Ry = check_positive(Ry, "Ry", "m")
+    Ep = check_positive(E_prime, "E_prime", "Pa")
+    Rx, Ry, Ep = np.broadcast_arrays(Rx, Ry, Ep)
+    R = Rx * Ry / (Rx + Ry)
+    alpha = np.where(Ry >= Rx, Ry / Rx, Rx / Ry)
+    k, K, E = _ellipticity(alpha, method)
+    return _scalar(np.pi * k * Ep * np.sqrt(2.0 * E * R / (9.0 * K**3)))
+
+
+def load_from_approach(approach, Rx, Ry, E_prime, method: str = "exact"):
+    r"""Normal load Q = K delta^(3/2) for a given approach [N].
+
+    Parameters
+    ----------
+    approach : float or array_like
+        Elastic approach delta [m], >= 0.
+    Rx, Ry : float or array_like
+        Effective radii [m], > 0.
+    E_prime : float or array_like
+        Effective modulus E' [Pa], > 0.
+    method : str
+        As in :func:`elliptical_contact`.
+
+    References
+    ----------
+    Hamrock & Dowson (1981) eq. (3.33).
+
+    Examples
+    --------
+    >>> c = elliptical_contact(250.0, 0.004, 0.08, 219.78e9)
+    >>> round(float(load_from_approach(c.approach, 0.004, 0.08, 219.78e9)), 9)
+    250.0
+    """
+    d = check_nonnegative(approach, "approach", "m")
+    return _scalar(contact_stiffness(Rx, Ry, E_prime, method) * d**1.5)
+
+
+# --------------------------------------------------------------------------- line contact
+@dataclass(frozen=True)
+class LineContact:
+    """Result of a Hertz line (cylinder) contact (frozen).
+
+    Attributes
+    ----------
+    load_per_length : Load per unit length w [N/m].
+    R : Effective radius 1/(1/r1 + 1/r2) [m].
+    E_prime : Effective modulus E' [Pa].
+    b : Half-width of the contact strip [m].
+    p_max : Maximum pressure [Pa].
+    """
+
+    load_per_length: np.ndarray
+    R: np.ndarray
+    E_prime: np.ndarray
+    b: np.ndarray
+    p_max: np.ndarray
+
+    @property
+    def p_mean(self):
+        """Mean pressure w/(2b) = pi/4 p_max [Pa]."""
+        return np.pi / 4.0 * self.p_max
+
+    def pressure(self, x):
+        """Hertz pressure p_max sqrt(1 - (x/b)^2) at distance x from the centre line [Pa]."""
+        s = 1.0 - (np.asarray(x) / self.b) ** 2
+        return self.p_max * np.sqrt(np.clip(s, 0.0, None))
+
+
+def line_contact(load_per_length, r1, r2, material1: Material,
+                 material2: Material | None = None) -> LineContact:
+    r"""Hertz contact of two parallel cylinders (plane strain).
+
+    .. math:: b = \left(\frac{8 w R}{\pi E'}\right)^{1/2}, \qquad
+              p_{max} = \frac{2 w}{\pi b}
+
+    The approach of a line contact depends on the size of the bodies and is not
+    returned.
+
+    Parameters
+    ----------
+    load_per_length : float or array_like
+        Load per unit axial length w [N/m], >= 0.
+    r1, r2 : float or array_like
+        Cylinder radii [m]; concave < 0, ``np.inf`` for a flat.
+    material1 : Material
+        Body 1.
+    material2 : Material, optional
+        Body 2 (default: same as body 1).
+
+    References
+    ----------
+    Johnson (1985) eqs. (4.43)–(4.45) (with E' = 2E*); Hamrock & Dowson (1981) §3.1.
+
+    Examples
+    --------
+    NAFEMS FENET D3613 cylinder on block (35 kN/mm, R = 50 mm, E = 70 / 210 GPa):
+
+    >>> import ballrace
+    >>> al = ballrace.Material(E=70e9, nu=0.3); st = ballrace.Material(E=210e9, nu=0.3)
+    >>> c = line_contact(35e6, 0.05, np.inf, al, st)
+    >>> round(float(c.b) * 1e3, 2), round(float(c.p_max) / 1e6)
+    (6.21, 3585)
+    """
+    w = check_nonnegative(load_per_length, "load_per_length", "N/m")
+    inv = []
+    for name, r in (("r1", r1), ("r2", r2)):
+        arr = as_array(r, name, allow_inf=True)
+        if np.any(arr == 0):
+            raise ValueError(f"{name} must be non-zero (use np.inf for a flat surface) [m]")
+        inv.append(1.0 / arr)
+    c = inv[0] + inv[1]
+    if np.any(c <= 0):
+        raise ValueError(f"curvature sum 1/r1 + 1/r2 must be > 0 [1/m]; got {float(np.min(c)):g}")
+    R = 1.0 / c
+    Ep = effective_modulus(material1, material2)
+    w, R = np.broadcast_arrays(w, R)
+    b = np.sqrt(8.0 * w * R / (np.pi * Ep))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        p = np.where(w > 0, 2.0 * w / (np.pi * b), 0.0)
+    return LineContact(load_per_length=_scalar(w), R=_scalar(R), E_prime=_scalar(Ep + 0 * w),
+                       b=_scalar(b), p_max=_scalar(p))
+
+
+# --------------------------------------------------------------------------- error study
+def approximation_errors(alpha_r, method: str) -> dict[str, np.ndarray]:
+    """Signed relative error of a simplified method against the exact solution.
+
+    Parameters
+    ----------
+    alpha_r : array_like
+        Radius ratios Ry/Rx >= 1 [-].
+    method : {"brewe-hamrock-1977", "hamrock-brewe-1983"}
+        The simplified method.
+
+    Returns
+    -------
+    dict
+        ``{"k", "ellipk", "ellipe", "a", "b", "approach", "p_max"}`` -> relative error
+        (approximate/exact - 1) at each ratio.  Load and modulus cancel out.
+
+    Examples
+    --------
+    >>> e = approximation_errors([1.0, 10.0], "hamrock-brewe-1983")
+    >>> bool(abs(e["k"][0]) < 1e-15)
+    True
+    """
+    check_choice(method, "method", METHODS[1:])
+    alpha = check_positive(alpha_r, "alpha_r", "-")
+    ex = elliptical_contact(1.0, 1.0, alpha, 1.0, method="exact")
+    ap = elliptical_contact(1.0, 1.0, alpha, 1.0, method=method)
+    return {q: np.asarray(getattr(ap, q)) / np.asarray(getattr(ex, q)) - 1.0
+            for q in ("k", "ellipk", "ellipe", "a", "b", "approach", "p_max")}
+
+
+def _scalar(x):
+    """0-d arrays become numpy scalars; other arrays pass through."""
+    x = np.asarray(x)
+    return x[()] if x.ndim == 0 else x
+
+
+def _error_table() -> str:  # pragma: no cover - documentation generator
+    qs = ("k", "ellipe", "ellipk", "a", "b", "approach", "p_max")
+    out = ["| method | alpha_max | " + " | ".join(qs) + " |", "|---" * (len(qs) + 2) + "|"]
+    for meth in METHODS[1:]:
+        for hi in (10.0, 100.0, 1e4):
+            e = approximation_errors(np.logspace(0, np.log10(hi), 4001), meth)
+            out.append(f"| {meth} | {hi:g} | "
+                       + " | ".join(f"{100 * np.max(np.abs(e[q])):.2f} %" for q in qs) + " |")
+    return "\n".join(out)
+
+
+if __name__ == "__main__":  # pragma: no cover
+    import sys
+
+    sys.stdout.write(_error_table() + "\n")
