@@ -1,0 +1,346 @@
+"""Bearing case files (TOML): loading, validation and conversion to SI.
+
+A case file describes one bearing, its materials, the applied loads, the speed and the
+lubricant, with unit strings parsed by pint at this boundary only
+(:func:`ballrace.units.parse_quantity`)::
+
+    title = "209 deep-groove ball bearing"
+
+    [bearing]
+    type = "deep-groove"          # or "angular-contact"
+    ball_diameter = "12.7 mm"
+    n_balls = 9
+    pitch_diameter = "65 mm"
+    f_inner = 0.52
+    f_outer = 0.52
+    diametral_clearance = "0.015 mm"   # or free_contact_angle = "40 deg"
+
+    [materials]                   # optional; default bearing steel (200 GPa, 0.3)
+    ball = { E = "200 GPa", nu = 0.3 }
+    ring = { E = "200 GPa", nu = 0.3 }
+
+    [loads]
+    radial = "8900 N"
+    axial = "0 N"
+    # eccentricity = "50.8 mm"    # thrust applied off-axis (Ricci 2009)
+
+    [operation]
+    speed = "4000 rpm"            # of the rotating ring: rpm, rev/s or rad/s
+    rotating_ring = "inner"
+
+    [lubricant]                   # optional: film thickness and lubrication factor
+    viscosity = "0.04 Pa*s"
+    pressure_viscosity = "2.2e-8 1/Pa"
+    roughness_race = "0.175 um"
+    roughness_ball = "0.075 um"
+
+    [life]                        # optional
+    standard = "ISO 281:2007"     # or "ABMA 9-1990"
+    material = "52100"            # life factors (Hamrock & Dowson 1981 §3.5)
+    processing = "air-melt"
+    hardness_hrc = 58
+
+Validation uses pydantic v2 (unknown keys are errors, so typos do not pass silently);
+every error names the file and the ``[table].key`` it is about.
+"""
+from __future__ import annotations
+
+import math
+import tomllib
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Literal, Optional
+
+import numpy as np
+
+__all__ = ["CaseFileError", "BearingCase", "load_case", "parse_case"]
+
+
+class CaseFileError(ValueError):
+    """A case file that cannot be read, or whose contents are invalid."""
+
+
+def _models():
+    """Pydantic models, built on first use (pydantic is imported lazily)."""
+    from pydantic import BaseModel, ConfigDict, Field
+
+    class _Strict(BaseModel):
+        model_config = ConfigDict(extra="forbid", frozen=True)
+
+    class BearingSpec(_Strict):
+        type: Literal["deep-groove", "angular-contact"] = "deep-groove"
+        name: str = ""
+        ball_diameter: str
+        n_balls: int = Field(ge=3)
+        pitch_diameter: str
+        f_inner: float = Field(gt=0.5)
+        f_outer: float = Field(gt=0.5)
+        diametral_clearance: Optional[str] = None
+        free_contact_angle: Optional[str] = None
+        n_rows: int = Field(default=1, ge=1, le=2)
+
+    class MaterialSpec(_Strict):
+        E: str
+        nu: float = Field(gt=-1.0, lt=0.5)
+        density: Optional[str] = None
+        name: str = ""
+
+    class MaterialsSpec(_Strict):
+        ball: Optional[MaterialSpec] = None
+        ring: Optional[MaterialSpec] = None
+
+    class LoadsSpec(_Strict):
+        radial: str = "0 N"
+        axial: str = "0 N"
+        eccentricity: Optional[str] = None
+
+    class OperationSpec(_Strict):
+        speed: str
+        rotating_ring: Literal["inner", "outer"] = "inner"
+
+    class LubricantSpec(_Strict):
+        viscosity: str
+        pressure_viscosity: str
+        roughness_race: Optional[str] = None
+        roughness_ball: Optional[str] = None
+
+    class LifeSpec(_Strict):
+        standard: Literal["ISO 281:2007", "ABMA 9-1990"] = "ISO 281:2007"
+        material: Optional[str] = None
+        processing: Optional[str] = None
+        hardness_hrc: Optional[float] = Field(default=None, gt=0.0, le=70.0)
+        lubrication_factor: Optional[float] = Field(default=None, gt=0.0)
+
+    class CaseSpec(_Strict):
+        title: str = ""
+        bearing: BearingSpec
+        materials: MaterialsSpec = MaterialsSpec()
+        loads: LoadsSpec
+        operation: OperationSpec
+        lubricant: Optional[LubricantSpec] = None
+        life: LifeSpec = LifeSpec()
+
+    return CaseSpec
+
+
+@dataclass(frozen=True)
+class BearingCase:
+    """A validated bearing case in SI units (frozen).
+
+    Attributes
+    ----------
+    title : Case title.
+    bearing : :class:`ballrace.BallBearing`.
+    kind : "deep-groove" or "angular-contact" (selects the nominal contact angle of the
+        ratings: 0 for deep-groove, the free contact angle for angular-contact).
+    radial_load, axial_load : Fr, Fa [N].
+    eccentricity : Thrust eccentricity [m] or None.
+    speed : Angular speed of the rotating ring relative to the other [rad/s].
+    rotating_ring : "inner" or "outer".
+    viscosity : eta0 [Pa s] or None.
+    pressure_viscosity : xi [1/Pa] or None.
+    roughness_race, roughness_ball : RMS roughness [m] or None.
+    standard : Rating standard.
+    material, processing : Life-factor keys or None.
+    hardness_hrc : Operating hardness [HRC] or None.
+    lubrication_factor : Explicit lubrication factor F or None.
+    """
+
+    title: str
+    bearing: object
+    kind: str
+    radial_load: float
+    axial_load: float
+    eccentricity: Optional[float]
+    speed: float
+    rotating_ring: str
+    viscosity: Optional[float]
+    pressure_viscosity: Optional[float]
+    roughness_race: Optional[float]
+    roughness_ball: Optional[float]
+    standard: str
+    material: Optional[str]
+    processing: Optional[str]
+    hardness_hrc: Optional[float]
+    lubrication_factor: Optional[float]
+
+    @property
+    def speed_rpm(self) -> float:
+        """Speed of the rotating ring [rev/min]."""
+        return self.speed * 60.0 / (2.0 * math.pi)
+
+    @property
+    def nominal_contact_angle(self) -> float:
+        """Contact angle used by the ratings and X/Y tables [rad]."""
+        return 0.0 if self.kind == "deep-groove" else float(self.bearing.free_contact_angle)
+
+
+def _speed(text: str, where: str) -> float:
+    from ballrace.units import ureg
+
+    s = str(text).strip()
+    low = s.lower()
+    if not any(u in low for u in ("rpm", "rev", "rad", "deg")):
+        raise CaseFileError(f"{where}: give the speed in rpm, rev/min, rev/s or rad/s "
+                            f"(a bare 1/s or Hz is ambiguous); got {s!r}")
+    try:
+        q = ureg().Quantity(s)
+        w = float(q.to("rad/s").magnitude)
+    except Exception as exc:  # pint raises several error types
+        raise CaseFileError(f"{where}: cannot read {s!r} as an angular speed ({exc})") from None
+    if not w > 0:
+        raise CaseFileError(f"{where}: must be > 0; got {s!r}")
+    return w
+
+
+def parse_case(data: dict, source: str = "<case>") -> BearingCase:
+    """Validate a case dictionary (parsed TOML) and convert it to SI.
+
+    Parameters
+    ----------
+    data : dict
+        The TOML document.
+    source : str
+        Name used in error messages (the file name).
+
+    Returns
+    -------
+    BearingCase
+
+    Raises
+    ------
+    CaseFileError
+        Naming ``source`` and the offending ``[table].key``.
+
+    Examples
+    --------
+    >>> case = parse_case({"bearing": {"ball_diameter": "12.7 mm", "n_balls": 9,
+    ...                                "pitch_diameter": "65 mm", "f_inner": 0.52,
+    ...                                "f_outer": 0.52, "diametral_clearance": "0 mm"},
+    ...                    "loads": {"radial": "2 kN"}, "operation": {"speed": "1500 rpm"}})
+    >>> case.radial_load, round(case.speed_rpm, 6)
+    (2000.0, 1500.0)
+    >>> parse_case({"bearing": {}, "loads": {}, "operation": {}})  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    ballrace.analytic.casefile.CaseFileError: <case>: [bearing].ball_diameter: Field required...
+    """
+    from pydantic import ValidationError
+
+    import ballrace
+    from ballrace.units import parse_quantity
+
+    CaseSpec = _models()
+    try:
+        spec = CaseSpec.model_validate(data)
+    except ValidationError as exc:
+        lines = []
+        for err in exc.errors():
+            loc = [str(p) for p in err["loc"]]
+            key = f"[{loc[0]}]." + ".".join(loc[1:]) if len(loc) > 1 else (loc[0] if loc else "")
+            lines.append(f"{source}: {key}: {err['msg']}")
+        raise CaseFileError("\n".join(lines)) from None
+
+    def q(value, dim, where, allow_none=False):
+        if value is None:
+            return None
+        try:
+            return parse_quantity(value, dim, where)
+        except ValueError as exc:
+            raise CaseFileError(f"{source}: {exc}") from None
+
+    b = spec.bearing
+    mats = {}
+    for which in ("ball", "ring"):
+        m = getattr(spec.materials, which)
+        if m is not None:
+            kw = dict(E=q(m.E, "[pressure]", f"[materials.{which}].E"), nu=m.nu,
+                      name=m.name or which)
+            if m.density is not None:
+                kw["density"] = q(m.density, "[mass] / [length] ** 3",
+                                  f"[materials.{which}].density")
+            try:
+                mats[which] = ballrace.Material(**kw)
+            except ValueError as exc:
+                raise CaseFileError(f"{source}: [materials.{which}]: {exc}") from None
+    if (b.diametral_clearance is None) == (b.free_contact_angle is None):
+        raise CaseFileError(f"{source}: [bearing]: give exactly one of diametral_clearance "
+                            "and free_contact_angle")
+    try:
+        brg = ballrace.BallBearing(
+            ball_diameter=q(b.ball_diameter, "[length]", "[bearing].ball_diameter"),
+            n_balls=b.n_balls,
+            pitch_diameter=q(b.pitch_diameter, "[length]", "[bearing].pitch_diameter"),
+            f_inner=b.f_inner, f_outer=b.f_outer,
+            diametral_clearance=q(b.diametral_clearance, "[length]",
+                                  "[bearing].diametral_clearance"),
+            free_contact_angle=q(b.free_contact_angle, "[angle]", "[bearing].free_contact_angle"),
+            ball_material=mats.get("ball"), ring_material=mats.get("ring"),
+            n_rows=b.n_rows, name=b.name or spec.title)
+    except (ValueError, TypeError) as exc:
+        raise CaseFileError(f"{source}: [bearing]: {exc}") from None
+
+    Fr = q(spec.loads.radial, "[force]", "[loads].radial")
+    Fa = q(spec.loads.axial, "[force]", "[loads].axial")
+    for name, v in (("radial", Fr), ("axial", Fa)):
+        if v < 0:
+            raise CaseFileError(f"{source}: [loads].{name} must be >= 0 N; got {v!r}")
+    if Fr == 0 and Fa == 0:
+        raise CaseFileError(f"{source}: [loads]: radial and axial are both zero")
+    ecc = q(spec.loads.eccentricity, "[length]", "[loads].eccentricity")
+    if ecc is not None and Fr != 0:
+        raise CaseFileError(f"{source}: [loads].eccentricity applies to a pure thrust load; "
+                            "set radial = \"0 N\"")
+    lub = spec.lubricant
+    visc = xi = rq_r = rq_b = None
+    if lub is not None:
+        visc = q(lub.viscosity, "[mass] / [length] / [time]", "[lubricant].viscosity")
+        xi = q(lub.pressure_viscosity, "1 / [pressure]", "[lubricant].pressure_viscosity")
+        rq_r = q(lub.roughness_race, "[length]", "[lubricant].roughness_race")
+        rq_b = q(lub.roughness_ball, "[length]", "[lubricant].roughness_ball")
+        for name, v in (("viscosity", visc), ("pressure_viscosity", xi)):
+            if not v > 0:
+                raise CaseFileError(f"{source}: [lubricant].{name} must be > 0; got {v!r}")
+    lf = spec.life
+    from ballrace.analytic import life as _life
+
+    if lf.material is not None and lf.material not in _life.MATERIAL_FACTOR:
+        raise CaseFileError(f"{source}: [life].material must be one of "
+                            f"{', '.join(_life.MATERIAL_FACTOR)}; got {lf.material!r}")
+    if lf.processing is not None and lf.processing not in _life.PROCESSING_FACTOR:
+        raise CaseFileError(f"{source}: [life].processing must be one of "
+                            f"{', '.join(_life.PROCESSING_FACTOR)}; got {lf.processing!r}")
+    if spec.bearing.type == "deep-groove" and np.degrees(brg.free_contact_angle) > 20:
+        raise CaseFileError(f"{source}: [bearing]: a deep-groove bearing with a free contact "
+                            f"angle of {np.degrees(brg.free_contact_angle):.1f} deg; use "
+                            "type = \"angular-contact\"")
+    return BearingCase(
+        title=spec.title, bearing=brg, kind=spec.bearing.type, radial_load=Fr, axial_load=Fa,
+        eccentricity=ecc, speed=_speed(spec.operation.speed, f"{source}: [operation].speed"),
+        rotating_ring=spec.operation.rotating_ring, viscosity=visc, pressure_viscosity=xi,
+        roughness_race=rq_r, roughness_ball=rq_b, standard=lf.standard, material=lf.material,
+        processing=lf.processing, hardness_hrc=lf.hardness_hrc,
+        lubrication_factor=lf.lubrication_factor)
+
+
+def load_case(path) -> BearingCase:
+    """Read and validate a TOML case file (see the module docstring for the format).
+
+    Parameters
+    ----------
+    path : str or Path
+        The case file.
+
+    Raises
+    ------
+    CaseFileError
+        File missing, not TOML, or invalid contents (the message names the key).
+    """
+    p = Path(path)
+    try:
+        data = tomllib.loads(p.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise CaseFileError(f"{p}: no such file") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise CaseFileError(f"{p}: not valid TOML ({exc})") from None
+    return parse_case(data, str(p))
