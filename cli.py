@@ -67,21 +67,36 @@ def contact(
             ("a (semi-major)", float(c.a), "m"), ("b (semi-minor)", float(c.b), "m"),
             ("approach delta", float(c.approach), "m"), ("p_max", float(c.p_max), "Pa"),
             ("p_mean", float(c.p_mean), "Pa"), ("stiffness K", float(c.stiffness), "N/m^1.5")]
+    from ballrace.analytic import subsurface
+
+    nu = m1.nu if m1.nu == m2.nu else None
+    note = None
     try:
-        from ballrace.analytic import subsurface
         o = subsurface.orthogonal_shear(c)
-        mx = subsurface.max_shear(c)
-        rows += [("LP tau0", float(o.tau0), "Pa"), ("LP z0", float(o.z0), "m"),
-                 ("max shear (Tresca) on axis", float(mx.tau_max), "Pa"),
-                 ("depth of max shear", float(mx.depth), "m")]
-    except ImportError:  # subsurface module not available in this build
-        pass
+        rows += [("LP tau0 (orthogonal shear)", float(o.tau0), "Pa"), ("LP z0", float(o.z0), "m"),
+                 ("LP x0 (rolling offset)", float(o.x0), "m")]
+    except ValueError as exc:  # major axis along the rolling direction: LP does not apply
+        note = f"Lundberg-Palmgren shear not reported: {exc}"
+    if nu is not None:
+        mx = subsurface.max_shear(c, nu=nu)
+        vm = subsurface.von_mises(c, nu=nu)
+        rows += [("max shear (Tresca) on axis", float(mx.tau_max), "Pa"),
+                 ("depth of max shear", float(mx.depth), "m"),
+                 ("max von Mises on axis", float(vm.sigma_vm), "Pa"),
+                 ("depth of max von Mises", float(vm.depth), "m")]
+    else:
+        note = (note + "; " if note else "") + \
+            "subsurface stresses need one Poisson's ratio (nu1 != nu2): not reported"
     if as_json:
         out = {name: val for name, val, _ in rows}
         out["method"] = method
+        if note:
+            out["note"] = note
         typer.echo(json.dumps({"units": {n: u for n, _, u in rows}, "values": out}, indent=2))
         return
     _table(f"Hertz contact ({method})", rows)
+    if note:
+        typer.echo(note)
 
 
 def _table(title: str, rows) -> None:
