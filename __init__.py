@@ -14,8 +14,9 @@ from __future__ import annotations
 import logging
 
 from ballrace.analytic.materials import BEARING_STEEL, SILICON_NITRIDE, Material
+from ballrace.analytic.bearing import BallBearing
 
 __version__ = "0.1.0"
-__all__ = ["Material", "BEARING_STEEL", "SILICON_NITRIDE", "__version__"]
+__all__ = ["Material", "BallBearing", "BEARING_STEEL", "SILICON_NITRIDE", "__version__"]
 
 logging.getLogger(__name__).addHandler(logging.NullHandler())

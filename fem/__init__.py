@@ -1,1 +1,26 @@
-"""ballrace.fem."""
+"""Finite-element check of the Hertz ball–race contact (optional extra ``ballrace[fem]``).
+
+Quarter models (symmetry planes x = 0 and y = 0) meshed with gmsh
+(:mod:`ballrace.meshes`), P2 tetrahedra in scikit-fem, frictionless unilateral
+contact by a compliance matrix and non-negative least squares, compared with
+:mod:`ballrace.analytic.hertz` and :mod:`ballrace.analytic.subsurface`.
+
+>>> from ballrace import fem                                    # doctest: +SKIP
+>>> r = fem.ball_on_plane(12.7e-3, 2000.0, level="quick")       # doctest: +SKIP
+>>> r.a, r.b, r.p_max, r.approach, r.tau0, r.z0                 # doctest: +SKIP
+
+Importing this package is cheap: gmsh, meshio, scikit-fem and pyvista are imported
+only when a model is run or rendered.  Frame: x rolling, y transverse, z depth;
+Lundberg–Palmgren's "tau_yz" (their y = rolling) is ``tau_xz`` here, and both names
+are accepted by :func:`render`.
+"""
+from __future__ import annotations
+
+from .api import (GAPS, LEVELS, MODES, TOLERANCES, ContactCase, FEResult, ball_case,
+                  ball_on_ball, ball_on_plane, ball_on_race, plane_case, race_case, run_case)
+from .render import render
+from .solvers import SOLVERS, available_solvers
+
+__all__ = ["ball_on_race", "ball_on_plane", "ball_on_ball", "run_case", "render",
+           "race_case", "plane_case", "ball_case", "ContactCase", "FEResult", "LEVELS",
+           "MODES", "GAPS", "TOLERANCES", "SOLVERS", "available_solvers"]
