@@ -1,0 +1,1329 @@
+r"""Static load distribution in a single-row ball bearing with rigid rings.
+
+Model (Jones 1946, 1960; Hamrock & Dowson 1981 §3.3; Harris 2001 §7; Ricci 2009 §4).
+The outer ring is fixed; the inner ring moves by ``u = (dx, dy, dz, theta_y, theta_z)``
+(axial, two radial translations [m], two tilts [rad]).  Ball j at azimuth psi_j (from +y
+towards +z) joins the inner- and outer-groove curvature centres, whose separation is
+
+.. math::
+    x_j = x_0 + \delta_y\cos\psi_j + \delta_z\sin\psi_j, \qquad
+    z_j = z_0 + \delta_x + \mathcal{R}_i(\theta_y\sin\psi_j - \theta_z\cos\psi_j),
+
+    s_j = \sqrt{x_j^2 + z_j^2}, \quad \delta_{n,j} = s_j - A, \quad
+    \beta_j = \operatorname{atan2}(z_j, x_j), \quad
+    Q_j = K_n(\beta_j)\,\langle\delta_{n,j}\rangle^{3/2},
+
+with A = (f_i + f_o - 1) D, R_i the radius of the inner-groove centre locus and K_n the
+exact-Hertz ball stiffness at the ball's own contact angle (Hamrock & Dowson 1981
+eqs. 3.33–3.38, 3.61–3.65; Ricci 2009 eqs. 16, 22–27).  The reference configuration
+(u = 0) is the one where every ball just touches both races at the free contact angle:
+x_0 = A - P_d/2 = A cos beta_f, z_0 = A sin beta_f (H&D eq. 3.61); :func:`radial` uses the
+axially centred configuration z_0 = 0 instead (H&D eq. 3.39).  The groove torus is taken
+as complete on both sides (deep-groove model): a ball may be loaded at negative contact
+angle.
+
+Equilibrium of the inner ring (loads applied to it: Fa, Fy, Fz, My, Mz, right-handed
+moments about the bearing centre):
+
+.. math::
+    F_a = \sum Q_j\sin\beta_j,\quad F_y = \sum Q_j\cos\beta_j\cos\psi_j,\quad
+    F_z = \sum Q_j\cos\beta_j\sin\psi_j,
+
+    M_y = \sum r_j Q_j\sin\beta_j\sin\psi_j,\quad M_z = -\sum r_j Q_j\sin\beta_j\cos\psi_j.
+
+The moment arm r_j is ``moment_arm="groove"`` (default): r_j = R_i, consistent with the
+kinematics, so the ball forces derive from a potential and the stiffness matrix is
+(almost) symmetric (Harris 2001 §7.4); or ``moment_arm="contact"``: r_j = d_c/2 =
+(d_e - D cos beta_j)/2, the inner contact radius used by Ricci (2009 eq. 29).
+
+Solution: damped Newton with the analytic Jacobian (including dK_n/dbeta), a
+Levenberg regularisation for unloaded directions (clearance) and an Armijo line search
+on the frozen-stiffness potential, vectorized over load cases.  Unloaded balls carry
+Q = 0 exactly and keep their geometric angle atan2(z, x).  Inside the solver K_n(beta)
+(which depends on beta only through cos beta) is evaluated from a per-bearing Chebyshev
+series of ln K_n built from, and checked against, the exact Hertz solution to 1e-13
+(:func:`ball_stiffness` and the result's ``inner``/``outer`` contacts use the exact
+solution directly).
+"""
+from __future__ import annotations
+
+import functools
+import logging
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from . import hertz
+from ._checks import as_array, check_choice, check_nonnegative, check_positive, check_range
+from .bearing import BallBearing
+
+__all__ = [
+    "LoadDistribution",
+    "ConvergenceError",
+    "MOMENT_ARMS",
+    "solve",
+    "radial",
+    "thrust",
+    "combined",
+    "eccentric_thrust",
+    "ball_stiffness",
+    "jones_radial_factor",
+    "stribeck_max_ball_load",
+    "jones_max_ball_load",
+    "STRIBECK_LIMIT",
+]
+
+log = logging.getLogger(__name__)
+
+MOMENT_ARMS = ("groove", "contact")
+DOF = ("x", "y", "z", "theta_y", "theta_z")
+
+#: Stribeck's limit Z Q_max / F_r for zero clearance and many balls,
+#: 2 pi / B(1/2, 7/4) = 4.3701 (Stribeck 1901; Hamrock & Dowson 1981 eq. 3.48).
+STRIBECK_LIMIT = 2.0 * np.pi / (np.sqrt(np.pi) * 0.9190625268488832 / 1.1330030963193457)
+
+
+class ConvergenceError(RuntimeError):
+    """A load-distribution solve did not converge (message gives residual and iterations)."""
+
+
+# =========================================================================== stiffness
+_D1_COEF = None
+
+
+def _d1_and_derivative(m):
+    """(K - E)/m and its m-derivative for small m by series (A&S 1964 eqs. 17.3.11-12)."""
+    global _D1_COEF
+    if _D1_COEF is None:
+        coef = []
+        c = 1.0
+        for n in range(1, 18):
+            c *= ((2 * n - 1) / (2 * n)) ** 2
+            coef.append(0.5 * np.pi * c * 2 * n / (2 * n - 1))     # coefficient of m^(n-1)
+        _D1_COEF = np.array(coef[::-1])
+    return np.polyval(_D1_COEF, m), np.polyval(np.polyder(_D1_COEF), m)
+
+
+def _race_stiffness(Rx, Ry, Ep):
+    r"""Contact stiffness K and d ln K / d ln Rx at fixed Ry (exact Hertz, analytic).
+
+    K = pi k E' sqrt(2 E R / (9 K^3)) (H&D 1981 eq. 3.33) with k(alpha) from Hertz's
+    relation alpha = D2/(p D1), p = 1/k^2, D1 = (K - E)/m, D2 = K - D1 (H&D eq. 3.14);
+    d/dk by the elliptic-integral derivatives dK/dm = (E - pK)/(2mp), dE/dm = (E - K)/(2m)
+    (Abramowitz & Stegun 1964 eqs. 17.3.16-17.3.17 in parameter form).
+    """
+    swap = Ry < Rx
+    alpha = np.where(swap, Rx / Ry, Ry / Rx)
+    k, K, E = (np.asarray(v) for v in hertz.ellipticity(alpha))
+    R = Rx * Ry / (Rx + Ry)
+    stiff = np.pi * k * Ep * np.sqrt(2.0 * E * R / (9.0 * K**3))
+    p = 1.0 / (k * k)
+    m = (k - 1.0) * (k + 1.0) * p
+    small = m < 0.05
+    mb = np.where(small, 1.0, m)
+    D1 = (K - E) / mb
+    kD1k = (E - 2.0 * p * D1) / mb                                  # k dD1/dk
+    if np.any(small):                                               # no cancellation near k = 1
+        d1s, dd1s = _d1_and_derivative(np.where(small, m, 0.0))
+        D1 = np.where(small, d1s, D1)
+        kD1k = np.where(small, 2.0 * p * dd1s, kD1k)
+    D2 = K - D1
+    kD2k = D2 - kD1k                                                # k dD2/dk (k dK/dk = D2)
+    dlna = kD2k / D2 + 2.0 - kD1k / D1                              # d ln alpha / d ln k
+    dlng = 1.0 - 0.5 * p * D1 / E - 1.5 * D2 / K                    # d ln(K/sqrt R) / d ln k
+    G = dlng / dlna
+    dlnK_dlnRx = 0.5 * Ry / (Rx + Ry) + np.where(swap, G, -G)
+    return stiff, dlnK_dlnRx
+
+
+def _kn_exact(model, beta):
+    """Ball stiffness K_n(beta) [N/m^1.5] and d ln K_n / d beta [1/rad], exact Hertz."""
+    D, dm = model.D, model.dm
+    cb, sb = np.cos(beta), np.sin(beta)
+    g = D * cb / dm
+    Rx = np.concatenate([(0.5 * D) * (1.0 - g).ravel(), (0.5 * D) * (1.0 + g).ravel()])
+    Ry = np.concatenate([np.full(g.size, model.Ry_i), np.full(g.size, model.Ry_o)])
+    Kc, dlnK = _race_stiffness(Rx, Ry, model.Ep)
+    n = g.size
+    Ki, Ko = Kc[:n].reshape(g.shape), Kc[n:].reshape(g.shape)
+    dg = (D / dm) * sb                                       # = -d gamma / d beta
+    dli = dlnK[:n].reshape(g.shape) * dg / (1.0 - g)         # d ln K_i / d beta
+    dlo = -dlnK[n:].reshape(g.shape) * dg / (1.0 + g)        # d ln K_o / d beta
+    wi, wo = Ki ** (-2.0 / 3.0), Ko ** (-2.0 / 3.0)
+    Kn = (wi + wo) ** -1.5                                   # H&D (1981) eq. 3.38
+    return Kn, (wi * dli + wo * dlo) / (wi + wo)
+
+
+#: Required accuracy of the tabulated ln K_n(cos beta) against exact Hertz (absolute in
+#: ln K_n, i.e. relative in K_n), checked when the table is built.
+_TABLE_TOL = 1e-13
+
+
+def _kn_table(model):
+    """Chebyshev series of ln K_n in t = cos(beta) on [-1, 1], or None if not accurate.
+
+    K_n depends on beta only through gamma = (D/d_e) cos(beta) (Ricci 2009 eqs. 8-11),
+    an analytic function of t, so a Chebyshev interpolant converges geometrically.  The
+    series is accepted only if it reproduces the exact Hertz value to ``_TABLE_TOL`` at
+    1001 check points and its derivative to 1e-9 relative; otherwise the exact
+    evaluation is used throughout.
+    """
+    C = np.polynomial.chebyshev
+    t_chk = np.cos(np.linspace(0.0, np.pi, 1001))
+    b_chk = np.arccos(t_chk)
+    Kx, dx = _kn_exact(model, b_chk)
+    for deg in (24, 40, 64, 96):
+        c = C.chebinterpolate(lambda t: np.log(_kn_exact(model, np.arccos(np.clip(t, -1, 1)))[0]),
+                              deg)
+        err = np.max(np.abs(C.chebval(t_chk, c) - np.log(Kx)))
+        kc = np.arange(c.size) * c
+        d = -(np.sin(b_chk[:, None] * np.arange(c.size)) @ kc)
+        derr = np.max(np.abs(d - dx)) / max(np.max(np.abs(dx)), 1e-300)
+        if err <= _TABLE_TOL and derr <= 1e-9:
+            log.debug("K_n table: degree %d, max error %.2e (ln K_n), %.2e (derivative)",
+                      deg, err, derr)
+            return c, kc, kc[1:].copy()
+    log.info("K_n table not accurate enough (%.2e); using exact Hertz at every step", err)
+    return None
+
+
+def _kn(model, beta):
+    """Ball stiffness K_n(beta) [N/m^1.5] and d ln K_n / d beta [1/rad] (arrays).
+
+    With the table, ln K_n = sum c_k T_k(cos beta) = sum c_k cos(k beta): a cosine series
+    (one matrix product) for small arrays, Clenshaw's recurrence in cos(beta) for large
+    ones; the derivative is -sin(beta) sum k c_k U_{k-1}(cos beta), term by term.
+    """
+    if model.table is None:
+        return _kn_exact(model, beta)
+    c, kc, cu = model.table
+    n = c.size
+    if beta.size * n <= 4096:
+        arg = beta[..., None] * np.arange(n)
+        return np.exp(np.cos(arg) @ c), -(np.sin(arg) @ kc)
+    t = np.cos(beta)
+    t2 = 2.0 * t
+    b1 = np.zeros_like(t)                  # Clenshaw for sum c_k T_k(t)
+    b2 = np.zeros_like(t)
+    for ck in c[:0:-1]:
+        b1, b2 = t2 * b1 - b2 + ck, b1
+    lnK = t * b1 - b2 + c[0]
+    b1 = np.zeros_like(t)                  # Clenshaw for sum cu_k U_k(t), cu_k = (k+1) c_{k+1}
+    b2 = np.zeros_like(t)
+    for ck in cu[::-1]:
+        b1, b2 = t2 * b1 - b2 + ck, b1
+    return np.exp(lnK), -np.sin(beta) * b1
+
+
+def ball_stiffness(bearing: BallBearing, contact_angle):
+    r"""Ball stiffness K_n(beta) and its logarithmic derivative with contact angle.
+
+    .. math:: K_n = \left(K_i^{-2/3} + K_o^{-2/3}\right)^{-3/2}, \qquad
+              \frac{d\ln K_n}{d\beta} = \sum_{r=i,o} w_r
+              \frac{\partial\ln K_r}{\partial\ln R_{x,r}}\frac{d\ln R_{x,r}}{d\beta},
+              \quad w_r = \frac{K_r^{-2/3}}{K_i^{-2/3} + K_o^{-2/3}}
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing.
+    contact_angle : float or array_like
+        Contact angle beta [rad].
+
+    Returns
+    -------
+    K_n : float or ndarray
+        [N/m^1.5].
+    dlnKn_dbeta : float or ndarray
+        d ln K_n / d beta [1/rad], analytic (used by the Newton Jacobian).
+
+    References
+    ----------
+    Hamrock & Dowson (1981) eqs. (3.14), (3.33), (3.38); Ricci (2009) eqs. (8)–(16).
+
+    Examples
+    --------
+    >>> import ballrace
+    >>> brg = ballrace.BallBearing(22.225e-3, 16, 125.26e-3, 0.5232, 0.5232,
+    ...                            free_contact_angle=np.radians(40))
+    >>> Kn, dlnK = ball_stiffness(brg, np.radians(40))
+    >>> round(float(Kn) / 1e9, 4), bool(np.isclose(Kn, brg.contact_stiffness(np.radians(40))[2]))
+    (14.2471, True)
+    """
+    b = as_array(contact_angle, "contact_angle")
+    Kn, d = _kn_exact(_Model.of(bearing), b)
+    return hertz._scalar(Kn), hertz._scalar(d)
+
+
+# =========================================================================== model
+@dataclass(frozen=True)
+class _Model:
+    """Plain numbers of a bearing used by the kernels."""
+
+    D: float
+    dm: float
+    A: float
+    Ri: float
+    Ep: float
+    Ry_i: float
+    Ry_o: float
+    Z: int
+    beta_f: float
+    Pd: float
+    table: tuple | None = None
+    Kn_free: float = 0.0
+
+    @staticmethod
+    @functools.lru_cache(maxsize=64)
+    def of(b: BallBearing) -> "_Model":
+        if b.n_rows != 1:
+            raise NotImplementedError(
+                f"load distribution is implemented for single-row bearings (n_rows=1); "
+                f"got n_rows={b.n_rows}")
+        D = b.ball_diameter
+        m = _Model(D=D, dm=b.pitch_diameter, A=b.curvature_center_distance,
+                   Ri=b.inner_groove_center_radius, Ep=b.E_prime,
+                   Ry_i=b.f_inner * D / (2 * b.f_inner - 1),
+                   Ry_o=b.f_outer * D / (2 * b.f_outer - 1), Z=b.n_balls,
+                   beta_f=b.free_contact_angle, Pd=b.diametral_clearance)
+        Kf = float(_kn_exact(m, np.array([m.beta_f]))[0][0])
+        return replace(m, table=_kn_table(m), Kn_free=Kf)
+
+
+def _reference(model: _Model, clearance, centered: bool):
+    """(x0, z0): groove-centre separation of the reference configuration (H&D 3.39, 3.61)."""
+    if clearance is None:
+        Pd = model.Pd
+    else:
+        Pd = float(check_range(clearance, "clearance", None, 2.0 * model.A, unit="m"))
+    x0 = model.A - 0.5 * Pd
+    z0 = 0.0 if centered or x0 >= model.A else float(np.sqrt(model.A**2 - x0**2))
+    return Pd, x0, z0
+
+
+# =========================================================================== kernel
+class _Geo:
+    """Per-solve constants: ball azimuths and the kinematic vectors dx_j/du, dz_j/du."""
+
+    __slots__ = ("psi", "cp", "sp", "gx", "gz", "G", "x0", "z0", "A", "g0")
+
+    def __init__(self, model, psi, x0, z0):
+        Z = psi.size
+        self.psi, self.cp, self.sp = psi, np.cos(psi), np.sin(psi)
+        gx = np.zeros((Z, 5))
+        gx[:, 1], gx[:, 2] = self.cp, self.sp
+        gz = np.zeros((Z, 5))
+        gz[:, 0], gz[:, 3], gz[:, 4] = 1.0, model.Ri * self.sp, -model.Ri * self.cp
+        self.gx, self.gz = gx, gz
+        self.G = np.stack([gx, gz], axis=1)                  # (Z, 2, 5)
+        self.x0, self.z0, self.A = x0, z0, model.A
+        # x0^2 + z0^2 - A^2 without cancellation: 0 for the touching reference,
+        # (x0 - A)(x0 + A) = -(P_d/2)(x0 + A) for the centred one
+        self.g0 = 0.0 if z0 > 0 else (x0 - model.A) * (x0 + model.A)
+
+    def xz(self, u):
+        """Groove-centre separations x_j, z_j and approach s_j - A (N, Z) at u (N, 5).
+
+        s - A = (g0 + 2 x0 dx + dx^2 + 2 z0 dz + dz^2)/(s + A) keeps full relative
+        precision when the approach is many orders below A (light loads).
+        """
+        dx, dz = u @ self.gx.T, u @ self.gz.T
+        x, z = self.x0 + dx, self.z0 + dz
+        s = np.hypot(x, z)
+        approach = (self.g0 + dx * (2.0 * self.x0 + dx) + dz * (2.0 * self.z0 + dz)) / (s + self.A)
+        return x, z, s, approach
+
+
+class _State:
+    """Ball geometry, loads, resultant and (optionally) Jacobian at displacements u (N,5)."""
+
+    __slots__ = ("s", "beta", "c", "sn", "delta", "Kn", "dlnK", "Q", "F", "J")
+
+    def __init__(self, model, geo, u, arm, jac=True, Kn=None):
+        x, z, s, delta = geo.xz(u)
+        s = np.maximum(s, 1e-300)
+        c, sn = x / s, z / s
+        beta = np.arctan2(z, x)
+        delta = np.maximum(delta, 0.0)
+        if Kn is None:
+            Kn, dlnK = _kn(model, beta)
+        else:
+            dlnK = np.zeros_like(Kn)
+        Q = Kn * delta * np.sqrt(delta)
+        fr, fa = Q * c, Q * sn
+        F = fr @ geo.gx + fa @ geo.gz
+        if arm == "contact":                                 # Ricci (2009) eq. 29 arm
+            r = 0.5 * (model.dm - model.D * c)
+            F[:, 3] = (r * fa) @ geo.sp
+            F[:, 4] = -((r * fa) @ geo.cp)
+        self.s, self.beta, self.c, self.sn = s, beta, c, sn
+        self.delta, self.Kn, self.dlnK, self.Q, self.F = delta, Kn, dlnK, Q, F
+        self.J = _jacobian(model, geo, self, arm) if jac else None
+
+
+def _jacobian(model, geo, st, arm):
+    """Analytic dF/du (N,5,5) of the ball resultant (chain rule through x_j, z_j, beta_j)."""
+    c, sn, s, Q, Kn = st.c, st.sn, st.s, st.Q, st.Kn
+    k15 = 1.5 * Kn * np.sqrt(st.delta)
+    qk = Q * st.dlnK / s
+    dQx = k15 * c - qk * sn                       # dQ/dx
+    dQz = k15 * sn + qk * c                       # dQ/dz
+    qs = Q / s
+    W = np.empty(c.shape + (2, 2))
+    W[..., 0, 0] = dQx * c + qs * sn * sn         # d(Q cos b)/dx
+    W[..., 0, 1] = dQz * c - qs * c * sn          # d(Q cos b)/dz
+    W[..., 1, 0] = dQx * sn - qs * c * sn         # d(Q sin b)/dx
+    W[..., 1, 1] = dQz * sn + qs * c * c          # d(Q sin b)/dz
+    if arm == "groove":                           # F = sum gx fr + gz fa
+        Z = geo.G.shape[0]
+        WG = (W @ geo.G).reshape(c.shape[0], 2 * Z, 5)      # (N, 2Z, 5)
+        return geo.G.reshape(2 * Z, 5).T @ WG
+    # contact arm: F = sum gx fr + m fa, m = (1, 0, 0, r sin psi, -r cos psi), r = r(beta)
+    gx, gz, cp, sp = geo.gx, geo.gz, geo.cp, geo.sp
+    r = 0.5 * (model.dm - model.D * c)
+    m = np.zeros(c.shape + (5,))
+    m[..., 0], m[..., 3], m[..., 4] = 1.0, r * sp, -r * cp
+    J = np.einsum("zi,nz,zj->nij", gx, W[..., 0, 0], gx) + np.einsum("zi,nz,zj->nij", gx, W[..., 0, 1], gz)
+    J += np.einsum("nzi,nz,zj->nij", m, W[..., 1, 0], gx) + np.einsum("nzi,nz,zj->nij", m, W[..., 1, 1], gz)
+    # d m / d beta = (0,0,0, r' sin psi, -r' cos psi), r' = D sin(beta)/2
+    w = Q * sn * 0.5 * model.D * sn                 # fa * r'
+    dm_ = np.zeros(c.shape + (5,))
+    dm_[..., 3], dm_[..., 4] = w * sp, -w * cp
+    J += np.einsum("nzi,nz,zj->nij", dm_, -sn / s, gx) + np.einsum("nzi,nz,zj->nij", dm_, c / s, gz)
+    return J
+
+
+def _potential(model, geo, u, Kn, F):
+    """Frozen-stiffness potential sum 2/5 K delta^2.5 - F.u (free DOFs), per case."""
+    d = np.maximum(geo.xz(u)[3], 0.0)
+    return 0.4 * (Kn * d * d * np.sqrt(d)).sum(1) - (F * u).sum(1)
+
+
+def _masked(J, fixed, sc, mu):
+    """Scaled Jacobian with imposed DOFs replaced by identity rows/columns, plus mu I."""
+    Js = J / sc[None, :, None] / sc[None, None, :]
+    Js = np.where(fixed[:, :, None] | fixed[:, None, :], 0.0, Js)
+    diag = np.arange(5)
+    Js[:, diag, diag] += np.where(fixed, 1.0, mu[:, None])
+    return Js
+
+
+def _newton(model, geo, F, u0, fixed, arm, rtol, max_iter):
+    """Damped Newton for all N cases at once; returns (u (N,5), iterations (N,))."""
+    N = F.shape[0]
+    sc = np.array([1.0, 1.0, 1.0, model.Ri, model.Ri])      # moments -> forces at R_i
+    free = ~fixed
+    F = np.where(free, F, 0.0)
+    Fs_ext = np.abs(F / sc).max(1)
+    step_max = 0.25 * model.A                               # trust radius [m]
+
+    def residual(st, idx):
+        R = np.where(free[idx], st.F - F[idx], 0.0) / sc
+        scale = np.maximum(np.maximum(Fs_ext[idx], st.Q.max(1)), 1e-300)
+        return R, np.abs(R).max(1) / scale
+
+    u = u0.copy()
+    st = _State(model, geo, u, arm)
+    Kn, J, delta, qmax = st.Kn, st.J, st.delta, st.Q.max(1)
+    Rs, err = residual(st, np.arange(N))
+    iters = np.zeros(N, dtype=int)
+    active = np.flatnonzero(err > rtol)
+    it = 0
+    while active.size:
+        if it >= max_iter:
+            i = active[np.argmax(err[active])]
+            raise ConvergenceError(
+                f"load distribution did not converge after {it} iterations: relative "
+                f"equilibrium residual {err[i]:.3e} (> rtol={rtol:g}) in load case {int(i)}; "
+                f"loads {F[i].tolist()}, displacements {u[i].tolist()}")
+        it += 1
+        a = active
+        ua, Ra, fx = u[a], Rs[a], fixed[a]
+        n_free = np.maximum((~fx).sum(1), 1)
+        Js = _masked(J[a], fx, sc, np.zeros(a.size))
+        tr = np.abs(np.einsum("nii->n", np.where(fx[:, :, None], 0.0, Js))) / n_free
+        # Levenberg floor for unloaded / weak directions: 1e-6 of the geometric stiffness
+        # ~ F/A (scales with the load, so light loads still cross clearances quickly)
+        mu = np.maximum(1e-12 * tr, 1e-6 * np.maximum(Fs_ext[a], qmax[a]) / model.A)
+        Js[:, np.arange(5), np.arange(5)] += np.where(fx, 0.0, mu[:, None])
+        dS = -np.linalg.solve(Js, Ra[..., None])[..., 0]
+        g = (Ra * dS).sum(1)
+        if arm == "groove" and np.any(~(g < 0)):
+            # not a descent direction of the potential: use the symmetric frozen-K Hessian
+            b = np.flatnonzero(~(g < 0))
+            sb = _State(model, geo, ua[b], arm, Kn=Kn[a][b])
+            Jb = _masked(0.5 * (sb.J + np.swapaxes(sb.J, 1, 2)), fx[b], sc, mu[b])
+            dS[b] = -np.linalg.solve(Jb, Ra[b][..., None])[..., 0]
+        size = np.abs(dS).max(1)
+        dS *= np.minimum(1.0, step_max / np.maximum(size, 1e-300))[:, None]
+        g = (Ra * dS).sum(1)
+        du = dS / sc
+        t = np.ones(a.size)
+        local = err[a] < 1e-6                  # quadratic-convergence region: full steps
+        if arm == "groove":
+            Kf, Fa_ = Kn[a], F[a]
+            d = delta[a]
+            phi0 = 0.4 * (Kf * d * d * np.sqrt(d)).sum(1) - (Fa_ * ua).sum(1)
+            todo = ~local
+            for _ in range(60):
+                idx = np.flatnonzero(todo)
+                if not idx.size:
+                    break
+                ph = _potential(model, geo, ua[idx] + t[idx, None] * du[idx], Kf[idx],
+                                Fa_[idx])
+                ok = ph <= phi0[idx] + 1e-4 * t[idx] * g[idx]
+                todo[idx[ok]] = False
+                t[idx[~ok]] *= 0.5
+            unew = ua + t[:, None] * du
+            snew = _State(model, geo, unew, arm)
+            Rn, en = residual(snew, a)
+        else:
+            m0 = (Ra * Ra).sum(1)
+            unew = ua + du
+            snew = _State(model, geo, unew, arm)
+            Rn, en = residual(snew, a)
+            worse = ((Rn * Rn).sum(1) > m0) & ~local
+            for _ in range(40):
+                w = np.flatnonzero(worse)
+                if not w.size:
+                    break
+                t[w] *= 0.5
+                unew[w] = ua[w] + t[w, None] * du[w]
+                sw = _State(model, geo, unew[w], arm)
+                Rw, ew = residual(sw, a[w])
+                snew.Kn[w], snew.J[w], snew.delta[w] = sw.Kn, sw.J, sw.delta
+                Rn[w], en[w] = Rw, ew
+                worse[w] = (Rw * Rw).sum(1) > m0[w]
+        u[a] = unew
+        iters[a] += 1
+        # round-off floor: the approach s - A of a lightly loaded ball is resolved only to
+        # ~eps |rigid displacement|, so once Newton stops making progress accept
+        # max(100 rtol, 20 eps max|du| / delta_max) (Q ~ delta^1.5)
+        dmax = snew.delta.max(1)
+        umax = np.abs(unew * sc).max(1)
+        fl = np.maximum(100.0 * rtol,
+                        20.0 * np.finfo(float).eps * umax / np.where(dmax > 0, dmax, np.inf))
+        floor = (en <= fl) & (en > 0.5 * err[a])
+        if np.any(floor):
+            log.debug("load distribution: %d cases stopped at the round-off floor (max %.2e)",
+                      int(floor.sum()), float(en[floor].max()))
+        Rs[a], err[a] = Rn, en
+        J[a], Kn[a], delta[a], qmax[a] = snew.J, snew.Kn, snew.delta, snew.Q.max(1)
+        active = a[(en > rtol) & ~floor]
+    if it:
+        log.debug("load distribution: %d cases converged in at most %d Newton iterations", N, it)
+    return u, iters
+
+
+# =========================================================================== results
+@dataclass(frozen=True)
+class LoadDistribution:
+    """Static load distribution of a ball bearing (frozen; leading axes = load cases).
+
+    Attributes
+    ----------
+    bearing : BallBearing
+        The bearing.
+    azimuths : ndarray, shape (Z,)
+        Ball azimuths psi_j from +y towards +z [rad].
+    displacements : ndarray, shape (..., 5)
+        Inner-ring displacement (dx, dy, dz [m], theta_y, theta_z [rad]) from the reference
+        configuration (see ``axial_offset``).
+    loads : ndarray, shape (..., 5)
+        Resultant of the ball forces on the inner ring (Fa, Fy, Fz [N], My, Mz [N m]):
+        the applied loads on free DOFs, the reactions on imposed ones.
+    applied : ndarray, shape (..., 5)
+        Applied loads (zero on imposed DOFs) [N, N m].
+    imposed : ndarray of bool, shape (..., 5)
+        DOFs whose displacement was imposed.
+    ball_loads : ndarray, shape (..., Z)
+        Ball normal loads Q_j [N] (0 for unloaded balls).
+    contact_angles : ndarray, shape (..., Z)
+        Contact angles beta_j [rad]; for an unloaded ball the angle of the line joining
+        the groove centres (Ricci 2009 convention).
+    stiffness : ndarray, shape (..., 5, 5)
+        Tangent stiffness d(loads)/d(displacements) [N/m, N/rad, N m/m, N m/rad].
+    clearance : float
+        Diametral clearance P_d of the reference configuration [m] (negative: interference).
+    axial_offset : float
+        Axial offset z_0 of the groove centres in the reference configuration [m]:
+        A sin(beta_f) (balls just touching; H&D 1981 eq. 3.61) or 0 (centred).
+    moment_arm : str
+        ``"groove"`` or ``"contact"`` (see the module notes).
+    iterations : int
+        Newton iterations (largest over the load cases).
+    """
+
+    bearing: BallBearing
+    azimuths: np.ndarray
+    displacements: np.ndarray
+    loads: np.ndarray
+    applied: np.ndarray
+    imposed: np.ndarray
+    ball_loads: np.ndarray
+    contact_angles: np.ndarray
+    stiffness: np.ndarray
+    clearance: float
+    axial_offset: float
+    moment_arm: str = "groove"
+    iterations: int = 0
+    method: str = field(default="exact", repr=False)
+
+    # ------------------------------------------------------------------ scalars
+    @property
+    def max_ball_load(self):
+        """Largest ball load Q_max [N]."""
+        return hertz._scalar(np.max(self.ball_loads, axis=-1))
+
+    @property
+    def residual(self):
+        """Equilibrium residual loads - applied on free DOFs (0 on imposed ones) [N, N m]."""
+        return np.where(self.imposed, 0.0, self.loads - self.applied)
+
+    @property
+    def relative_residual(self):
+        """max |residual| (moments / R_i) over max(|applied|, Q_max) [-]."""
+        sc = np.array([1.0, 1.0, 1.0, 1.0, 1.0])
+        sc[3:] = self.bearing.inner_groove_center_radius
+        r = np.abs(self.residual / sc).max(-1)
+        scale = np.maximum(np.abs(self.applied / sc).max(-1), self.max_ball_load)
+        return hertz._scalar(np.where(scale > 0, r / np.where(scale > 0, scale, 1.0), r))
+
+    @property
+    def axial_deflection(self):
+        """Axial inner-ring displacement dx from the reference configuration [m]."""
+        return hertz._scalar(self.displacements[..., 0])
+
+    @property
+    def radial_deflection(self):
+        """Radial inner-ring displacement sqrt(dy^2 + dz^2) [m]."""
+        return hertz._scalar(np.hypot(self.displacements[..., 1], self.displacements[..., 2]))
+
+    @property
+    def misalignment(self):
+        """Tilt of the inner ring sqrt(theta_y^2 + theta_z^2) [rad]."""
+        return hertz._scalar(np.hypot(self.displacements[..., 3], self.displacements[..., 4]))
+
+    @functools.cached_property
+    def loaded_zone(self):
+        r"""Half-angle psi_l of the loaded arc [rad], in [0, pi].
+
+        Half the angular measure of the azimuths at which a ball would be loaded,
+        s(psi) > A, on the continuous pitch circle; for radial load
+        psi_l = arccos(P_d / 2 delta_r) (Hamrock & Dowson 1981 eq. 3.43), for eccentric
+        thrust psi_l = arccos(-delta_a / R_i theta) (Ricci 2009 eq. 21).
+        """
+        model = _Model.of(self.bearing)
+        u = self.displacements.reshape(-1, 5)
+        x0 = model.A - 0.5 * self.clearance
+        return hertz._scalar(_loaded_zone(model, x0, self.axial_offset, u)
+                             .reshape(self.displacements.shape[:-1]))
+
+    # ------------------------------------------------------------------ contacts
+    @functools.cached_property
+    def inner(self) -> hertz.HertzContact:
+        """Hertz contacts of the balls on the inner race (a, b, p_max, ...) per ball."""
+        return self.bearing.contacts(self.ball_loads, self.contact_angles, "inner", self.method)
+
+    @functools.cached_property
+    def outer(self) -> hertz.HertzContact:
+        """Hertz contacts of the balls on the outer race per ball."""
+        return self.bearing.contacts(self.ball_loads, self.contact_angles, "outer", self.method)
+
+    @functools.cached_property
+    def inner_shear(self):
+        """Lundberg–Palmgren orthogonal shear (.tau0 [Pa], .z0 [m]) under the inner contacts.
+
+        Computed on first access by :func:`ballrace.analytic.subsurface.orthogonal_shear`
+        (Hamrock & Dowson 1981 eqs. 3.19–3.27).
+        """
+        from .subsurface import orthogonal_shear
+        return orthogonal_shear(self.inner)
+
+    @functools.cached_property
+    def outer_shear(self):
+        """Lundberg–Palmgren orthogonal shear (.tau0 [Pa], .z0 [m]) under the outer contacts."""
+        from .subsurface import orthogonal_shear
+        return orthogonal_shear(self.outer)
+
+    def truncation_margin(self, race: str):
+        r"""Angular margin of the contact ellipse to the shoulder edge [rad].
+
+        .. math:: \theta_s - \left(|\beta| + \arcsin\frac{a}{f D}\right)
+
+        negative where the contact ellipse runs over the shoulder (truncated);
+        Hamrock & Dowson (1981) eqs. (3.57)–(3.58).  ``None`` if that shoulder height
+        was not given.  Unloaded balls get ``theta_s - |beta|``.
+
+        Parameters
+        ----------
+        race : {"inner", "outer"}
+            Which race.
+        """
+        theta_s = self.bearing.shoulder_angle(race)
+        if theta_s is None:
+            return None
+        c = self.inner if race == "inner" else self.outer
+        f = self.bearing.f_inner if race == "inner" else self.bearing.f_outer
+        half = np.arcsin(np.clip(np.asarray(c.a) / (f * self.bearing.ball_diameter), 0.0, 1.0))
+        return hertz._scalar(theta_s - (np.abs(self.contact_angles) + half))
+
+    def truncated(self, race: str):
+        """Per ball: True where the contact ellipse runs over the shoulder (``None`` if no
+        shoulder height was given); see :meth:`truncation_margin`."""
+        m = self.truncation_margin(race)
+        return None if m is None else hertz._scalar((np.asarray(m) < 0) & (self.ball_loads > 0))
+
+
+def _loaded_zone(model, x0, z0, u):
+    """Half measure of {psi : s(psi) > A} for each case (grid + ball azimuths, bisection)."""
+    N = u.shape[0]
+    psi_b = np.mod(2.0 * np.pi * np.arange(model.Z) / model.Z, 2 * np.pi)
+    grid = np.unique(np.concatenate([np.linspace(0.0, 2 * np.pi, 1441)[:-1], psi_b]))
+    grid = np.append(grid, 2 * np.pi)
+    extra = np.mod(np.arctan2(u[:, 2], u[:, 1]), 2 * np.pi)      # direction of radial shift
+
+    g0 = 0.0 if z0 > 0 else (x0 - model.A) * (x0 + model.A)
+
+    def f(psi, uu):          # s(psi) - A without cancellation (see _Geo.xz)
+        dx = uu[:, 1:2] * np.cos(psi) + uu[:, 2:3] * np.sin(psi)
+        dz = uu[:, 0:1] + model.Ri * (uu[:, 3:4] * np.sin(psi) - uu[:, 4:5] * np.cos(psi))
+        return g0 + dx * (2.0 * x0 + dx) + dz * (2.0 * z0 + dz)
+
+    g = np.sort(np.concatenate([np.broadcast_to(grid, (N, grid.size)), extra[:, None]], 1), 1)
+    v = f(g, u)
+    pos = v > 0
+    lo, hi = g[:, :-1], g[:, 1:]
+    plo, phi = pos[:, :-1], pos[:, 1:]
+    measure = np.where(plo & phi, hi - lo, 0.0).sum(1)
+    ci, cj = np.nonzero(plo != phi)
+    if ci.size:
+        a, b = lo[ci, cj].copy(), hi[ci, cj].copy()
+        la = plo[ci, cj]
+        uu = u[ci]
+        for _ in range(55):
+            mid = 0.5 * (a + b)
+            pm = f(mid[:, None], uu)[:, 0] > 0
+            same = pm == la
+            a = np.where(same, mid, a)
+            b = np.where(same, b, mid)
+        r = 0.5 * (a + b)
+        part = np.where(la, r - lo[ci, cj], hi[ci, cj] - r)
+        np.add.at(measure, ci, part)
+    return 0.5 * measure
+
+
+# =========================================================================== public solvers
+def _loads_array(Fa, Fy, Fz, My, Mz):
+    arrs = [as_array(v, n) for v, n in ((Fa, "Fa"), (Fy, "Fy"), (Fz, "Fz"), (My, "My"), (Mz, "Mz"))]
+    b = np.broadcast_arrays(*arrs)
+    return np.stack(b, axis=-1)
+
+
+def _result(bearing, model, psi, x0, z0, Pd, u, applied, imposed, arm, iters, shape, method):
+    st = _State(model, _Geo(model, psi, x0, z0), u, arm)
+    Z = model.Z
+    return LoadDistribution(
+        bearing=bearing, azimuths=psi,
+        displacements=u.reshape(shape + (5,)), loads=st.F.reshape(shape + (5,)),
+        applied=np.where(imposed, 0.0, applied).reshape(shape + (5,)),
+        imposed=imposed.reshape(shape + (5,)),
+        ball_loads=st.Q.reshape(shape + (Z,)), contact_angles=st.beta.reshape(shape + (Z,)),
+        stiffness=st.J.reshape(shape + (5, 5)), clearance=float(Pd), axial_offset=float(z0),
+        moment_arm=arm, iterations=int(np.max(iters, initial=0)), method=method)
+
+
+def solve(bearing: BallBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *, displacements=None,
+          clearance=None, azimuth_offset: float = 0.0, moment_arm: str = "groove",
+          rtol: float = 1e-12, max_iter: int = 200, initial=None,
+          _centered: bool = False) -> LoadDistribution:
+    r"""General five-degree-of-freedom static load distribution (rigid rings, exact Hertz).
+
+    Solves, for the inner-ring displacement u = (dx, dy, dz, theta_y, theta_z), the
+    equilibrium of the module equations (Jones 1960; Harris 2001 §7.4; Hamrock & Dowson
+    1981 eqs. 3.61–3.74 generalised to five DOFs; Ricci 2009 eqs. 26–31):
+
+    .. math:: \sum_j Q_j(u)\,\frac{\partial \delta_{n,j}}{\partial u} = F,
+              \qquad Q_j = K_n(\beta_j)\,\langle s_j(u) - A\rangle^{3/2}
+
+    Any DOF can be imposed instead of loaded (misalignment, fixed shaft position): give
+    ``displacements`` with numbers for the imposed DOFs and ``None``/NaN for the free
+    ones; the reaction appears in ``result.loads``.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        Single-row bearing.
+    Fa : float or array_like
+        Axial (thrust) load on the inner ring [N]; positive loads the free-contact-angle
+        side.
+    Fy, Fz : float or array_like
+        Radial loads [N].
+    My, Mz : float or array_like
+        Tilting moments about y and z [N m] (right-handed: thrust Fa at y = e gives
+        Mz = -e Fa).
+    displacements : array_like, optional
+        Shape (..., 5): imposed (dx, dy, dz [m], theta_y, theta_z [rad]) with ``None`` or
+        NaN for free DOFs.  The load on an imposed DOF must be 0.
+    clearance : float, optional
+        Diametral clearance P_d of the reference configuration [m], < 2A; default the
+        bearing's.  Negative means interference (preload).
+    azimuth_offset : float, optional
+        Azimuth of ball 1 from +y [rad].
+    moment_arm : {"groove", "contact"}
+        Moment arm of the ball thrust components: R_i (consistent, default) or the
+        inner contact radius (d_e - D cos beta)/2 of Ricci (2009) eq. 29.
+    rtol : float, optional
+        Equilibrium tolerance, relative to max(|applied load|, Q_max) with moments
+        divided by R_i [-].
+    max_iter : int, optional
+        Newton iteration limit.
+    initial : array_like, optional
+        Starting displacements, shape (..., 5) [m, rad].
+
+    Returns
+    -------
+    LoadDistribution
+
+    Raises
+    ------
+    ConvergenceError
+        If the equilibrium residual is not below ``rtol`` after ``max_iter`` iterations
+        (the message gives the residual, the iteration count and the load case).
+
+    References
+    ----------
+    Jones, A.B. (1960) J. Basic Eng. 82(2) 309–320; Harris, T.A. (2001) *Rolling Bearing
+    Analysis*, 4th ed., Wiley, §7.4; Hamrock & Dowson (1981) eqs. (3.31)–(3.74);
+    Ricci (2009) eqs. (16)–(31).
+
+    Examples
+    --------
+    >>> import ballrace
+    >>> brg = ballrace.BallBearing(22.225e-3, 16, 125.26e-3, 0.5232, 0.5232,
+    ...                            free_contact_angle=np.radians(40))
+    >>> r = solve(brg, Fa=17800.0)
+    >>> round(float(np.degrees(r.contact_angles[0])), 3), round(float(r.max_ball_load), 1)
+    (41.53, 1677.9)
+    >>> r = solve(brg, Fa=17800.0, Fy=8900.0, Mz=-200.0)
+    >>> bool(r.relative_residual < 1e-9), round(float(r.max_ball_load))
+    (True, 4073)
+    """
+    if not isinstance(bearing, BallBearing):
+        raise TypeError(f"bearing must be a ballrace.BallBearing; got {type(bearing).__name__}")
+    check_choice(moment_arm, "moment_arm", MOMENT_ARMS)
+    model = _Model.of(bearing)
+    L = _loads_array(Fa, Fy, Fz, My, Mz)
+    if displacements is None:
+        D = np.full(L.shape, np.nan)
+    else:
+        D = np.asarray(displacements, dtype=float)
+        if D.shape[-1:] != (5,):
+            raise ValueError("displacements must have shape (..., 5): (dx, dy, dz, theta_y, "
+                             f"theta_z) with None/NaN for free DOFs; got shape {D.shape}")
+        if np.any(np.isinf(D)):
+            raise ValueError("displacements must be finite or None/NaN (free) [m, rad]")
+    L, D = np.broadcast_arrays(L, D)
+    shape = L.shape[:-1]
+    L = L.reshape(-1, 5).astype(float)
+    D = D.reshape(-1, 5)
+    imposed = ~np.isnan(D)
+    if np.any(imposed & (L != 0)):
+        k = int(np.argwhere(imposed & (L != 0))[0][1])
+        raise ValueError(f"the load on DOF {DOF[k]!r} must be 0 when its displacement is "
+                         "imposed (the reaction is returned in result.loads)")
+    Pd, x0, z0 = _reference(model, clearance, _centered)
+    psi = bearing.azimuths(azimuth_offset)
+    u0 = np.zeros_like(L)
+    if initial is not None:
+        u0 = np.broadcast_to(as_array(initial, "initial"), shape + (5,)).reshape(-1, 5).copy()
+    u0 = np.where(imposed, np.nan_to_num(D), u0)
+    rtol = float(check_range(rtol, "rtol", 0.0, 1e-3, high_inclusive=True, unit="-"))
+    geo = _Geo(model, psi, x0, z0)
+    u, iters = _newton(model, geo, L, u0, imposed, "groove", rtol, max_iter)
+    if moment_arm == "contact":
+        u, it2 = _newton(model, geo, L, u, imposed, "contact", rtol, max_iter)
+        iters = iters + it2
+    return _result(bearing, model, psi, x0, z0, Pd, u, L, imposed, moment_arm, iters, shape,
+                   "exact")
+
+
+def radial(bearing: BallBearing, Fr, clearance=None, azimuth_offset: float = 0.0,
+           **kwargs) -> LoadDistribution:
+    r"""Pure radial load with diametral clearance (rings axially centred, no tilt).
+
+    .. math:: \delta_\psi = \delta_r\cos\psi - P_d/2, \qquad
+              Q_\psi = K_n \langle\delta_\psi\rangle^{3/2}, \qquad
+              F_r = \sum Q_\psi \cos\psi
+
+    (Hamrock & Dowson 1981 eqs. 3.39–3.42; Jones 1946).  Here both radial components
+    are free, so a ball set rotated by ``azimuth_offset`` is handled exactly (the ring
+    then also moves slightly across the load line); the load acts along +y.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing.
+    Fr : float or array_like
+        Radial load along +y [N], >= 0.
+    clearance : float, optional
+        Diametral clearance P_d [m], < 2A; negative for interference (preload).
+        Default: the bearing's.
+    azimuth_offset : float, optional
+        Azimuth of ball 1 from the load line [rad]; 0 puts a ball on the load line,
+        pi/Z straddles it.
+    **kwargs
+        ``rtol``, ``max_iter`` as in :func:`solve`.
+
+    Returns
+    -------
+    LoadDistribution
+        With ``axial_offset = 0`` (centred reference configuration).
+
+    References
+    ----------
+    Hamrock & Dowson (1981) eqs. (3.39)–(3.48); Stribeck (1907) Trans. ASME 29 420–463.
+
+    Examples
+    --------
+    Seed 002 (Tata): 8 balls, 570 lb radial, zero clearance: ball 1 carries 310 lb,
+    balls 2 and 3 carry 184 lb each.
+
+    >>> import ballrace
+    >>> brg = ballrace.BallBearing(12.7e-3, 8, 50e-3, 0.52, 0.52, diametral_clearance=0.0)
+    >>> lbf = 4.4482216152605
+    >>> r = radial(brg, 570 * lbf)
+    >>> np.round(r.ball_loads[[0, 1, 7]] / lbf, 1)        # psi = 0, +45, -45 deg
+    array([309.6, 184.1, 184.1])
+    >>> round(float(np.degrees(r.loaded_zone)), 6)
+    90.0
+    """
+    Fr = check_nonnegative(Fr, "Fr", "N")
+    d = np.array([0.0, np.nan, np.nan, 0.0, 0.0])
+    return solve(bearing, Fy=Fr, displacements=d, clearance=clearance,
+                 azimuth_offset=azimuth_offset, _centered=True, **kwargs)
+
+
+def combined(bearing: BallBearing, Fr, Fa, azimuth_offset: float = 0.0,
+             **kwargs) -> LoadDistribution:
+    r"""Combined radial and thrust load after Jones: ring displacements delta_a, delta_r,
+    no misalignment (the tilting moment is a reaction).
+
+    .. math::
+        s(\psi) = \left[(A\sin\beta_f + \delta_a)^2
+                  + (A\cos\beta_f + \delta_r\cos\psi)^2\right]^{1/2}, \quad
+        \tan\beta = \frac{A\sin\beta_f + \delta_a}{A\cos\beta_f + \delta_r\cos\psi},
+
+        F_a = \sum Q\sin\beta, \qquad F_r = \sum Q\cos\beta\cos\psi
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing.
+    Fr : float or array_like
+        Radial load along +y [N].
+    Fa : float or array_like
+        Thrust load [N].
+    azimuth_offset : float, optional
+        Azimuth of ball 1 from the load line [rad].
+    **kwargs
+        ``rtol``, ``max_iter``, ``clearance`` as in :func:`solve`.
+
+    References
+    ----------
+    Hamrock & Dowson (1981) eqs. (3.61)–(3.74); Jones (1946).
+
+    Examples
+    --------
+    >>> import ballrace
+    >>> brg = ballrace.BallBearing(22.225e-3, 16, 125.26e-3, 0.5232, 0.5232,
+    ...                            free_contact_angle=np.radians(40))
+    >>> r = combined(brg, 8900.0, 17800.0)
+    >>> round(float(r.max_ball_load)), round(float(np.degrees(r.loaded_zone)), 2)
+    (3275, 180.0)
+    """
+    d = np.array([np.nan, np.nan, np.nan, 0.0, 0.0])
+    return solve(bearing, Fa=Fa, Fy=Fr, displacements=d, azimuth_offset=azimuth_offset, **kwargs)
+
+
+def thrust(bearing: BallBearing, Fa, *, rtol: float = 1e-13, max_iter: int = 100) -> LoadDistribution:
+    r"""Pure thrust load: contact angle by Newton–Raphson, axial deflection.
+
+    .. math::
+        \frac{F_a}{Z} = K_n(\beta)\,A^{3/2} \sin\beta
+        \left(\frac{\cos\beta_f}{\cos\beta} - 1\right)^{3/2}, \qquad
+        \delta_t = \frac{A\sin(\beta - \beta_f)}{\cos\beta}
+
+    solved for beta by safeguarded Newton–Raphson with K_n evaluated (exact Hertz) at
+    beta (Hamrock & Dowson 1981 eqs. 3.50–3.56, 3.60).  Each ball carries
+    Q = F_a / (Z sin beta).  If shoulder heights are given, ``result.truncated(race)``
+    reports whether the contact ellipse runs over the shoulder (H&D eqs. 3.57–3.58).
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing.
+    Fa : float or array_like
+        Thrust load [N], >= 0.
+    rtol : float, optional
+        Tolerance on beta [rad] and on the relative thrust residual.
+    max_iter : int, optional
+        Iteration limit.
+
+    Returns
+    -------
+    LoadDistribution
+        ``displacements[..., 0]`` is delta_t.
+
+    References
+    ----------
+    Hamrock & Dowson (1981) eqs. (3.50)–(3.60); Harris (2001) §7.2.
+
+    Examples
+    --------
+    Ricci's 218 bearing under 17,800 N (Harris's chart: beta = 41.6 deg):
+
+    >>> import ballrace
+    >>> brg = ballrace.BallBearing(22.225e-3, 16, 125.26e-3, 0.5232, 0.5232,
+    ...                            free_contact_angle=np.radians(40))
+    >>> r = thrust(brg, 17800.0)
+    >>> round(float(np.degrees(r.contact_angles[0])), 3), round(float(r.axial_deflection) * 1e6, 2)
+    (41.53, 36.79)
+    """
+    if not isinstance(bearing, BallBearing):
+        raise TypeError(f"bearing must be a ballrace.BallBearing; got {type(bearing).__name__}")
+    model = _Model.of(bearing)
+    Fa_ = check_nonnegative(Fa, "Fa", "N")
+    shape = Fa_.shape
+    Fv = Fa_.ravel()
+    bf, A, Z = model.beta_f, model.A, model.Z
+    beta = _thrust_angle(model, Fv, rtol, max_iter)
+    dt = A * np.sin(beta - bf) / np.cos(beta)                         # H&D eq. 3.60
+    u = np.zeros((Fv.size, 5))
+    u[:, 0] = dt
+    Pd, x0, z0 = _reference(model, None, False)
+    psi = bearing.azimuths(0.0)
+    L = np.zeros_like(u)
+    L[:, 0] = Fv
+    imposed = np.zeros(u.shape, dtype=bool)
+    return _result(bearing, model, psi, x0, z0, Pd, u, L, imposed, "groove",
+                   np.zeros(Fv.size, int), shape, "exact")
+
+
+def _thrust_angle(model, Fa, rtol, max_iter):
+    """beta solving H&D (1981) eq. 3.55 (vector), bracketed Newton–Raphson (eq. 3.56)."""
+    bf, A, Z = model.beta_f, model.A, model.Z
+    cf = np.cos(bf)
+    c = Z * A**1.5
+
+    def h(beta):
+        Kn, dl = _kn(model, beta)
+        cb, sb = np.cos(beta), np.sin(beta)
+        g = np.maximum(cf / cb - 1.0, 0.0)
+        dg = cf * sb / cb**2
+        val = c * Kn * sb * g**1.5
+        der = c * Kn * (dl * sb * g**1.5 + cb * g**1.5 + 1.5 * sb * np.sqrt(g) * dg)
+        return val, der
+
+    Kf, _ = _kn(model, np.array([bf]))
+    t = Fa / (c * Kf[0])
+    # small-deflection starts: beta_f > 0: sin(bf)(tan(bf) db)^1.5 = t; beta_f = 0: b^4/2^1.5 = t
+    d1 = (t / np.sin(bf)) ** (2 / 3) / np.tan(bf) if bf > 1e-6 else np.inf
+    d2 = (2**1.5 * t) ** 0.25
+    beta = np.minimum(bf + np.minimum(d1, d2), 0.5 * (bf + 0.5 * np.pi))
+    lo = np.full(Fa.shape, bf)
+    hi = np.full(Fa.shape, 0.5 * np.pi)
+    done = Fa == 0
+    beta = np.where(done, bf, beta)
+    for it in range(max_iter):
+        if np.all(done):
+            break
+        val, der = h(beta)
+        r = val - Fa
+        lo = np.where(r < 0, beta, lo)
+        hi = np.where(r > 0, beta, hi)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            nb = beta - r / der
+        out = ~((nb >= lo) & (nb <= hi)) | ~np.isfinite(nb)
+        nb = np.where(out, 0.5 * (lo + hi), nb)
+        small = np.abs(r) <= rtol * Fa                      # converged: keep this beta
+        nb = np.where(small, beta, nb)
+        conv = small | (np.abs(nb - beta) <= rtol)
+        beta = np.where(done, beta, nb)
+        done |= conv
+    else:
+        i = int(np.argmax(~done))
+        raise ConvergenceError(f"thrust contact angle did not converge after {max_iter} "
+                               f"iterations for Fa={Fa[i]!r} N")
+    return beta
+
+
+def eccentric_thrust(bearing: BallBearing, Fa, e, *, rtol: float = 1e-12,
+                     max_iter: int = 100) -> LoadDistribution:
+    r"""Eccentric thrust load: Ricci's Z + 2 equations, solved exactly as written.
+
+    Unknowns delta_a, theta and beta_j (j = 1..Z); psi_j = 2 pi (j - 1)/Z with ball 1 on
+    the side of the load (the thrust acts at y = e, so Mz = -e Fa):
+
+    .. math::
+        \delta_a + R_i\theta\cos\psi_j - A\frac{\sin(\beta_j - \beta_f)}{\cos\beta_j} = 0
+        \quad (26)
+
+        F_a - A^{3/2}\sum_j K_{nj}\sin\beta_j
+              \left(\frac{\cos\beta_f}{\cos\beta_j} - 1\right)^{3/2} = 0 \quad (30)
+
+        e F_a - \frac{A^{3/2}}{2}\sum_j K_{nj}\, d_{cj}\cos\psi_j\sin\beta_j
+              \left(\frac{\cos\beta_f}{\cos\beta_j} - 1\right)^{3/2} = 0 \quad (31)
+
+    with d_cj = d_e - D cos beta_j and K_nj the exact-Hertz ball stiffness at beta_j
+    (unloaded balls, beta_j < beta_f, contribute nothing).  The radial displacement is
+    zero (radial reaction in ``result.loads``), and the moment arm is the inner contact
+    radius d_c/2, so this equals ``solve(..., Mz=-e*Fa, moment_arm="contact",
+    displacements=[None, 0, 0, 0, None])``.  Solved by damped Newton–Raphson with the
+    analytic Jacobian of the Z + 2 equations.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing.
+    Fa : float or array_like
+        Thrust load [N], >= 0.
+    e : float or array_like
+        Eccentricity of the thrust from the bearing axis [m], >= 0.
+    rtol : float, optional
+        Tolerance on the scaled residuals [-].
+    max_iter : int, optional
+        Iteration limit.
+
+    Returns
+    -------
+    LoadDistribution
+        ``displacements = (delta_a, 0, 0, 0, -theta)``; ``loaded_zone`` is Ricci's
+        psi_l = arccos(-delta_a / (R_i theta)) (eq. 21).
+
+    References
+    ----------
+    Ricci, M.C. (2009) "Ball bearings subjected to a variable eccentric thrust load",
+    DINCON'09, eqs. (17)–(31).
+
+    Examples
+    --------
+    Ricci's 218 bearing, F_a = 17,800 N at e = 50.8 mm (published: Q_max = 9,445 N,
+    beta from 44.317 to 16.169 deg, psi_l = 53.66 deg):
+
+    >>> import ballrace
+    >>> brg = ballrace.BallBearing(22.225e-3, 16, 125.26e-3, 0.5232, 0.5232,
+    ...                            free_contact_angle=np.radians(40))
+    >>> r = eccentric_thrust(brg, 17800.0, 50.8e-3)
+    >>> round(float(r.max_ball_load)), np.round(np.degrees(r.contact_angles[[0, 8]]), 3)
+    (9398, array([44.47 , 15.898]))
+    """
+    if not isinstance(bearing, BallBearing):
+        raise TypeError(f"bearing must be a ballrace.BallBearing; got {type(bearing).__name__}")
+    model = _Model.of(bearing)
+    Fa_, e_ = np.broadcast_arrays(check_nonnegative(Fa, "Fa", "N"), check_nonnegative(e, "e", "m"))
+    shape = Fa_.shape
+    F, ecc = Fa_.ravel().astype(float), e_.ravel().astype(float)
+    N, Z = F.size, model.Z
+    A, bf, Ri, D, dm = model.A, model.beta_f, model.Ri, model.D, model.dm
+    cf = np.cos(bf)
+    psi = bearing.azimuths(0.0)
+    cp = np.cos(psi)
+    A15 = A**1.5
+    Fs = np.where(F > 0, F, 1.0)
+
+    def system(v, jac=True):
+        da, th, b = v[:, 0:1] * A, v[:, 1:2] * A / Ri, v[:, 2:]
+        cb, sb = np.cos(b), np.sin(b)
+        Kn, dl = _kn(model, b)
+        g = np.maximum(cf / cb - 1.0, 0.0)
+        g15 = g * np.sqrt(g)
+        dc = dm - D * cb
+        r = np.empty(v.shape)
+        r[:, 2:] = (da + Ri * th * cp - A * np.sin(b - bf) / cb) / A               # eq. 26
+        r[:, 0] = (F - A15 * (Kn * sb * g15).sum(1)) / Fs                          # eq. 30
+        r[:, 1] = (ecc * F - 0.5 * A15 * (Kn * dc * cp * sb * g15).sum(1)) / (Fs * Ri)  # eq. 31
+        if not jac:
+            return r, None
+        Jm = np.zeros((v.shape[0], Z + 2, Z + 2))
+        jj = np.arange(Z) + 2
+        Jm[:, 2:, 0] = 1.0                                   # d(26)/d(da/A)
+        Jm[:, 2:, 1] = cp                                    # d(26)/d(theta Ri/A)
+        Jm[:, jj, jj] = -cf / cb**2                          # d(26)/d beta_j
+        dg = cf * sb / cb**2
+        sg = np.sqrt(g)
+        term = Kn * (dl * sb * g15 + cb * g15 + 1.5 * sb * sg * dg)          # d(K sin g^1.5)
+        Jm[:, 0, 2:] = -A15 * term / Fs[:, None]
+        dterm = term * dc + Kn * sb * g15 * D * sb                           # d(K dc sin g^1.5)
+        Jm[:, 1, 2:] = -0.5 * A15 * cp * dterm / (Fs[:, None] * Ri)
+        return r, Jm
+
+    # start: the pure-thrust solution (all balls at one angle, no tilt)
+    bt = _thrust_angle(model, F, 1e-14, 100)
+    v = np.zeros((N, Z + 2))
+    v[:, 0] = np.sin(bt - bf) / np.cos(bt)
+    v[:, 2:] = bt[:, None]
+    r, Jm = system(v)
+    err = np.abs(r).max(1)
+    active = np.flatnonzero(err > rtol)
+    it = 0
+    while active.size:
+        if it >= max_iter:
+            i = active[np.argmax(err[active])]
+            raise ConvergenceError(
+                f"eccentric thrust (Ricci 2009) did not converge after {it} iterations: "
+                f"scaled residual {err[i]:.3e} (> rtol={rtol:g}) for Fa={F[i]!r} N, e={ecc[i]!r} m")
+        it += 1
+        a = active
+        dv = -np.linalg.solve(Jm[a], r[a][..., None])[..., 0]
+        dv[:, 2:] = np.clip(dv[:, 2:], -0.2, 0.2)            # at most ~11 deg per step
+        m0 = (r[a] ** 2).sum(1)
+        t = np.ones(a.size)
+        vn = v[a] + dv
+        rn, Jn = system(vn)
+        for _ in range(40):
+            worse = (rn**2).sum(1) > (1 - 1e-4 * t) * m0
+            if not np.any(worse):
+                break
+            w = np.flatnonzero(worse)
+            t[w] *= 0.5
+            vn[w] = v[a][w] + t[w, None] * dv[w]
+            rn[w], Jn[w] = system(vn[w])
+        v[a], r[a], Jm[a] = vn, rn, Jn
+        err[a] = np.abs(rn).max(1)
+        active = a[err[a] > rtol]
+    log.debug("eccentric thrust: converged in %d Newton iterations", it)
+    u = np.zeros((N, 5))
+    u[:, 0] = v[:, 0] * A
+    u[:, 4] = -v[:, 1] * A / Ri
+    Pd, x0, z0 = _reference(model, None, False)
+    L = np.zeros((N, 5))
+    L[:, 0], L[:, 4] = F, -ecc * F
+    imposed = np.zeros((N, 5), dtype=bool)
+    imposed[:, 1:4] = True
+    res = _result(bearing, model, psi, x0, z0, Pd, u, L, imposed, "contact",
+                  np.full(N, it), shape, "exact")
+    beta_ricci = v[:, 2:].reshape(shape + (Z,))
+    if not np.allclose(res.contact_angles, beta_ricci, rtol=0, atol=1e-9):   # pragma: no cover
+        log.warning("eccentric thrust: contact angles from eq. 26 and from the ring "
+                    "displacements differ by %.3g rad",
+                    float(np.max(np.abs(res.contact_angles - beta_ricci))))
+    return res
+
+
+# =========================================================================== approximations
+def jones_radial_factor(clearance_ratio):
+    r"""Jones's load-distribution factor Z_w for radial load with clearance.
+
+    .. math:: Z_w = \frac{\pi (1 - c)^{3/2}}
+              {2.491\left\{\left[1 + \left(\frac{1 - c}{1.23}\right)^2\right]^{1/2} - 1\right\}},
+              \qquad c = \frac{P_d}{2\delta_r}
+
+    so that Q_max = Z_w F_r / Z; it fits the exact integral to about 2 % and tends to
+    Stribeck's 4.37 at zero clearance.
+
+    Parameters
+    ----------
+    clearance_ratio : float or array_like
+        c = P_d / (2 delta_r) [-], < 1 (negative for interference).
+
+    References
+    ----------
+    Hamrock & Dowson (1981) eqs. (3.45)–(3.48); Jones (1946).
+
+    Examples
+    --------
+    >>> round(float(jones_radial_factor(0.0)), 4)
+    4.3671
+    """
+    c = check_range(clearance_ratio, "clearance_ratio", None, 1.0, unit="-")
+    q = 1.0 - c
+    return hertz._scalar(np.pi * q**1.5 / (2.491 * (np.sqrt(1.0 + (q / 1.23) ** 2) - 1.0)))
+
+
+def stribeck_max_ball_load(Fr, n_balls, factor: float = 5.0):
+    r"""Stribeck's maximum ball load Q_max = factor F_r / Z (factor 5 in practice).
+
+    .. math:: Q_{max} = \frac{5 F_r}{Z}
+
+    Stribeck's theoretical factor for zero clearance and many balls is
+    :data:`STRIBECK_LIMIT` = 4.37; 5 allows for clearance.
+
+    Parameters
+    ----------
+    Fr : float or array_like
+        Radial load [N], >= 0.
+    n_balls : int
+        Number of balls Z [-], >= 1.
+    factor : float, optional
+        Stribeck factor [-], > 0.
+
+    References
+    ----------
+    Stribeck (1907) Trans. ASME 29 420–463; Hamrock & Dowson (1981) eq. (3.49).
+
+    Examples
+    --------
+    >>> float(stribeck_max_ball_load(1000.0, 10))
+    500.0
+    """
+    Fr = check_nonnegative(Fr, "Fr", "N")
+    Z = float(check_range(n_balls, "n_balls", 1.0, None, low_inclusive=True, unit="-"))
+    f = float(check_range(factor, "factor", 0.0, None, unit="-"))
+    return hertz._scalar(f * Fr / Z)
+
+
+def jones_max_ball_load(Fr, n_balls, Kn, clearance=0.0):
+    r"""Maximum ball load under radial load by Jones's closed-form approximation.
+
+    Solves K_n (delta_r - P_d/2)^{3/2} = Z_w(P_d / 2 delta_r) F_r / Z for delta_r
+    (Hamrock & Dowson 1981 eqs. 3.46–3.48), with a constant ball stiffness K_n.
+
+    Parameters
+    ----------
+    Fr : float or array_like
+        Radial load [N], > 0.
+    n_balls : int
+        Number of balls Z [-].
+    Kn : float
+        Ball stiffness K_n [N/m^1.5], > 0 (e.g. ``bearing.contact_stiffness(0)[2]``).
+    clearance : float, optional
+        Diametral clearance P_d [m] (negative for interference).
+
+    Returns
+    -------
+    Q_max : float or ndarray
+        [N].
+    delta_r : float or ndarray
+        Radial ring displacement [m].
+
+    References
+    ----------
+    Hamrock & Dowson (1981) eqs. (3.42)–(3.48).
+
+    Examples
+    --------
+    >>> Q, dr = jones_max_ball_load(1000.0, 10, 1e10)
+    >>> round(float(Q / 100.0), 4)   # = Z_w(0) F_r / Z
+    4.3671
+    """
+    Fr = check_positive(Fr, "Fr", "N")
+    Z = float(check_range(n_balls, "n_balls", 1.0, None, low_inclusive=True, unit="-"))
+    Kn = float(check_positive(Kn, "Kn", "N/m^1.5"))
+    Pd = float(as_array(clearance, "clearance"))
+    half = 0.5 * Pd
+    # bisection on ln t, t = delta_r - P_d/2 > 0 (LHS - RHS increases with t)
+    lo = np.full(Fr.shape, -60.0)
+    hi = np.full(Fr.shape, 5.0)
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        t = np.exp(mid)
+        dr = t + half
+        c = np.where(dr > 0, half / np.where(dr > 0, dr, 1.0), -np.inf)
+        q = 1.0 - c
+        zw = np.pi * q**1.5 / (2.491 * (np.sqrt(1.0 + (q / 1.23) ** 2) - 1.0))
+        pos = Kn * t**1.5 - zw * Fr / Z > 0
+        hi = np.where(pos, mid, hi)
+        lo = np.where(pos, lo, mid)
+    t = np.exp(0.5 * (lo + hi))
+    return hertz._scalar(Kn * t**1.5), hertz._scalar(t + half)
