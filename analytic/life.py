@@ -821,7 +821,7 @@ def lubrication_factor(film_parameter):
     """
     lam = check_positive(film_parameter, "film_parameter", "-")
     log.warning("lubrication_factor: Hamrock & Dowson fig. 3.16 was lost in the scan; this "
-                "curve is a reconstruction (about +/-30 %% between Lambda = 1.2 and 3). "
+                "curve is a reconstruction (about +/-30 % between Lambda = 1.2 and 3). "
                 "Pass an explicit factor to adjusted_life where the answer matters.")
     x = np.log([n[0] for n in LUBRICATION_FACTOR_NODES])
     y = np.log([n[1] for n in LUBRICATION_FACTOR_NODES])
