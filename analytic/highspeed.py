@@ -1,0 +1,924 @@
+r"""High-speed ball-bearing equilibrium with ball centrifugal force and gyroscopic moment.
+
+Quasi-static model of Jones (1960), as given by Hamrock & Dowson (1981) §3.4,
+eqs. (3.93)–(3.112), and Harris (2001) ch. 25 (high-speed operation).  The outer ring
+is fixed in space, the inner ring moves by u = (dx, dy, dz, theta_y, theta_z) exactly as
+in :mod:`ballrace.analytic.loaddist` (same axes, same reference configuration: balls
+just touching at the free contact angle, groove-centre separation
+``(A sin beta_f, A cos beta_f)``, A = (f_i + f_o - 1) D).
+
+Per ball j (azimuth psi_j) the unknowns are the axial and radial position
+(X1, X2) of the ball centre relative to the outer-groove curvature centre (Harris's
+V_1, V_2 form of H&D's L3, L4).  The inner-groove centre sits at
+
+.. math::
+    A_{1j} = A\sin\beta_f + d_x + \mathcal{R}_i(\theta_y\sin\psi_j - \theta_z\cos\psi_j),
+    \qquad A_{2j} = A\cos\beta_f + d_y\cos\psi_j + d_z\sin\psi_j
+
+(H&D eqs. 3.93–3.95), and the contact geometry follows (H&D eqs. 3.96–3.101):
+
+.. math::
+    l_o = \sqrt{X_1^2 + X_2^2}, \quad \delta_o = l_o - (f_o - \tfrac12)D, \quad
+    \tan\alpha_o = X_1 / X_2,
+
+    l_i = \sqrt{(A_1 - X_1)^2 + (A_2 - X_2)^2}, \quad \delta_i = l_i - (f_i - \tfrac12)D,
+    \quad \tan\alpha_i = (A_1 - X_1)/(A_2 - X_2),
+
+    Q_i = K_i(\alpha_i)\langle\delta_i\rangle^{3/2}, \qquad
+    Q_o = K_o(\alpha_o)\langle\delta_o\rangle^{3/2}
+
+with exact-Hertz K at each contact's own angle (H&D eq. 3.33; at zero speed this is the
+``K_n(beta)`` model of :mod:`~ballrace.analytic.loaddist`).  Ball equilibrium (H&D eqs.
+3.104–3.105; Harris 2001 ch. 25):
+
+.. math::
+    Q_i\sin\alpha_i - Q_o\sin\alpha_o
+        - \frac{\lambda_i M_g}{D}\cos\alpha_i + \frac{\lambda_o M_g}{D}\cos\alpha_o = 0,
+
+    Q_i\cos\alpha_i - Q_o\cos\alpha_o
+        + \frac{\lambda_i M_g}{D}\sin\alpha_i - \frac{\lambda_o M_g}{D}\sin\alpha_o
+        + F_c = 0,
+
+with the centrifugal force and gyroscopic moment (H&D eqs. 3.106–3.108)
+
+.. math::
+    F_c = \tfrac12 m\, d_{orbit}\, \omega_c^2, \qquad
+    M_g = J\,\omega_R\,\omega_c \sin\beta, \qquad m = \rho\pi D^3/6, \quad J = m D^2/10,
+
+where omega_c, omega_R and the pitch angle beta come from the race-control kinematics of
+:mod:`ballrace.analytic.kinematics` at the current contact angles, and d_orbit is the
+actual orbit diameter of the ball centre (H&D eq. 3.107).  omega_R is signed as in
+Harris (negative for inner-ring rotation), so M_g is negative then; the friction forces
+lambda M_g / D that resist it are derived here from the ball's angular-momentum balance
+and agree in sign with Harris's equations.  lambda_o = 2, lambda_i = 0 for outer-race
+control; lambda_i = lambda_o = 1 otherwise (Harris 2001), or all of it at the
+controlling race (``gyroscopic="controlling-race"``, H&D eq. 3.104 with lambda = 0, 1).
+
+Inner-ring equilibrium (H&D eqs. 3.111–3.112 extended to five DOFs as in
+:mod:`~ballrace.analytic.loaddist`, moment arm R_i of the groove centres, plus the
+moment f_i lambda_i M_g of the inner friction force about the groove centre):
+
+.. math::
+    F_a = \sum_j T_j,\quad T_j = Q_{ij}\sin\alpha_{ij} - \frac{\lambda_i M_{gj}}{D}\cos\alpha_{ij},
+    \qquad F_y = \sum_j P_j\cos\psi_j,\quad F_z = \sum_j P_j\sin\psi_j,\quad
+    P_j = Q_{ij}\cos\alpha_{ij} + \frac{\lambda_i M_{gj}}{D}\sin\alpha_{ij},
+
+    M_y = \sum_j (\mathcal{R}_i T_j + f_i\lambda_i M_{gj})\sin\psi_j, \qquad
+    M_z = -\sum_j (\mathcal{R}_i T_j + f_i\lambda_i M_{gj})\cos\psi_j .
+
+Solution: Newton on all 2Z + (free ring DOFs) unknowns at once, the Jacobian by central
+differences exploiting the block structure (ball residuals depend only on their own
+ball and the ring; ring residuals are sums over balls), a backtracking line search on
+the scaled residual and, if the direct solve fails, continuation in speed.  Starting
+values come from the static solution (:func:`ballrace.analytic.loaddist.solve`): loaded
+balls on their static line of centres, unloaded balls pressed on the outer race by the
+centrifugal force.  At zero speed every ball lies on the line of centres with the
+deflection shared in the ratio of the contact stiffnesses, which is exactly the static
+model; this is used when both ring speeds are zero.
+"""
+from __future__ import annotations
+
+import functools
+import logging
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import hertz
+from ._checks import as_array, check_choice, check_positive, check_range
+from .bearing import BallBearing
+from .kinematics import _kinematics_beta
+from .loaddist import ConvergenceError
+
+__all__ = [
+    "CONTROLS",
+    "GYROSCOPIC",
+    "ORBITALS",
+    "HighSpeedResult",
+    "ConvergenceError",
+    "ball_mass",
+    "ball_inertia",
+    "centrifugal_force",
+    "gyroscopic_moment",
+    "solve",
+]
+
+log = logging.getLogger(__name__)
+
+#: Race-control hypotheses accepted by :func:`solve`.
+CONTROLS = ("outer", "inner", "jones")
+#: Orbital-speed models accepted by :func:`solve`: one cage speed for all balls, or
+#: Jones's independent kinematics of every ball.
+ORBITALS = ("cage", "ball")
+#: Treatments of the gyroscopic moment accepted by :func:`solve`.
+GYROSCOPIC = ("harris", "controlling-race", "none")
+
+
+# =========================================================================== formulas
+def ball_mass(D, density):
+    r"""Mass of a solid ball m = rho pi D^3 / 6 [kg].
+
+    .. math:: m = \frac{\rho\pi D^3}{6}
+
+    Parameters
+    ----------
+    D : float or array_like
+        Ball diameter [m].
+    density : float or array_like
+        Ball material density [kg/m^3].
+
+    References
+    ----------
+    Hamrock & Dowson (1981) eq. (3.106) (m); Harris (2001) ch. 25.
+
+    Examples
+    --------
+    >>> round(float(ball_mass(22.225e-3, 7850.0)) * 1e3, 3)   # 7/8 in steel ball [g]
+    45.123
+    """
+    D = check_positive(D, "D", "m")
+    rho = check_positive(density, "density", "kg/m^3")
+    return hertz._scalar(rho * np.pi * D**3 / 6.0)
+
+
+def ball_inertia(D, density):
+    r"""Polar mass moment of inertia of a solid ball J = m D^2 / 10 [kg m^2].
+
+    .. math:: J = \frac{m D^2}{10} = \frac{\rho\pi D^5}{60}
+
+    Parameters
+    ----------
+    D : float or array_like
+        Ball diameter [m].
+    density : float or array_like
+        Ball material density [kg/m^3].
+
+    References
+    ----------
+    Hamrock & Dowson (1981) eq. (3.108) (I_p); Harris (2001) ch. 25.
+
+    Examples
+    --------
+    >>> round(float(ball_inertia(22.225e-3, 7850.0)) * 1e6, 4)   # [kg mm^2]
+    2.2288
+    """
+    return hertz._scalar(np.asarray(ball_mass(D, density)) * np.asarray(D, float) ** 2 / 10.0)
+
+
+def centrifugal_force(D, density, d_m, orbital_speed):
+    r"""Ball centrifugal force F_c = (1/2) m d_m omega_c^2 [N].
+
+    .. math:: F_c = \tfrac12\, m\, d_m\, \omega_c^2
+
+    Parameters
+    ----------
+    D : float or array_like
+        Ball diameter [m].
+    density : float or array_like
+        Ball density [kg/m^3].
+    d_m : float or array_like
+        Diameter of the ball-centre orbit (pitch diameter) [m].
+    orbital_speed : float or array_like
+        Orbital (cage) angular speed omega_c [rad/s].
+
+    References
+    ----------
+    Hamrock & Dowson (1981) eq. (3.106); Jones (1960); Harris (2001) ch. 25.
+
+    Examples
+    --------
+    218 bearing ball (D = 22.225 mm, d_m = 125.26 mm), cage at 0.415 x 10,000 rpm:
+
+    >>> wc = 0.415 * 10000 * 2 * np.pi / 60
+    >>> round(float(centrifugal_force(22.225e-3, 7850.0, 125.26e-3, wc)), 1)
+    533.7
+    """
+    m = np.asarray(ball_mass(D, density))
+    d_m = check_positive(d_m, "d_m", "m")
+    w = as_array(orbital_speed, "orbital_speed")
+    return hertz._scalar(0.5 * m * d_m * w * w)
+
+
+def gyroscopic_moment(D, density, ball_speed, orbital_speed, pitch_angle):
+    r"""Gyroscopic moment on a ball M_g = J omega_R omega_c sin(beta) [N m].
+
+    .. math:: M_g = J\,\omega_R\,\omega_c\,\sin\beta, \qquad J = \frac{m D^2}{10}
+
+    Signed with omega_R as in :mod:`ballrace.analytic.kinematics` (negative for a
+    positive inner-ring speed).
+
+    Parameters
+    ----------
+    D : float or array_like
+        Ball diameter [m].
+    density : float or array_like
+        Ball density [kg/m^3].
+    ball_speed : float or array_like
+        Ball angular speed about its own axis relative to the cage omega_R [rad/s].
+    orbital_speed : float or array_like
+        Orbital (cage) speed omega_c [rad/s].
+    pitch_angle : float or array_like
+        Angle beta of the ball axis to the bearing axis [rad].
+
+    References
+    ----------
+    Hamrock & Dowson (1981) eq. (3.108); Jones (1960); Harris (2001) ch. 25.
+
+    Examples
+    --------
+    >>> round(float(gyroscopic_moment(22.225e-3, 7850.0, -2600.0, 435.0, np.radians(35))), 4)
+    -1.4459
+    """
+    J = np.asarray(ball_inertia(D, density))
+    wR = as_array(ball_speed, "ball_speed")
+    wc = as_array(orbital_speed, "orbital_speed")
+    b = as_array(pitch_angle, "pitch_angle")
+    return hertz._scalar(J * wR * wc * np.sin(b))
+
+
+# =========================================================================== model
+@dataclass(frozen=True)
+class _Model:
+    """Plain numbers of a bearing for the kernels."""
+
+    D: float
+    dm: float
+    Z: int
+    A: float
+    sbf: float
+    cbf: float
+    Ri: float
+    Roc: float
+    ri: float
+    ro: float
+    f_i: float
+    Ep: float
+    Ry_i: float
+    Ry_o: float
+    mass: float
+    J: float
+
+    @staticmethod
+    @functools.lru_cache(maxsize=64)
+    def of(b: BallBearing) -> "_Model":
+        if b.n_rows != 1:
+            raise NotImplementedError("high-speed analysis is implemented for single-row "
+                                      f"bearings (n_rows=1); got n_rows={b.n_rows}")
+        D = b.ball_diameter
+        A = b.curvature_center_distance
+        m = float(np.pi * D**3 * b.ball_material.density / 6.0)
+        return _Model(D=D, dm=b.pitch_diameter, Z=b.n_balls, A=A,
+                      sbf=float(np.sin(b.free_contact_angle)),
+                      cbf=float(np.cos(b.free_contact_angle)),
+                      Ri=b.inner_groove_center_radius,
+                      Roc=0.5 * b.outer_race_diameter - b.f_outer * D,
+                      ri=(b.f_inner - 0.5) * D, ro=(b.f_outer - 0.5) * D, f_i=b.f_inner,
+                      Ep=b.E_prime, Ry_i=b.f_inner * D / (2 * b.f_inner - 1),
+                      Ry_o=b.f_outer * D / (2 * b.f_outer - 1), mass=m, J=m * D * D / 10.0)
+
+
+def _stiffness(model, ai, ao):
+    """Race contact stiffnesses K_i(alpha_i), K_o(alpha_o) [N/m^1.5] (H&D 1981 eq. 3.33)."""
+    rho = model.D / model.dm
+    gi = rho * np.cos(ai)
+    go = rho * np.cos(ao)
+    Rx = np.concatenate([0.5 * model.D * (1.0 - gi), 0.5 * model.D * (1.0 + go)])
+    Ry = np.concatenate([np.full(gi.shape, model.Ry_i), np.full(go.shape, model.Ry_o)])
+    K = hertz.contact_stiffness(Rx, Ry, model.Ep)
+    n = gi.size
+    return K[:n], K[n:]
+
+
+def _lambdas(outer, gyro):
+    """(lambda_i, lambda_o) per ball for the race control mask ``outer`` (Harris 2001)."""
+    if gyro == "harris":
+        li = np.where(outer, 0.0, 1.0)
+        lo = np.where(outer, 2.0, 1.0)
+    else:                                              # controlling race (H&D eq. 3.104)
+        li = np.where(outer, 0.0, 2.0)
+        lo = np.where(outer, 2.0, 0.0)
+    return li, lo
+
+
+class _Balls:
+    """Per-ball state: geometry, loads, kinematics, residuals and ring contributions."""
+
+    def __init__(self, model, psi, X1, X2, u, wi, wo, outer, gyro, static,
+                 orbital="ball", wc_fixed=None):
+        m = model
+        cp, sp = np.cos(psi), np.sin(psi)
+        self.A1 = m.A * m.sbf + u[0] + m.Ri * (u[3] * sp - u[4] * cp)
+        self.A2 = m.A * m.cbf + u[1] * cp + u[2] * sp
+        if static:
+            # zero speed: ball on the line of centres, deflection shared by stiffness
+            s = np.hypot(self.A1, self.A2)
+            a = np.arctan2(self.A1, self.A2)
+            Ki, Ko = _stiffness(m, a, a)
+            wo_ = Ko ** (-2.0 / 3.0) / (Ki ** (-2.0 / 3.0) + Ko ** (-2.0 / 3.0))
+            lo_ = m.ro + wo_ * (s - m.A)
+            self.X1s, self.X2s = lo_ * np.sin(a), lo_ * np.cos(a)
+        self.X1, self.X2 = X1, X2
+        lo = np.hypot(X1, X2)
+        e1, e2 = self.A1 - X1, self.A2 - X2
+        li = np.hypot(e1, e2)
+        self.do = lo - m.ro
+        self.di = li - m.ri
+        self.sao, self.cao = X1 / lo, X2 / lo
+        self.sai, self.cai = e1 / li, e2 / li
+        self.ao = np.arctan2(X1, X2)
+        self.ai = np.arctan2(e1, e2)
+        Ki, Ko = _stiffness(m, self.ai, self.ao)
+        self.Qi = Ki * np.maximum(self.di, 0.0) ** 1.5
+        self.Qo = Ko * np.maximum(self.do, 0.0) ** 1.5
+        # An open contact has no contact angle: for the kinematics it takes the angle of
+        # the line of groove centres, blended in over a deflection of 1e-5 D (loads there
+        # are ~1 N or less) so that the equations stay continuous.
+        base = np.arctan2(self.A1, self.A2)
+        d_ref = 1e-5 * m.D
+        self.wgt_i = np.clip(self.di / d_ref, 0.0, 1.0)
+        self.wgt_o = np.clip(self.do / d_ref, 0.0, 1.0)
+        self.ai_k = base + self.wgt_i * (self.ai - base)
+        self.ao_k = base + self.wgt_o * (self.ao - base)
+        # kinematics (race control) at the current angles
+        rho = m.D / m.dm
+        # a ball cannot be controlled by a race it does not touch: inner control fades
+        # into outer control as the inner contact opens (same blend)
+        b_o = np.arctan2(np.sin(self.ao_k), np.cos(self.ao_k) + rho)
+        b_i = np.arctan2(np.sin(self.ai_k), np.cos(self.ai_k) - rho)
+        beta = np.where(outer, b_o, b_o + self.wgt_i * (b_i - b_o))
+        (self.beta, self.wc, self.wR, self.s_i, self.s_o,
+         self.r_i, self.r_o) = _kinematics_beta(rho, self.ai_k, self.ao_k, wi, wo, beta)
+        if orbital == "cage":
+            # One cage: every ball orbits at the cage speed, the mean of the balls'
+            # kinematic orbital speeds weighted by Q_i Q_o / (Q_i + Q_o) (balls with an
+            # open contact do not drive the cage); each ball rolls without slip on its
+            # controlling race at that speed (H&D 1981 eqs. 3.76-3.77 with omega_c given).
+            q = np.where(self.Qi + self.Qo > 0,
+                         self.Qi * self.Qo / np.where(self.Qi + self.Qo > 0,
+                                                      self.Qi + self.Qo, 1.0), 0.0)
+            self.num, self.den = q * np.where(q > 0, self.wc, 0.0), q
+            if wc_fixed is not None:                    # (Jacobian: hold the cage speed)
+                wc = wc_fixed
+            elif np.sum(q) > 0:
+                wc = np.sum(self.num) / np.sum(q)
+            else:                                       # no ball drives: classical value
+                wc = 0.5 * (wi * (1 - rho * np.cos(base)) + wo * (1 + rho * np.cos(base)))
+            self.wc_cage = float(np.mean(wc))
+            self.wc = np.broadcast_to(wc, self.Qi.shape).astype(float)
+            wR_o = (wo - self.wc) * (1.0 + rho * np.cos(self.ao_k)) / (
+                rho * np.cos(self.ao_k - b_o))
+            wR_i = (self.wc - wi) * (1.0 - rho * np.cos(self.ai_k)) / (
+                rho * np.cos(self.ai_k - b_i))
+            self.wR = np.where(outer, wR_o, wR_o + self.wgt_i * (wR_i - wR_o))
+        self.Fc = m.mass * (m.Roc + X2) * self.wc**2              # (1/2) m d_orbit wc^2
+        if gyro == "none":
+            self.Mg = np.zeros_like(self.Fc)
+            li_, lo_ = np.zeros_like(self.Fc), np.zeros_like(self.Fc)
+        else:
+            self.Mg = m.J * self.wR * self.wc * np.sin(self.beta)  # H&D eq. 3.108
+            li_, lo_ = _lambdas(outer, gyro)
+            # no friction without a normal load: an open contact passes its share on
+            li_ = self.wgt_i * li_
+            lo_ = self.wgt_o * (2.0 - li_)
+        self.lam_i, self.lam_o = li_, lo_
+        gi, go = li_ * self.Mg / m.D, lo_ * self.Mg / m.D
+        # ball equilibrium (H&D eqs. 3.104-3.105; Harris 2001 ch. 25)
+        if static:
+            self.R = np.stack([X1 - self.X1s, X2 - self.X2s], axis=-1)
+        else:
+            R1 = self.Qi * self.sai - self.Qo * self.sao - gi * self.cai + go * self.cao
+            R2 = self.Qi * self.cai - self.Qo * self.cao + gi * self.sai - go * self.sao + self.Fc
+            self.R = np.stack([R1, R2], axis=-1)
+        # forces on the inner ring (H&D eqs. 3.111-3.112, five DOFs)
+        T = self.Qi * self.sai - gi * self.cai
+        P = self.Qi * self.cai + gi * self.sai
+        Mt = m.Ri * T + m.f_i * li_ * self.Mg
+        self.C = np.stack([T, P * cp, P * sp, Mt * sp, -Mt * cp], axis=-1)
+
+
+# =========================================================================== result
+@dataclass(frozen=True)
+class HighSpeedResult:
+    """High-speed equilibrium of a ball bearing (frozen).  Per-ball arrays have shape (Z,).
+
+    Attributes
+    ----------
+    bearing : BallBearing
+        The bearing.
+    azimuths : ndarray
+        Ball azimuths psi_j from +y towards +z [rad].
+    speed_inner, speed_outer : float
+        Ring angular speeds [rad/s].
+    inner_loads, outer_loads : ndarray
+        Ball–race normal loads Q_i, Q_o [N].
+    inner_contact_angles, outer_contact_angles : ndarray
+        Contact angles alpha_i, alpha_o [rad].
+    inner_deflections, outer_deflections : ndarray
+        Contact deflections delta_i, delta_o [m] (negative: contact open).
+    ball_positions : ndarray, shape (Z, 2)
+        Axial and radial position (X1, X2) of each ball centre relative to its
+        outer-groove curvature centre [m].
+    centrifugal_force : ndarray
+        Ball centrifugal force F_c [N].
+    gyroscopic_moment : ndarray
+        Gyroscopic moment M_g = J omega_R omega_c sin(beta) [N m] (signed; resisted by
+        friction whether or not it is counted in the equilibrium, see ``gyroscopic``).
+    orbital_speed : ndarray
+        Ball orbital (cage) angular speed omega_c [rad/s].
+    spin_speed : ndarray
+        Ball angular speed about its own axis relative to the cage omega_R [rad/s]
+        (Harris's sign: negative for inner-ring rotation).
+    pitch_angle : ndarray
+        Angle beta of the ball's rotation axis to the bearing axis [rad].
+    spin_to_roll_inner, spin_to_roll_outer : ndarray
+        Spin-to-roll ratios at the two contacts [-].
+    control : ndarray of str
+        Controlling race of each ball ("outer" or "inner").
+    displacements : ndarray, shape (5,)
+        Inner-ring displacement (dx, dy, dz [m], theta_y, theta_z [rad]) from the
+        reference configuration, as in :mod:`ballrace.analytic.loaddist`.
+    loads : ndarray, shape (5,)
+        Resultant of the ball forces on the inner ring (Fa, Fy, Fz [N], My, Mz [N m]):
+        the applied loads, or the reaction on a DOF held fixed (tilt when
+        ``tilt="fixed"``).
+    applied : ndarray, shape (5,)
+        Applied loads [N, N m].
+    residual : float
+        Largest equilibrium residual over all ball and ring equations [N] (moments
+        divided by R_i).
+    relative_residual : float
+        ``residual`` over the load scale (max applied load, Z F_c) [-].
+    iterations : int
+        Newton iterations in total.
+    gyroscopic : str
+        Treatment of the gyroscopic moment.
+    friction_coefficient : float or None
+        Friction coefficient used for ``gyroscopic_slip``.
+    gyroscopic_slip : ndarray of bool or None
+        Per ball, True where the friction needed to resist M_g exceeds mu Q at a
+        reacting contact (the ball would pivot; Harris 2001 ch. 25).
+    """
+
+    bearing: BallBearing
+    azimuths: np.ndarray
+    speed_inner: float
+    speed_outer: float
+    inner_loads: np.ndarray
+    outer_loads: np.ndarray
+    inner_contact_angles: np.ndarray
+    outer_contact_angles: np.ndarray
+    inner_deflections: np.ndarray
+    outer_deflections: np.ndarray
+    ball_positions: np.ndarray
+    centrifugal_force: np.ndarray
+    gyroscopic_moment: np.ndarray
+    orbital_speed: np.ndarray
+    spin_speed: np.ndarray
+    pitch_angle: np.ndarray
+    spin_to_roll_inner: np.ndarray
+    spin_to_roll_outer: np.ndarray
+    control: np.ndarray
+    displacements: np.ndarray
+    loads: np.ndarray
+    applied: np.ndarray
+    residual: float
+    relative_residual: float
+    iterations: int
+    gyroscopic: str
+    friction_coefficient: float | None = None
+    gyroscopic_slip: np.ndarray | None = None
+
+    @property
+    def axial_displacement(self) -> float:
+        """Axial inner-ring displacement dx [m]."""
+        return float(self.displacements[0])
+
+    @property
+    def radial_displacement(self) -> float:
+        """Radial inner-ring displacement sqrt(dy^2 + dz^2) [m]."""
+        return float(np.hypot(self.displacements[1], self.displacements[2]))
+
+    @property
+    def max_inner_load(self) -> float:
+        """Largest inner-race ball load [N]."""
+        return float(np.max(self.inner_loads))
+
+    @property
+    def max_outer_load(self) -> float:
+        """Largest outer-race ball load [N]."""
+        return float(np.max(self.outer_loads))
+
+    @functools.cached_property
+    def inner_contacts(self) -> hertz.HertzContact:
+        """Hertz contacts on the inner race (a, b, p_max, ...) per ball."""
+        return self.bearing.contacts(self.inner_loads, self.inner_contact_angles, "inner")
+
+    @functools.cached_property
+    def outer_contacts(self) -> hertz.HertzContact:
+        """Hertz contacts on the outer race per ball."""
+        return self.bearing.contacts(self.outer_loads, self.outer_contact_angles, "outer")
+
+
+# =========================================================================== solver
+def _free_dofs(L, tilt):
+    """Free ring DOFs; the others are zero by symmetry or held (tilt="fixed")."""
+    Fa, Fy, Fz, My, Mz = L
+    free = [0]
+    t = tilt == "free"
+    if Fy != 0 or (t and Mz != 0):
+        free.append(1)
+    if Fz != 0 or (t and My != 0):
+        free.append(2)
+    if t and (My != 0 or Fz != 0):
+        free.append(3)
+    if t and (Mz != 0 or Fy != 0):
+        free.append(4)
+    return np.array(free)
+
+
+class _System:
+    """Residual vector, scaling and block finite-difference Jacobian."""
+
+    def __init__(self, model, psi, L, free, wi, wo, gyro, static, F_ref, Q_ref,
+                 orbital="cage"):
+        self.m, self.psi, self.L, self.free = model, psi, L, free
+        self.orbital = orbital
+        self.wi, self.wo, self.gyro, self.static = wi, wo, gyro, static
+        self.Z = model.Z
+        sc = np.ones(5)
+        sc[3:] = 1.0 / model.Ri
+        self.load_sc = sc[free] / F_ref             # ring residual scale (moments / R_i)
+        self.ball_sc = 1.0 / Q_ref if not static else 1.0 / (1e-4 * model.D)
+        self.u_sc = np.where(free >= 3, model.Ri, 1.0)
+        self.outer = np.ones(model.Z, bool)
+
+    def unpack(self, x):
+        Z = self.Z
+        u = np.zeros(5)
+        u[self.free] = x[2 * Z:]
+        return x[:Z], x[Z:2 * Z], u
+
+    def balls(self, x, wc_fixed=None):
+        X1, X2, u = self.unpack(x)
+        return _Balls(self.m, self.psi, X1, X2, u, self.wi, self.wo, self.outer, self.gyro,
+                      self.static, self.orbital, wc_fixed)
+
+    def residual(self, b):
+        ring = self.L[self.free] - b.C.sum(axis=0)[self.free]
+        return np.concatenate([b.R[:, 0], b.R[:, 1], ring])
+
+    def scaled(self, r):
+        Z = self.Z
+        return np.concatenate([r[:2 * Z] * self.ball_sc, r[2 * Z:] * self.load_sc])
+
+    def jacobian(self, x):
+        """Central differences: all balls' X1 (then X2) at once, then each ring DOF."""
+        Z, nf = self.Z, self.free.size
+        n = 2 * Z + nf
+        J = np.zeros((n, n))
+        # steps: 1e-7 D, but below 1 % of each closed contact's deflection so that the
+        # difference never straddles the contact edge (delta^1.5 is not smooth at 0)
+        b0 = self.balls(x)
+        d = np.where(b0.di > 0, b0.di, np.inf)
+        d = np.minimum(d, np.where(b0.do > 0, b0.do, np.inf))
+        hmax, hmin = 1e-7 * self.m.D, 1e-11 * self.m.D
+        hb = np.clip(1e-2 * d, hmin, hmax)
+        h = float(np.clip(np.min(1e-2 * d), hmin, hmax))
+        idx = np.arange(Z)
+        # one cage speed couples all balls: hold it fixed for the per-ball blocks and add
+        # the rank-one coupling d(residual)/d(omega_c) x d(omega_c)/dX afterwards
+        cage = self.orbital == "cage" and not self.static
+        wc0 = b0.wc_cage if cage else None
+        if cage:
+            hw = 1e-7 * max(abs(wc0), abs(self.wi), abs(self.wo), 1e-300)
+            bp, bm = self.balls(x, wc0 + hw), self.balls(x, wc0 - hw)
+            rw = (bp.R - bm.R) / (2 * hw)                      # (Z, 2)
+            cw = (bp.C - bm.C)[:, self.free].sum(axis=0) / (2 * hw)   # (nf,)
+            den = np.sum(b0.den)
+        for k in (0, 1):
+            xp, xm = x.copy(), x.copy()
+            xp[k * Z:(k + 1) * Z] += hb
+            xm[k * Z:(k + 1) * Z] -= hb
+            bp, bm = self.balls(xp, wc0), self.balls(xm, wc0)
+            dR = (bp.R - bm.R) / (2 * hb[:, None])             # (Z, 2)
+            dC = (bp.C - bm.C)[:, self.free] / (2 * hb[:, None])   # (Z, nf)
+            J[idx, k * Z + idx] = dR[:, 0]
+            J[Z + idx, k * Z + idx] = dR[:, 1]
+            J[2 * Z:, k * Z:(k + 1) * Z] = -dC.T
+            if cage and den > 0:
+                g = ((bp.num - bm.num) - wc0 * (bp.den - bm.den)) / (2 * hb * den)
+                J[:Z, k * Z:(k + 1) * Z] += np.outer(rw[:, 0], g)
+                J[Z:2 * Z, k * Z:(k + 1) * Z] += np.outer(rw[:, 1], g)
+                J[2 * Z:, k * Z:(k + 1) * Z] -= np.outer(cw, g)
+        for j in range(nf):
+            hu = h / self.u_sc[j]
+            xp, xm = x.copy(), x.copy()
+            xp[2 * Z + j] += hu
+            xm[2 * Z + j] -= hu
+            rp = self.residual(self.balls(xp))
+            rm = self.residual(self.balls(xm))
+            J[:, 2 * Z + j] = (rp - rm) / (2 * hu)
+        return J
+
+
+def _newton(sysm, x, rtol, max_iter):
+    """Damped Newton; returns (x, balls, scaled max residual, iterations)."""
+    b = sysm.balls(x)
+    r = sysm.scaled(sysm.residual(b))
+    err = np.max(np.abs(r))
+    it = 0
+    step_cap = 0.05 * sysm.m.D
+    while err > rtol and it < max_iter:
+        it += 1
+        J = sysm.jacobian(x)
+        r_raw = sysm.residual(b)
+        try:
+            dx = np.linalg.solve(J, -r_raw)
+            if not np.all(np.isfinite(dx)):
+                raise np.linalg.LinAlgError
+        except np.linalg.LinAlgError:
+            dx = np.linalg.lstsq(J, -r_raw, rcond=1e-14)[0]
+        big = np.max(np.abs(dx[:2 * sysm.Z]), initial=0.0)
+        big = max(big, np.max(np.abs(dx[2 * sysm.Z:] * sysm.u_sc), initial=0.0))
+        if big > step_cap:
+            dx *= step_cap / big
+        f0 = 0.5 * float(r @ r)
+        t = 1.0
+        for _ in range(40):
+            xn = x + t * dx
+            bn = sysm.balls(xn)
+            rn = sysm.scaled(sysm.residual(bn))
+            if np.all(np.isfinite(rn)) and 0.5 * float(rn @ rn) <= (1.0 - 1e-4 * t) * f0:
+                break
+            t *= 0.5
+        else:
+            log.debug("highspeed: line search failed at iteration %d (residual %.3e)", it, err)
+            break
+        x, b, r = xn, bn, rn
+        err = float(np.max(np.abs(r)))
+        log.debug("highspeed: iteration %d, step %.3g, scaled residual %.3e", it, t, err)
+    return x, b, err, it
+
+
+def _start(model, psi, u, wi, wo, free, static):
+    """Starting ball positions from ring displacements u (static line of centres)."""
+    Z = model.Z
+    x = np.concatenate([np.zeros(2 * Z), u[free]])
+    b = _Balls(model, psi, np.zeros(Z), np.full(Z, model.ro), u, 0.0, 0.0, np.ones(Z, bool),
+               "none", True)
+    X1, X2 = b.X1s.copy(), b.X2s.copy()
+    if not static:
+        # unloaded (static) balls: on the outer race only, pressed by the centrifugal force
+        s = np.hypot(b.A1, b.A2)
+        unl = s <= model.A * (1.0 + 1e-9)
+        if np.any(unl):
+            wc = 0.5 * (wi * (1 - model.D / model.dm) + wo * (1 + model.D / model.dm))
+            Fc = model.mass * (model.Roc + model.ro) * wc**2
+            _, Ko = _stiffness(model, np.zeros(1), np.zeros(1))
+            X1 = np.where(unl, 0.0, X1)
+            X2 = np.where(unl, model.ro + (Fc / Ko[0]) ** (2.0 / 3.0), X2)
+    x[:Z], x[Z:2 * Z] = X1, X2
+    return x
+
+
+def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0, *,
+          Fz=0.0, My=0.0, Mz=0.0, control: str = "outer", gyroscopic: str = "harris",
+          tilt: str = "fixed", orbital: str = "cage", friction_coefficient=None,
+          rtol: float = 1e-10,
+          max_iter: int = 60, _start_from: str = "static") -> HighSpeedResult:
+    r"""High-speed equilibrium (Jones 1960) of a ball bearing under Fa, Fr at given speeds.
+
+    Solves the module equations (H&D 1981 eqs. 3.93–3.112; Harris 2001 ch. 25) for the
+    ball-centre positions and the inner-ring displacement; see the module docstring.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        Single-row bearing; ``ball_material.density`` gives the ball mass.
+    Fa : float
+        Axial (thrust) load on the inner ring [N]; positive loads the
+        free-contact-angle side.
+    Fr : float
+        Radial load on the inner ring along +y (towards ball 1) [N].
+    speed_inner, speed_outer : float
+        Absolute angular speeds of the inner and outer rings [rad/s].
+    Fz : float, optional
+        Radial load along +z [N].
+    My, Mz : float, optional
+        Tilting moments [N m] (right-handed, as in :func:`ballrace.analytic.loaddist.solve`);
+        need ``tilt="free"``.
+    control : {"outer", "inner", "jones"}
+        (With ``"inner"`` and light thrust at high speed the friction needed at the inner
+        contact to resist M_g can exceed its normal load many times; there is then no
+        equilibrium and :class:`ConvergenceError` is raised.)
+        Race control: outer or inner for all balls, or per ball by Jones's criterion
+        (outer control where Q_o a_o E(k_o) cos(alpha_i - alpha_o) > Q_i a_i E(k_i),
+        Harris 2001 ch. 8; H&D 1981 eq. 3.92 without the cosine), iterated to a
+        consistent choice.
+    gyroscopic : {"harris", "controlling-race", "none"}
+        How the gyroscopic moment enters the ball equilibrium: resisted by friction at
+        the outer race for outer control and shared equally otherwise (Harris 2001);
+        resisted at the controlling race only (H&D 1981 eq. 3.104); or ignored
+        (it is still reported).
+    tilt : {"fixed", "free"}
+        "fixed" (default): rings stay parallel, as assumed by Jones (1960) and H&D §3.4;
+        the reaction moment is in ``result.loads``.  "free": tilt is solved for with the
+        applied moments.
+    orbital : {"cage", "ball"}
+        "cage" (default): all balls orbit at one cage speed, the mean of the balls'
+        kinematic orbital speeds weighted by Q_i Q_o/(Q_i + Q_o), and each ball rolls
+        without slip on its controlling race at that speed (its omega_R, M_g follow).
+        "ball": Jones's (1960) model as printed, every ball with its own kinematic
+        orbital speed from its own contact angles.  The two agree when all balls are
+        loaded alike (pure thrust); under combined load at high speed "ball" gives the
+        lightly loaded balls, whose inner contact angle approaches 80 deg, orbital speeds
+        near 0.8 omega_i and can make the equilibrium ill-posed (in a random sweep up to
+        d_m N = 3e6 mm rpm, 5 of ~130 "ball" cases above 14,000 rpm on the 218 bearing did
+        not converge; "cage" converged in all 400).
+    friction_coefficient : float, optional
+        Coefficient of friction mu for the gyroscopic-slip check (``result.gyroscopic_slip``).
+    rtol : float, optional
+        Tolerance on the residuals relative to the load scale [-].
+    max_iter : int, optional
+        Newton iteration limit (per continuation step).
+
+    Returns
+    -------
+    HighSpeedResult
+
+    Raises
+    ------
+    ConvergenceError
+        If the equilibrium is not found (the message gives residual and iterations).
+    ValueError
+        For invalid arguments (named in the message).
+
+    References
+    ----------
+    Jones, A.B. (1960) "A general theory for elastically constrained ball and radial
+    roller bearings under arbitrary load and speed conditions", J. Basic Eng. 82,
+    309–320; Hamrock & Dowson (1981) eqs. (3.93)–(3.112); Harris, T.A. (2001) *Rolling
+    Bearing Analysis*, 4th ed., ch. 25.
+
+    Examples
+    --------
+    The 218 angular-contact bearing under 17.8 kN thrust at 10,000 rpm (inner ring):
+
+    >>> import ballrace
+    >>> brg = ballrace.BallBearing(22.225e-3, 16, 125.26e-3, 0.5232, 0.5232,
+    ...                            free_contact_angle=np.radians(40))
+    >>> r = solve(brg, Fa=17800.0, speed_inner=10000 * np.pi / 30)
+    >>> np.degrees([r.inner_contact_angles[0], r.outer_contact_angles[0]]).round(2)
+    array([50.04, 31.28])
+    >>> round(r.outer_loads[0] - r.inner_loads[0]), round(float(r.centrifugal_force[0]))
+    (472, 643)
+    """
+    if not isinstance(bearing, BallBearing):
+        raise TypeError(f"bearing must be a ballrace.BallBearing; got {type(bearing).__name__}")
+    check_choice(control, "control", CONTROLS)
+    check_choice(gyroscopic, "gyroscopic", GYROSCOPIC)
+    check_choice(tilt, "tilt", ("fixed", "free"))
+    check_choice(orbital, "orbital", ORBITALS)
+    check_choice(_start_from, "_start_from", ("static", "estimate"))
+    L = np.array([float(as_array(v, n)) if np.ndim(v) == 0 else np.nan
+                  for v, n in ((Fa, "Fa"), (Fr, "Fr"), (Fz, "Fz"), (My, "My"), (Mz, "Mz"))])
+    if np.any(np.isnan(L)):
+        raise TypeError("Fa, Fr, Fz, My and Mz must be scalars (one load case per call)")
+    wi = float(as_array(speed_inner, "speed_inner"))
+    wo = float(as_array(speed_outer, "speed_outer"))
+    if np.ndim(speed_inner) or np.ndim(speed_outer):
+        raise TypeError("speed_inner and speed_outer must be scalars [rad/s]")
+    if tilt == "fixed" and (L[3] != 0 or L[4] != 0):
+        raise ValueError("My and Mz must be 0 with tilt='fixed' (rings kept parallel); "
+                         "use tilt='free' to apply a moment")
+    if np.all(L == 0):
+        raise ValueError("apply a load (Fa, Fr, Fz, My or Mz non-zero): without one the "
+                         "inner ring is not located")
+    mu = None
+    if friction_coefficient is not None:
+        mu = float(check_positive(friction_coefficient, "friction_coefficient", "-"))
+    rtol = float(check_range(rtol, "rtol", 0.0, 1e-3, high_inclusive=True, unit="-"))
+    model = _Model.of(bearing)
+    psi = bearing.azimuths(0.0)
+    Z = model.Z
+    free = _free_dofs(L, tilt)
+    static = wi == 0.0 and wo == 0.0
+
+    # ---- static solution: starting values (Jones 1960 / H&D 3.61-3.74)
+    u0 = np.zeros(5)
+    if _start_from == "static":
+        from .loaddist import solve as static_solve
+        d = np.zeros(5)
+        d[free] = np.nan
+        try:
+            st = static_solve(bearing, Fa=L[0], Fy=L[1], Fz=L[2], My=L[3], Mz=L[4],
+                              displacements=d)
+            u0 = np.asarray(st.displacements, float).reshape(5)
+        except (ConvergenceError, ValueError) as exc:       # pragma: no cover - fallback
+            log.info("highspeed: static start failed (%s); starting from the free state", exc)
+    else:
+        if L[0] != 0:
+            u0[0] = np.sign(L[0]) * 1e-3 * model.D
+        if L[1] != 0:
+            u0[1] = np.sign(L[1]) * 1e-3 * model.D
+
+    # ---- scales
+    wc0 = abs(0.5 * (wi * (1 - model.D / model.dm) + wo * (1 + model.D / model.dm)))
+    Fc0 = model.mass * (model.Roc + model.ro) * wc0**2
+    Fmax = max(abs(L[0]), abs(L[1]), abs(L[2]), abs(L[3]) / model.Ri, abs(L[4]) / model.Ri)
+    F_ref = max(Fmax, Z * Fc0)
+    Q_ref = max(F_ref / Z, Fc0)
+
+    outer = np.full(Z, control != "inner")
+    total_it = 0
+    for _ in range(8 if control == "jones" else 1):
+        x = None
+        b = err = None
+        for fraction in ((1.0,) if static else (1.0, None)):
+            if fraction is None:
+                # continuation in speed (F_c grows as speed^2)
+                log.info("highspeed: direct Newton failed (residual %.3e); continuing in speed",
+                         err)
+                steps = (0.25, 0.5, 0.75, 1.0)
+            else:
+                steps = (fraction,)
+            xs = _start(model, psi, u0, wi * steps[0], wo * steps[0], free, static)
+            ok = True
+            for s in steps:
+                sysm = _System(model, psi, L, free, wi * s, wo * s, gyroscopic, static,
+                               F_ref, Q_ref, orbital)
+                sysm.outer = outer
+                xs, b, err, it = _newton(sysm, xs, rtol, max_iter)
+                total_it += it
+                if not err <= rtol:
+                    ok = False
+                    break
+            if ok:
+                x = xs
+                break
+        if x is None:
+            raise ConvergenceError(
+                f"high-speed equilibrium did not converge: scaled residual {err:.3e} "
+                f"(rtol {rtol:g}) after {total_it} Newton iterations (Fa={L[0]:g} N, "
+                f"Fr={L[1]:g} N, speed_inner={wi:g} rad/s, speed_outer={wo:g} rad/s, "
+                f"control={control!r}, orbital={orbital!r})"
+                + (". With inner-race control the gyroscopic moment may need more friction "
+                   "than a lightly loaded inner contact can give (no equilibrium); try "
+                   "control='outer' or 'jones', or gyroscopic='none'"
+                   if control == "inner" and gyroscopic != "none" else ""))
+        if control != "jones" or static:
+            break
+        new = _jones_outer(bearing, b)
+        if np.array_equal(new, outer):
+            break
+        log.debug("highspeed: Jones race control changed for %d balls", int(np.sum(new != outer)))
+        outer = new
+        u0 = sysm.unpack(x)[2]
+    else:
+        log.warning("highspeed: Jones race-control choice did not settle after 8 rounds")
+
+    return _result(bearing, model, psi, sysm, x, b, L, wi, wo, sysm.outer, gyroscopic, mu,
+                   total_it, F_ref, Q_ref)
+
+
+def _jones_outer(bearing, b):
+    """Jones's race-control criterion per ball (Harris 2001 ch. 8): outer control where
+    Q_o a_o E(k_o) cos(alpha_i - alpha_o) > Q_i a_i E(k_i)."""
+    ci = bearing.contacts(b.Qi, b.ai, "inner")
+    co = bearing.contacts(b.Qo, b.ao, "outer")
+    mo = b.Qo * np.asarray(co.a) * np.asarray(co.ellipe) * np.cos(b.ai - b.ao)
+    mi = b.Qi * np.asarray(ci.a) * np.asarray(ci.ellipe)
+    return mo > mi
+
+
+def _result(bearing, model, psi, sysm, x, b, L, wi, wo, outer, gyro, mu, iters, F_ref, Q_ref):
+    r = sysm.residual(b)
+    Z = model.Z
+    raw = np.concatenate([np.abs(r[:2 * Z]) if not sysm.static else np.zeros(2 * Z),
+                          np.abs(r[2 * Z:]) * np.where(sysm.free >= 3, 1.0 / model.Ri, 1.0)])
+    res = float(np.max(raw))
+    u = sysm.unpack(x)[2]
+    rho = model.D / model.dm
+    sr_i = (1 - rho * np.cos(b.ai_k)) * np.tan(b.ai_k - b.beta) + rho * np.sin(b.ai_k)
+    sr_o = (1 + rho * np.cos(b.ao_k)) * np.tan(b.ao_k - b.beta) - rho * np.sin(b.ao_k)
+    sr_i = np.where(outer, sr_i, 0.0)              # no spin on the controlling race
+    sr_o = np.where(outer, 0.0, sr_o)
+    slip = None
+    if mu is not None:
+        fi = np.abs(b.lam_i * b.Mg) / model.D
+        fo = np.abs(b.lam_o * b.Mg) / model.D
+        slip = (fi > mu * b.Qi) | (fo > mu * b.Qo)
+        if np.any(slip):
+            log.warning("highspeed: friction (mu=%g) cannot resist the gyroscopic moment on "
+                        "%d balls (gyroscopic pivoting)", mu, int(np.sum(slip)))
+    loads = b.C.sum(axis=0)
+    return HighSpeedResult(
+        bearing=bearing, azimuths=psi, speed_inner=wi, speed_outer=wo,
+        inner_loads=b.Qi, outer_loads=b.Qo, inner_contact_angles=b.ai_k,
+        outer_contact_angles=b.ao_k, inner_deflections=b.di, outer_deflections=b.do,
+        ball_positions=np.stack([b.X1, b.X2], axis=-1), centrifugal_force=b.Fc,
+        gyroscopic_moment=b.Mg, orbital_speed=b.wc, spin_speed=b.wR, pitch_angle=b.beta,
+        spin_to_roll_inner=sr_i, spin_to_roll_outer=sr_o,
+        control=np.where(outer, "outer", "inner"), displacements=u, loads=loads, applied=L,
+        residual=res, relative_residual=res / F_ref, iterations=int(iters), gyroscopic=gyro,
+        friction_coefficient=mu, gyroscopic_slip=slip)

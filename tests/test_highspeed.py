@@ -1,0 +1,358 @@
+"""High-speed (Jones 1960) equilibrium: static limit, independent re-derivation, trends,
+equilibrium identities, options and robustness.
+
+Reference bearing: the 218 angular-contact bearing of Ricci (2009) / Harris (2001)
+(D = 22.225 mm, Z = 16, d_m = 125.26 mm, f_i = f_o = 0.5232, beta_f = 40 deg, steel
+E = 200 GPa, nu = 0.3, rho = 7850 kg/m^3).
+
+No published high-speed table was available to the author of these tests (Harris's
+10,000 rpm example of the 218 bearing is in the book, not in the seeds); the high-speed
+numbers are instead checked against an independent re-implementation of Harris's
+equations (closed-form outer-race-control kinematics, scipy.optimize.fsolve) and against
+exact identities.  Tolerances are stated with each test.
+"""
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from scipy.optimize import brentq, fsolve
+
+import ballrace
+from ballrace.analytic import highspeed as hs
+from ballrace.analytic import kinematics as kin
+from ballrace.analytic import loaddist as ld
+
+BRG = ballrace.BallBearing(ball_diameter=22.225e-3, n_balls=16, pitch_diameter=125.26e-3,
+                           f_inner=0.5232, f_outer=0.5232, free_contact_angle=np.radians(40))
+RPM = np.pi / 30.0
+
+
+# ----------------------------------------------------------------- zero speed = static
+def test_zero_speed_thrust_equals_static_and_closed_form():
+    """At zero speed: Q_i = Q_o = the static ball load and alpha_i = alpha_o = beta of
+    H&D (1981) eq. 3.55, F_a/Z = K_n(beta) (BD)^1.5 sin(beta) (cos beta_f / cos beta - 1)^1.5,
+    solved here independently by brentq; delta_t = BD sin(beta - beta_f)/cos(beta) (eq. 3.60).
+    Tolerance 1e-10 relative (both solved to ~1e-13)."""
+    Fa = 17800.0
+    A, bf, Z = BRG.curvature_center_distance, BRG.free_contact_angle, BRG.n_balls
+    beta = brentq(lambda b: Z * BRG.contact_stiffness(b)[2] * A**1.5 * np.sin(b)
+                  * (np.cos(bf) / np.cos(b) - 1) ** 1.5 - Fa, bf + 1e-12, 1.5, xtol=1e-15)
+    r = hs.solve(BRG, Fa=Fa)
+    np.testing.assert_allclose(r.inner_contact_angles, beta, rtol=1e-10)
+    np.testing.assert_allclose(r.outer_contact_angles, beta, rtol=1e-10)
+    np.testing.assert_allclose(r.inner_loads, Fa / (Z * np.sin(beta)), rtol=1e-10)
+    np.testing.assert_allclose(r.outer_loads, r.inner_loads, rtol=1e-12)
+    assert r.axial_displacement == pytest.approx(A * np.sin(beta - bf) / np.cos(beta), rel=1e-9)
+    # and the general static solver
+    s = ld.solve(BRG, Fa=Fa)
+    np.testing.assert_allclose(r.inner_loads, s.ball_loads, rtol=1e-10)
+    np.testing.assert_allclose(r.displacements, s.displacements, rtol=1e-9, atol=1e-18)
+    # Harris's chart value for this case (REFERENCES.md): beta ~ 41.6 deg
+    assert np.degrees(beta) == pytest.approx(41.6, abs=0.1)
+    assert np.all(r.centrifugal_force == 0) and np.all(r.gyroscopic_moment == 0)
+
+
+@pytest.mark.parametrize("Fr, Fa", [(8900.0, 17800.0), (8900.0, 1000.0), (8900.0, 0.0)])
+def test_zero_speed_combined_equals_static(Fr, Fa):
+    """Combined load (Jones; H&D 1981 eqs. 3.61-3.74), rings kept parallel: identical ball
+    loads, contact angles and ring displacements as loaddist.combined (1e-9 relative to
+    the largest ball load; angles of loaded balls to 1e-10 rad)."""
+    r = hs.solve(BRG, Fa=Fa, Fr=Fr)
+    s = ld.combined(BRG, Fr, Fa)
+    Qmax = float(np.max(s.ball_loads))
+    assert np.max(np.abs(r.inner_loads - s.ball_loads)) < 1e-9 * Qmax
+    assert np.max(np.abs(r.outer_loads - s.ball_loads)) < 1e-9 * Qmax
+    on = s.ball_loads > 0
+    np.testing.assert_allclose(r.inner_contact_angles[on], s.contact_angles[on], atol=1e-10)
+    np.testing.assert_allclose(r.displacements[:2], s.displacements[:2], rtol=1e-8)
+    np.testing.assert_allclose(r.loads, s.loads, atol=1e-8 * Qmax * BRG.inner_groove_center_radius)
+
+
+def test_zero_speed_with_free_tilt_equals_static_five_dof():
+    """Moment load with free tilt: same as loaddist.solve (5 DOF)."""
+    r = hs.solve(BRG, Fa=17800.0, Fr=8900.0, Mz=-200.0, tilt="free")
+    s = ld.solve(BRG, Fa=17800.0, Fy=8900.0, Mz=-200.0)
+    Qmax = float(np.max(s.ball_loads))
+    assert np.max(np.abs(r.inner_loads - s.ball_loads)) < 1e-9 * Qmax
+    np.testing.assert_allclose(r.displacements, s.displacements, rtol=1e-8, atol=1e-15)
+
+
+def test_independent_start_converges_to_same_static_solution():
+    """Started from a crude estimate instead of the static solution, the solver reaches the
+    same equilibrium (1e-8 relative)."""
+    for kw in (dict(Fa=17800.0), dict(Fa=17800.0, Fr=8900.0), dict(Fa=1000.0, Fr=8900.0)):
+        a = hs.solve(BRG, **kw)
+        b = hs.solve(BRG, _start_from="estimate", **kw)
+        Q = a.inner_loads.max()
+        assert np.max(np.abs(a.inner_loads - b.inner_loads)) < 1e-8 * Q
+        a = hs.solve(BRG, speed_inner=10000 * RPM, **kw)
+        b = hs.solve(BRG, speed_inner=10000 * RPM, _start_from="estimate", **kw)
+        assert np.max(np.abs(a.outer_loads - b.outer_loads)) < 1e-8 * a.outer_loads.max()
+
+
+def test_small_speed_tends_to_static_as_speed_squared():
+    """The full high-speed equations (force balance of each ball, not the static shortcut)
+    tend to the static solution; the difference scales with omega^2 like F_c (ratio of
+    the differences at 1 and 0.1 rad/s within 1 % of 100)."""
+    s = ld.combined(BRG, 8900.0, 1000.0)
+    d = []
+    for w in (0.1, 1.0):
+        r = hs.solve(BRG, Fa=1000.0, Fr=8900.0, speed_inner=w)
+        d.append(np.max(np.abs(r.outer_loads - s.ball_loads)))
+        assert d[-1] < 1e-6 * s.ball_loads.max()
+    assert d[1] / d[0] == pytest.approx(100.0, rel=0.01)
+
+
+# ----------------------------------------------------------------- independent check
+def _harris_pure_thrust(Fa, w):
+    """Independent re-implementation for pure thrust (all balls alike), outer-race control,
+    gyroscopic moment reacted at the outer race (Harris 2001 ch. 25; H&D eqs. 3.93-3.112):
+    unknowns X1, X2 (ball centre from outer-groove centre) and the axial displacement,
+    kinematics from Harris's closed forms."""
+    D, dm, Z = BRG.ball_diameter, BRG.pitch_diameter, BRG.n_balls
+    fi, fo, bf = BRG.f_inner, BRG.f_outer, BRG.free_contact_angle
+    A = (fi + fo - 1) * D
+    m = 7850.0 * np.pi * D**3 / 6
+    J = m * D**2 / 10
+    g = D / dm
+
+    def eqs(v):
+        X1, X2, da = v[0] * 1e-3, v[1] * 1e-3, v[2] * 1e-6
+        A1, A2 = A * np.sin(bf) + da, A * np.cos(bf)
+        lo, li = np.hypot(X1, X2), np.hypot(A1 - X1, A2 - X2)
+        do, di = lo - (fo - 0.5) * D, li - (fi - 0.5) * D
+        so, co = X1 / lo, X2 / lo
+        si, ci = (A1 - X1) / li, (A2 - X2) / li
+        ai, ao = np.arctan2(si, ci), np.arctan2(so, co)
+        Ki = BRG.contact_stiffness(ai)[0]
+        Ko = BRG.contact_stiffness(ao)[1]
+        Qi, Qo = Ki * max(di, 0) ** 1.5, Ko * max(do, 0) ** 1.5
+        beta = np.arctan(so / (co + g))
+        wm = w * (1 - g * ci) / (1 + np.cos(ai - ao))
+        wR = -w / (((co + np.tan(beta) * so) / (1 + g * co)
+                    + (ci + np.tan(beta) * si) / (1 - g * ci)) * g * np.cos(beta))
+        de = dm + 2 * X2 - 2 * D * (fo - 0.5) * np.cos(bf)          # H&D eq. 3.107
+        Fc = 0.5 * m * de * wm**2
+        Mg = J * wR * wm * np.sin(beta)
+        return [(Qi * si - Qo * so + 2 * Mg / D * co) / 1e3,
+                (Qi * ci - Qo * co - 2 * Mg / D * so + Fc) / 1e3,
+                (Z * Qi * si - Fa) / 1e3]
+
+    s = hs.solve(BRG, Fa=Fa)
+    X = s.ball_positions[0]
+    v = fsolve(eqs, [X[0] * 1e3, X[1] * 1e3, s.axial_displacement * 1e6], xtol=1e-12)
+    assert np.max(np.abs(eqs(v))) < 1e-9
+    return v[0] * 1e-3, v[1] * 1e-3, v[2] * 1e-6
+
+
+@pytest.mark.parametrize("rpm", [5000.0, 10000.0, 20000.0])
+def test_matches_independent_reimplementation(rpm):
+    """Ball position and ring displacement agree with the independent implementation to
+    1e-9 m (rounding of the two Newton solutions); loads to 1e-6 relative."""
+    X1, X2, da = _harris_pure_thrust(17800.0, rpm * RPM)
+    r = hs.solve(BRG, Fa=17800.0, speed_inner=rpm * RPM)
+    assert r.ball_positions[0, 0] == pytest.approx(X1, abs=1e-9)
+    assert r.ball_positions[0, 1] == pytest.approx(X2, abs=1e-9)
+    assert r.axial_displacement == pytest.approx(da, abs=1e-10)
+    np.testing.assert_allclose(r.ball_positions[:, 0], X1, atol=1e-9)    # all balls alike
+
+
+# ----------------------------------------------------------------- physics
+def test_contact_angles_diverge_with_speed():
+    """Jones (1960), H&D (1981) §3.4: the outer contact angle falls and the inner one rises
+    with speed; the outer load rises."""
+    rpms = [0.0, 2500.0, 5000.0, 10000.0, 15000.0, 20000.0]
+    res = [hs.solve(BRG, Fa=17800.0, speed_inner=n * RPM) for n in rpms]
+    ai = np.array([r.inner_contact_angles[0] for r in res])
+    ao = np.array([r.outer_contact_angles[0] for r in res])
+    Qo = np.array([r.outer_loads[0] for r in res])
+    assert np.all(np.diff(ai) > 0) and np.all(np.diff(ao) < 0) and np.all(np.diff(Qo) > 0)
+    # regression snapshot (self-generated, 10,000 rpm): 50.04 / 31.28 deg
+    assert np.degrees(ai[3]) == pytest.approx(50.04, abs=0.01)
+    assert np.degrees(ao[3]) == pytest.approx(31.28, abs=0.01)
+
+
+@pytest.mark.parametrize("rpm", [10000.0, 20000.0])
+def test_outer_minus_inner_load_is_about_centrifugal_force(rpm):
+    """Pure thrust without gyroscopic moment: the radial ball balance is exactly
+    Q_o cos a_o - Q_i cos a_i = F_c and the axial one Q_i sin a_i = Q_o sin a_o = F_a/Z
+    (H&D eqs. 3.104-3.105, 1e-8 relative); so Q_o - Q_i is F_c up to the cosines of the
+    contact angles: between 0.6 F_c and F_c here (0.73 F_c at 10,000 rpm, 0.86 at 20,000)."""
+    r = hs.solve(BRG, Fa=17800.0, speed_inner=rpm * RPM, gyroscopic="none")
+    Qi, Qo, Fc = r.inner_loads, r.outer_loads, r.centrifugal_force
+    ai, ao = r.inner_contact_angles, r.outer_contact_angles
+    np.testing.assert_allclose(Qo * np.cos(ao) - Qi * np.cos(ai), Fc, rtol=1e-8)
+    np.testing.assert_allclose(Qi * np.sin(ai), 17800.0 / 16, rtol=1e-8)
+    np.testing.assert_allclose(Qo * np.sin(ao), 17800.0 / 16, rtol=1e-8)
+    assert np.all((Qo - Qi > 0.6 * Fc) & (Qo - Qi < Fc))
+
+
+def test_centrifugal_force_and_gyroscopic_moment_formulas():
+    """Per ball: F_c = (1/2) m d_orbit omega_c^2 and M_g = J omega_R omega_c sin(beta)
+    (H&D eqs. 3.106-3.108), with Jones's per-ball kinematics of the reported contact
+    angles (orbital="ball")."""
+    r = hs.solve(BRG, Fa=17800.0, Fr=4000.0, speed_inner=12000 * RPM, orbital="ball")
+    D, rho = BRG.ball_diameter, BRG.ball_material.density
+    m = rho * np.pi * D**3 / 6
+    orbit = 2 * (0.5 * BRG.outer_race_diameter - BRG.f_outer * D + r.ball_positions[:, 1])
+    np.testing.assert_allclose(r.centrifugal_force, 0.5 * m * orbit * r.orbital_speed**2,
+                               rtol=1e-13)
+    np.testing.assert_allclose(r.gyroscopic_moment, m * D**2 / 10 * r.spin_speed
+                               * r.orbital_speed * np.sin(r.pitch_angle), rtol=1e-13)
+    k = kin.ball_kinematics(D, BRG.pitch_diameter, r.inner_contact_angles,
+                            r.outer_contact_angles, 12000 * RPM, 0.0, "outer")
+    np.testing.assert_allclose(r.orbital_speed, k.cage_speed, rtol=1e-12)
+    np.testing.assert_allclose(r.spin_speed, k.ball_speed, rtol=1e-12)
+    i, o = kin.spin_to_roll(D, BRG.pitch_diameter, r.inner_contact_angles,
+                            r.outer_contact_angles, "outer")
+    np.testing.assert_allclose(r.spin_to_roll_inner, i, rtol=1e-10)
+    assert np.all(r.spin_to_roll_outer == 0)
+    # gyroscopic moment negative for inner-ring rotation (Harris's sign of omega_R)
+    assert np.all(r.gyroscopic_moment < 0)
+
+
+def test_cage_orbital_model():
+    """orbital="cage": one orbital speed for all balls, the Q_i Q_o/(Q_i + Q_o)-weighted
+    mean of the per-ball kinematic speeds; every ball rolls without slip on the
+    controlling (outer) race at that speed (H&D eq. 3.77 with omega_c given), so
+    M_g = J omega_R omega_c sin(beta) with omega_R from that rolling condition.  In pure
+    thrust it coincides with Jones's per-ball model (1e-12)."""
+    w = 12000 * RPM
+    r = hs.solve(BRG, Fa=17800.0, Fr=8900.0, speed_inner=w)
+    assert np.ptp(r.orbital_speed) == 0.0
+    D, dm = BRG.ball_diameter, BRG.pitch_diameter
+    ai, ao = r.inner_contact_angles, r.outer_contact_angles
+    k = kin.ball_kinematics(D, dm, ai, ao, w, 0.0, "outer")
+    q = r.inner_loads * r.outer_loads / (r.inner_loads + r.outer_loads)
+    assert r.orbital_speed[0] == pytest.approx(np.sum(q * k.cage_speed) / np.sum(q), rel=1e-12)
+    wR = (0.0 - r.orbital_speed) * (1 + D / dm * np.cos(ao)) / (D / dm * np.cos(ao - r.pitch_angle))
+    np.testing.assert_allclose(r.spin_speed, wR, rtol=1e-12)
+    a = hs.solve(BRG, Fa=17800.0, speed_inner=w, orbital="cage")
+    b = hs.solve(BRG, Fa=17800.0, speed_inner=w, orbital="ball")
+    np.testing.assert_allclose(a.outer_loads, b.outer_loads, rtol=1e-12)
+    np.testing.assert_allclose(a.orbital_speed, b.orbital_speed, rtol=1e-12)
+
+
+@pytest.mark.parametrize("kw", [dict(Fa=17800.0), dict(Fa=17800.0, Fr=8900.0),
+                                dict(Fa=1000.0, Fr=8900.0), dict(Fr=8900.0)])
+def test_equilibrium_residual_small(kw):
+    """Ring equilibrium: resultant of the ball forces = applied loads (1e-8 relative);
+    the reported residual is below 1e-9 of the load scale."""
+    r = hs.solve(BRG, speed_inner=10000 * RPM, **kw)
+    assert r.relative_residual < 1e-9
+    np.testing.assert_allclose(r.loads[:2], r.applied[:2], atol=1e-8 * r.applied.max())
+    # balls away from the load at pure radial load touch only the outer race: Q_o = F_c
+    if kw.get("Fa", 0.0) == 0.0:
+        off = r.inner_loads == 0
+        assert off.sum() >= 10
+        np.testing.assert_allclose(r.outer_loads[off], r.centrifugal_force[off], rtol=1e-6)
+
+
+def test_outer_ring_rotation_faster_cage_larger_centrifugal_force():
+    """Outer-ring rotation: omega_c ~ omega (1 + gamma)/2 instead of omega (1 - gamma)/2
+    (Harris 2001 ch. 8), so F_c and the contact-angle split are larger."""
+    w = 10000 * RPM
+    ri = hs.solve(BRG, Fa=17800.0, speed_inner=w)
+    ro = hs.solve(BRG, Fa=17800.0, speed_outer=w)
+    assert ro.orbital_speed[0] > ri.orbital_speed[0]
+    assert ro.centrifugal_force[0] > ri.centrifugal_force[0]
+    assert ro.gyroscopic_moment[0] > 0 > ri.gyroscopic_moment[0]
+    # both rings together: rigid rotation, the balls still feel F_c
+    rb = hs.solve(BRG, Fa=17800.0, speed_inner=w, speed_outer=w)
+    np.testing.assert_allclose(rb.orbital_speed, w, rtol=1e-12)
+    np.testing.assert_allclose(rb.spin_speed, 0.0, atol=1e-9 * w)
+
+
+def test_gyroscopic_options_and_slip_check():
+    """The gyroscopic moment changes the outer loads by a few percent at 10,000 rpm
+    (friction 2 M_g / D ~ 133 N against ~1.9 kN ball loads: 2.4 %); the harris and controlling-race
+    treatments coincide for outer control; mu = 0.01 cannot resist it, mu = 0.1 can."""
+    w = 10000 * RPM
+    a = hs.solve(BRG, Fa=17800.0, speed_inner=w, gyroscopic="harris")
+    b = hs.solve(BRG, Fa=17800.0, speed_inner=w, gyroscopic="none")
+    c = hs.solve(BRG, Fa=17800.0, speed_inner=w, gyroscopic="controlling-race")
+    np.testing.assert_allclose(a.outer_loads, c.outer_loads, rtol=1e-12)
+    rel = np.max(np.abs(a.outer_loads - b.outer_loads) / b.outer_loads)
+    assert 1e-2 < rel < 5e-2
+    assert not np.any(hs.solve(BRG, Fa=17800.0, speed_inner=w, friction_coefficient=0.1)
+                      .gyroscopic_slip)
+    assert np.all(hs.solve(BRG, Fa=17800.0, speed_inner=w, friction_coefficient=0.01)
+                  .gyroscopic_slip)
+
+
+def test_race_control_options():
+    """Inner-race control: no spin at the inner contacts; Jones's criterion picks outer
+    control for this heavily thrust-loaded 40 deg bearing (Q_o a_o E_o > Q_i a_i E_i)."""
+    w = 10000 * RPM
+    r = hs.solve(BRG, Fa=17800.0, speed_inner=w, control="inner")
+    assert np.all(r.control == "inner") and np.all(r.spin_to_roll_inner == 0)
+    assert np.all(r.spin_to_roll_outer != 0)
+    j = hs.solve(BRG, Fa=17800.0, speed_inner=w, control="jones")
+    assert np.all(j.control == "outer")
+    o = hs.solve(BRG, Fa=17800.0, speed_inner=w, control="outer")
+    np.testing.assert_allclose(j.outer_loads, o.outer_loads, rtol=1e-12)
+
+
+# ----------------------------------------------------------------- formulas and inputs
+def test_formula_functions():
+    """m = rho pi D^3/6, J = m D^2/10 (solid sphere), F_c = m d_m w^2 / 2."""
+    D, rho = 22.225e-3, 7850.0
+    m = rho * np.pi * D**3 / 6
+    assert hs.ball_mass(D, rho) == pytest.approx(m, rel=1e-15)
+    assert hs.ball_inertia(D, rho) == pytest.approx(m * D * D / 10, rel=1e-15)
+    assert hs.centrifugal_force(D, rho, 0.125, 400.0) == pytest.approx(0.5 * m * 0.125 * 400**2)
+    assert hs.gyroscopic_moment(D, rho, -2000.0, 400.0, 0.5) == pytest.approx(
+        m * D * D / 10 * -2000 * 400 * np.sin(0.5))
+
+
+def test_bad_inputs_name_the_argument():
+    with pytest.raises(ValueError, match="control"):
+        hs.solve(BRG, Fa=1000.0, control="cage")
+    with pytest.raises(ValueError, match="orbital"):
+        hs.solve(BRG, Fa=1000.0, orbital="race")
+    with pytest.raises(ValueError, match="gyroscopic"):
+        hs.solve(BRG, Fa=1000.0, gyroscopic="yes")
+    with pytest.raises(ValueError, match="My and Mz"):
+        hs.solve(BRG, Fa=1000.0, Mz=10.0)
+    with pytest.raises(ValueError, match="apply a load"):
+        hs.solve(BRG, speed_inner=100.0)
+    with pytest.raises(ValueError, match="friction_coefficient"):
+        hs.solve(BRG, Fa=1000.0, friction_coefficient=-0.1)
+    with pytest.raises(ValueError, match="speed_inner"):
+        hs.solve(BRG, Fa=1000.0, speed_inner=np.nan)
+    with pytest.raises(TypeError, match="bearing"):
+        hs.solve(object(), Fa=1000.0)
+    with pytest.raises(ValueError, match="density"):
+        hs.ball_mass(0.01, -1.0)
+
+
+@settings(max_examples=25, deadline=None)
+@given(Fa=st.floats(200.0, 40000.0), Fr=st.floats(0.0, 20000.0),
+       rpm=st.floats(0.0, 15000.0), outer_ring=st.booleans(),
+       control=st.sampled_from(["outer", "jones"]),
+       gyro=st.sampled_from(list(hs.GYROSCOPIC)))
+def test_no_nan_for_valid_inputs(Fa, Fr, rpm, outer_ring, control, gyro):
+    """Random valid loads and speeds: finite results, converged equilibrium.  (Inner-race
+    control is left out: with light thrust at high speed it can have no equilibrium, the
+    friction needed at the inner contact exceeding its normal load; see the next test.)"""
+    w = rpm * RPM
+    kw = dict(speed_outer=w) if outer_ring else dict(speed_inner=w)
+    r = hs.solve(BRG, Fa=Fa, Fr=Fr, control=control, gyroscopic=gyro, **kw)
+    for a in (r.inner_loads, r.outer_loads, r.inner_contact_angles, r.outer_contact_angles,
+              r.centrifugal_force, r.gyroscopic_moment, r.orbital_speed, r.spin_speed,
+              r.displacements, r.spin_to_roll_inner, r.spin_to_roll_outer):
+        assert np.all(np.isfinite(a))
+    assert r.relative_residual < 1e-8
+    assert np.all(r.inner_loads >= 0) and np.all(r.outer_loads >= 0)
+
+
+def test_inner_control_without_equilibrium_raises_with_hint():
+    """Fa = 1000 N at 8641 rpm, inner control, gyroscopic moment reacted at the inner race:
+    the inner contact would need a friction force ~6x its normal load at 6000 rpm already
+    and no equilibrium exists at 8641 rpm; the error names residual and iterations."""
+    r = hs.solve(BRG, Fa=1000.0, speed_inner=6000 * RPM, control="inner",
+                 gyroscopic="controlling-race", friction_coefficient=0.1)
+    assert np.all(r.gyroscopic_slip)
+    with pytest.raises(hs.ConvergenceError, match=r"residual .* after \d+ Newton iterations"):
+        hs.solve(BRG, Fa=1000.0, speed_inner=8641 * RPM, control="inner",
+                 gyroscopic="controlling-race")
