@@ -16,6 +16,22 @@ $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip setuptools wheel
 	$(BIN)/python -m pip install --quiet -e ".[all]"
+	@# Sparse solver for the FE check (docs/fem.md): CHOLMOD needs SuiteSparse headers and
+	@# OpenBLAS from apt (root or passwordless sudo); without them fall back to pip-only
+	@# pypardiso (MKL, ~1 GB).  pyamg (in the fem extra) and SuperLU remain as last resorts.
+	@SUDO=""; [ "$$(id -u)" = 0 ] || SUDO="sudo -n"; \
+	if command -v apt-get >/dev/null 2>&1 && $$SUDO true 2>/dev/null; then \
+	  { DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq libsuitesparse-dev \
+	      libopenblas0-pthread >/dev/null 2>&1 \
+	    || { $$SUDO apt-get update -qq >/dev/null 2>&1 && \
+	         DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq libsuitesparse-dev \
+	           libopenblas0-pthread >/dev/null 2>&1; } \
+	    || echo "note: apt-get install of SuiteSparse failed"; }; \
+	else echo "note: no apt-get/root: skipping SuiteSparse (CHOLMOD)"; fi
+	@$(BIN)/python -m pip install --quiet "scikit-sparse==0.4.16" 2>/dev/null \
+	  || { echo "note: scikit-sparse (CHOLMOD) unavailable; installing pypardiso instead"; \
+	       $(BIN)/python -m pip install --quiet pypardiso \
+	       || echo "note: pypardiso unavailable; the FE check will use pyamg or SuperLU"; }
 	touch $(STAMP)
 
 ## The main job: analytic reference checks (and quick FE checks), summary table, report in reports/latest/

@@ -1,0 +1,81 @@
+"""Accuracy and cost of the FE check at a mesh level (run by hand, prints a table).
+
+    .venv/bin/python benchmarks/bench_fem.py [--level standard] [--cases inner-hs,plane-hs,...]
+
+Each case runs in its own subprocess so its peak memory (ru_maxrss) and wall time are
+its own.  Cases: ``inner-hs`` / ``inner-2b`` (ball on the inner race of the 209 bearing,
+D = 12.7 mm, d_m = 65 mm, f = 0.52, contact angle 0, Q = 4450 N; half-space / two
+elastic bodies), ``outer-hs``, ``plane-hs`` / ``plane-2b`` (ball on plane, 2000 N),
+``inner-exact`` (exact sphere–torus gap).  Budgets (issue 5): half-space <= 90 s and
+8 GB, two bodies <= 5 min and 16 GB; a, b, p0 0.5 %, delta 1 %, tau0 3 %, z0 10 %.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import subprocess
+import sys
+import time
+
+CASES = {
+    "inner-hs": ("race", "inner", 4450.0, "half-space", "hertz"),
+    "inner-2b": ("race", "inner", 4450.0, "two-body", "hertz"),
+    "outer-hs": ("race", "outer", 4450.0, "half-space", "hertz"),
+    "plane-hs": ("plane", None, 2000.0, "half-space", "hertz"),
+    "plane-2b": ("plane", None, 2000.0, "two-body", "hertz"),
+    "inner-exact": ("race", "inner", 4450.0, "half-space", "exact"),
+}
+
+_CHILD = r"""
+import json, sys, time, resource
+import ballrace
+from ballrace import fem
+kind, race, load, mode, gap, level = json.loads(sys.argv[1])
+t0 = time.perf_counter()
+if kind == "race":
+    brg = ballrace.BallBearing(12.7e-3, 9, 65e-3, 0.52, 0.52, free_contact_angle=0.0)
+    r = fem.ball_on_race(brg, load, race=race, level=level, mode=mode, gap=gap)
+else:
+    r = fem.ball_on_plane(12.7e-3, load, level=level, mode=mode, gap=gap)
+d = r.to_dict()
+d["wall"] = time.perf_counter() - t0
+d["peak_gb"] = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1e6
+print("RESULT" + json.dumps(d))
+"""
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--level", default="standard")
+    ap.add_argument("--cases", default="inner-hs,plane-hs,plane-2b,inner-2b")
+    ap.add_argument("--json", default=None, help="also write the results to this file")
+    args = ap.parse_args(argv)
+    out = {}
+    q = ("a", "b", "p_max", "approach", "tau0", "z0", "max_shear", "von_mises")
+    head = (f"{'case':<12}{'DOFs':>9}{'wall s':>8}{'peak GB':>8}  "
+            + "".join(f"{x:>10}" for x in q) + "  solver")
+    print(head)
+    print("-" * len(head))
+    for name in args.cases.split(","):
+        spec = list(CASES[name]) + [args.level]
+        t0 = time.perf_counter()
+        p = subprocess.run([sys.executable, "-c", _CHILD, json.dumps(spec)],
+                           capture_output=True, text=True)
+        line = [ln for ln in p.stdout.splitlines() if ln.startswith("RESULT")]
+        if p.returncode or not line:
+            print(f"{name:<12} FAILED after {time.perf_counter() - t0:.0f} s\n{p.stderr[-2000:]}")
+            continue
+        d = json.loads(line[0][6:])
+        out[name] = d
+        rows = {r["quantity"]: r for r in d["comparison"]}
+        errs = "".join(f"{100 * rows[x]['error']:>+9.2f}%" for x in q)
+        print(f"{name:<12}{d['n_dofs']:>9,}{d['wall']:>8.1f}{d['peak_gb']:>8.2f}  {errs}  "
+              f"{d['solver']}", flush=True)
+    if args.json:
+        with open(args.json, "w") as fh:
+            json.dump(out, fh, indent=2)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,542 @@
+"""Public entry points of the FE check: ``ball_on_race``, ``ball_on_plane``, ``ball_on_ball``.
+
+Imports only numpy and :mod:`ballrace.analytic` at module level; gmsh, meshio and
+scikit-fem are imported when a model is run.
+"""
+from __future__ import annotations
+
+import logging
+import math
+import resource
+import time
+from dataclasses import dataclass, field
+from typing import Callable
+
+import numpy as np
+
+from ballrace.analytic import hertz
+from ballrace.analytic._checks import check_choice, check_positive, check_range
+from ballrace.analytic.materials import BEARING_STEEL, Material, effective_modulus
+from ballrace.meshes import geometry as geo
+
+__all__ = ["LEVELS", "MODES", "GAPS", "TOLERANCES", "ContactCase", "FEResult", "ball_on_race",
+           "ball_on_plane", "ball_on_ball", "run_case", "race_case", "plane_case", "ball_case"]
+
+log = logging.getLogger(__name__)
+
+#: Mesh levels: elements per minor semi-axis of the contact ellipse at the contact.
+LEVELS = {"quick": 5, "standard": 9, "fine": 14}
+MODES = ("half-space", "two-body")
+GAPS = ("hertz", "exact")
+
+#: Relative tolerances of the comparison with Hertz / Lundberg–Palmgren, per level
+#: (issue 5 for "standard"; "quick" is a smoke level).  Depths are ill-conditioned.
+TOLERANCES = {
+    "standard": {"a": 0.005, "b": 0.005, "p_max": 0.005, "approach": 0.01, "tau0": 0.03,
+                 "tau_x0z0": 0.03, "z0": 0.10, "max_shear": 0.03, "max_shear_depth": 0.10,
+                 "von_mises": 0.03, "von_mises_depth": 0.10},
+    "quick": {"a": 0.05, "b": 0.05, "p_max": 0.06, "approach": 0.03, "tau0": 0.12,
+              "tau_x0z0": 0.15, "z0": 0.30, "max_shear": 0.12, "max_shear_depth": 0.30,
+              "von_mises": 0.12, "von_mises_depth": 0.30},
+}
+TOLERANCES["fine"] = TOLERANCES["standard"]
+
+
+# --------------------------------------------------------------------------- cases
+@dataclass(frozen=True)
+class ContactCase:
+    """A ball contact to check (frozen).
+
+    Attributes
+    ----------
+    name : label.
+    load : normal ball load Q [N].
+    analytic : the Hertz solution (:class:`ballrace.analytic.hertz.HertzContact`).
+    ball_radius : [m].
+    upper, lower : exact surfaces (:mod:`ballrace.meshes.geometry`).
+    upper_q, lower_q : Hertz's quadratic surfaces.
+    lower_kind : "plane", "ball" or "race".
+    material1, material2 : ball and lower-body materials.
+    """
+
+    name: str
+    load: float
+    analytic: hertz.HertzContact
+    ball_radius: float
+    upper: geo.Surface
+    lower: geo.Surface
+    upper_q: geo.Surface
+    lower_q: geo.Surface
+    lower_kind: str
+    material1: Material
+    material2: Material
+    lower_radii: tuple = (math.inf, math.inf)
+
+
+def _check_load(load):
+    return float(check_positive(load, "load", "N"))
+
+
+def _check_material(m, name):
+    if not isinstance(m, Material):
+        raise TypeError(f"{name} must be a ballrace.Material; got {type(m).__name__}")
+    return m
+
+
+def race_case(brg, load: float, race: str = "inner", contact_angle: float = 0.0) -> ContactCase:
+    """Ball–race case from a :class:`ballrace.BallBearing` and a ball load.
+
+    Parameters
+    ----------
+    brg : ballrace.BallBearing
+        Bearing geometry and materials (``ball_material``/``ring_material`` or
+        ``material``).
+    load : float
+        Ball load Q [N], > 0.
+    race : {"inner", "outer"}
+    contact_angle : float
+        Contact angle [rad], in [0, pi/2).
+
+    Examples
+    --------
+    >>> import ballrace
+    >>> brg = ballrace.BallBearing(12.7e-3, 9, 65e-3, 0.52, 0.52, free_contact_angle=0.0)
+    >>> c = race_case(brg, 4450.0).analytic
+    >>> round(float(c.a) * 1e3, 3), round(float(c.b) * 1e3, 4)
+    (2.562, 0.276)
+    """
+    load = _check_load(load)
+    check_choice(race, "race", ("inner", "outer"))
+    beta = float(check_range(contact_angle, "contact_angle", 0.0, 0.5 * np.pi,
+                             low_inclusive=True, unit="rad"))
+    for attr in ("ball_diameter", "pitch_diameter", "f_inner", "f_outer"):
+        if not hasattr(brg, attr):
+            raise TypeError(f"brg must be a ballrace.BallBearing; got {type(brg).__name__}")
+    D, dm = float(brg.ball_diameter), float(brg.pitch_diameter)
+    if not D < dm:
+        raise ValueError(f"ball_diameter must be < pitch_diameter [m]; got D = {D:g}, "
+                         f"d_m = {dm:g}")
+    f = float(brg.f_inner if race == "inner" else brg.f_outer)
+    check_range(f, "f_inner" if race == "inner" else "f_outer", 0.5, None, unit="-")
+    m1 = getattr(brg, "ball_material", None) or brg.material
+    m2 = getattr(brg, "ring_material", None) or brg.material
+    Ep = effective_modulus(m1, m2)
+    cur = brg.curvature(race, beta)
+    c = hertz.elliptical_contact(load, float(cur.Rx), float(cur.Ry), Ep)
+    # race radii (convex > 0): Ricci (2009) eqs. (8)-(11)
+    rx2 = (dm / math.cos(beta) - D) / 2 if race == "inner" else -(dm / math.cos(beta) + D) / 2
+    ry2 = -f * D
+    return ContactCase(
+        name=f"ball on {race} race", load=load, analytic=c, ball_radius=D / 2,
+        upper=geo.Sphere(D / 2, +1), lower=geo.race_torus(D, dm, f, race, beta),
+        upper_q=geo.Paraboloid(D / 2, D / 2, +1), lower_q=geo.Paraboloid(rx2, ry2, -1),
+        lower_kind="race", material1=m1, material2=m2, lower_radii=(rx2, ry2))
+
+
+def plane_case(ball_diameter: float, load: float, material: Material = BEARING_STEEL,
+               plane_material: Material | None = None) -> ContactCase:
+    """Ball on a flat (Hamrock & Dowson 1981 Table 3.2 "ball on plane").
+
+    Examples
+    --------
+    >>> c = plane_case(12.7e-3, 2000.0).analytic
+    >>> round(float(c.a) * 1e3, 4)
+    0.4426
+    """
+    load = _check_load(load)
+    D = float(check_positive(ball_diameter, "ball_diameter", "m"))
+    m1 = _check_material(material, "material")
+    m2 = _check_material(plane_material or material, "plane_material")
+    c = hertz.point_contact(load, D / 2, D / 2, np.inf, np.inf, m1, m2)
+    return ContactCase(name="ball on plane", load=load, analytic=c, ball_radius=D / 2,
+                       upper=geo.Sphere(D / 2, +1), lower=geo.Plane(),
+                       upper_q=geo.Paraboloid(D / 2, D / 2, +1),
+                       lower_q=geo.Paraboloid(np.inf, np.inf, -1), lower_kind="plane",
+                       material1=m1, material2=m2)
+
+
+def ball_case(ball_diameter: float, load: float, material: Material = BEARING_STEEL,
+              other_diameter: float | None = None,
+              other_material: Material | None = None) -> ContactCase:
+    """Two balls pressed together (Hamrock & Dowson 1981 Table 3.2 "ball on ball")."""
+    load = _check_load(load)
+    D = float(check_positive(ball_diameter, "ball_diameter", "m"))
+    D2 = float(check_positive(other_diameter or D, "other_diameter", "m"))
+    m1 = _check_material(material, "material")
+    m2 = _check_material(other_material or material, "other_material")
+    c = hertz.point_contact(load, D / 2, D / 2, D2 / 2, D2 / 2, m1, m2)
+    return ContactCase(name="ball on ball", load=load, analytic=c, ball_radius=D / 2,
+                       upper=geo.Sphere(D / 2, +1), lower=geo.Sphere(D2 / 2, -1),
+                       upper_q=geo.Paraboloid(D / 2, D / 2, +1),
+                       lower_q=geo.Paraboloid(D2 / 2, D2 / 2, -1), lower_kind="ball",
+                       material1=m1, material2=m2, lower_radii=(D2 / 2, D2 / 2))
+
+
+# --------------------------------------------------------------------------- result
+@dataclass
+class FEResult:
+    """Result of an FE contact check (SI units).
+
+    Attributes
+    ----------
+    case, mode, gap, level : what was run.
+    a, b : semi-major and semi-minor axes from pressure moments [m].
+    p_max : 3F/(2 pi a b) [Pa].
+    approach : depth-point approach, comparable with Hertz's delta [m] (see
+        ``approach_hertz_equivalent``: FE depth-point approach + half-space w(z_q)).
+    approach_rigid : raw rigid approach of the far planes [m] (includes bulk compliance).
+    tau0, z0 : orthogonal shear |tau_xz| peak [Pa] and its depth [m] (parabola fit).
+    tau_x0z0 : |tau_xz| at the analytic (x0, z0) [Pa].
+    max_shear, max_shear_depth, von_mises, von_mises_depth : on-axis maxima [Pa], [m].
+    n_dofs : total degrees of freedom; timings : seconds per stage; peak_rss : [bytes].
+    analytic : the Hertz contact; comparison : table rows (dicts).
+    """
+
+    case: ContactCase
+    mode: str
+    gap: str
+    level: str
+    a: float
+    b: float
+    p_max: float
+    approach: float
+    approach_rigid: float
+    tau0: float
+    z0: float
+    tau_x0z0: float
+    max_shear: float
+    max_shear_depth: float
+    von_mises: float
+    von_mises_depth: float
+    n_dofs: int
+    timings: dict
+    solver: str
+    peak_rss: int
+    comparison: list
+    fields: dict = field(default_factory=dict, repr=False)
+    info: dict = field(default_factory=dict)
+
+    @property
+    def analytic(self) -> hertz.HertzContact:
+        """The Hertz solution of the same contact."""
+        return self.case.analytic
+
+    @property
+    def passed(self) -> bool:
+        """True when every row with a tolerance is within it."""
+        return all(r["ok"] for r in self.comparison if r["tol"] is not None)
+
+    def to_dict(self) -> dict:
+        """JSON-ready summary (SI units)."""
+        keys = ("a", "b", "p_max", "approach", "approach_rigid", "tau0", "z0", "tau_x0z0",
+                "max_shear", "max_shear_depth", "von_mises", "von_mises_depth", "n_dofs",
+                "solver", "peak_rss", "mode", "gap", "level")
+        out = {k: getattr(self, k) for k in keys}
+        out["case"] = self.case.name
+        out["load"] = self.case.load
+        out["timings"] = dict(self.timings)
+        out["comparison"] = list(self.comparison)
+        out["info"] = dict(self.info)
+        out["passed"] = self.passed
+        return out
+
+
+# --------------------------------------------------------------------------- public API
+def ball_on_race(brg, load: float, race: str = "inner", contact_angle: float = 0.0,
+                 level: str = "standard", mode: str = "half-space", gap: str = "hertz",
+                 **kwargs) -> FEResult:
+    """FE check of a ball–race contact against Hertz and Lundberg–Palmgren.
+
+    Parameters
+    ----------
+    brg : ballrace.BallBearing
+        Bearing.
+    load : float
+        Ball load Q [N], > 0.
+    race : {"inner", "outer"}
+    contact_angle : float
+        Contact angle [rad].
+    level : {"quick", "standard", "fine"}
+        Mesh level (:data:`LEVELS`).
+    mode : {"half-space", "two-body"}
+        Elastic half-space under a rigid indenter of the combined curvature (E' folded
+        into the half-space modulus), or the ball and the race both elastic.
+    gap : {"hertz", "exact"}
+        Hertz's quadratic gap (verification) or the exact sphere–torus gap
+        ("beyond Hertz": no tolerances applied).
+    **kwargs
+        ``solver`` (force a sparse solver), ``use_cache`` (mesh cache),
+        ``progress`` (callable(stage)).
+
+    Returns
+    -------
+    FEResult
+    """
+    return run_case(race_case(brg, load, race, contact_angle), level=level, mode=mode,
+                    gap=gap, **kwargs)
+
+
+def ball_on_plane(ball_diameter: float, load: float, material: Material = BEARING_STEEL,
+                  level: str = "standard", mode: str = "half-space", gap: str = "hertz",
+                  plane_material: Material | None = None, **kwargs) -> FEResult:
+    """FE check of a ball on a flat (see :func:`ball_on_race` for the options)."""
+    return run_case(plane_case(ball_diameter, load, material, plane_material), level=level,
+                    mode=mode, gap=gap, **kwargs)
+
+
+def ball_on_ball(ball_diameter: float, load: float, material: Material = BEARING_STEEL,
+                 level: str = "standard", mode: str = "half-space", gap: str = "hertz",
+                 other_diameter: float | None = None, **kwargs) -> FEResult:
+    """FE check of two balls pressed together (see :func:`ball_on_race`)."""
+    return run_case(ball_case(ball_diameter, load, material, other_diameter), level=level,
+                    mode=mode, gap=gap, **kwargs)
+
+
+# --------------------------------------------------------------------------- pipeline
+@dataclass(frozen=True)
+class _Sizing:
+    h: float
+    stretch: float
+    fine: tuple
+    grid: object
+    zq: float
+
+
+def sizing(case: ContactCase, level: str) -> _Sizing:
+    """Element size, anisotropy, refinement box and pressure grid for a level."""
+    from .model import PressureGrid
+
+    c = case.analytic
+    ax, ay = float(c.semi_axis_x), float(c.semi_axis_y)
+    minor, major = min(ax, ay), max(ax, ay)
+    h = minor / LEVELS[level]
+    # elongate the elements along y when the ellipse is long in y (bearing contacts)
+    s = float(np.clip(ay / ax / 2.5, 1.0, 4.0)) if ay > ax else 1.0
+    ext = 1.3
+    Lx, Ly = ext * ax, ext * ay
+    # tent spacing: fine enough for the moments, >= 1.4x the surface mesh (inf-sup, FE-NOTES)
+    dx = max(ax / 16.0, 1.4 * h)
+    dy = max(ay / 16.0, 1.4 * h * s)
+    grid = PressureGrid(Lx, Ly, max(3, int(round(Lx / dx))), max(3, int(round(Ly / dy))))
+    fine = (Lx + 2 * h, Ly + 2 * h * s, 1.6 * minor)
+    return _Sizing(h=h, stretch=s, fine=fine, grid=grid, zq=3.0 * minor)
+
+
+def _bodies(case: ContactCase, mode: str, sz: _Sizing, use_cache: bool):
+    from ballrace.meshes import contact as mc
+
+    from .model import Body
+
+    c = case.analytic
+    major = float(max(c.a, c.b))
+    R = case.ball_radius
+    bodies = []
+    if mode == "half-space":
+        m2 = case.material2
+        E_hs = 0.5 * float(c.E_prime) * (1.0 - m2.nu**2)       # E/(1-nu^2) = E* = E'/2
+        L = 8.0 * major
+        blk = mc.block_mesh((L, L, L), sz.fine, sz.h, L / 5, stretch=sz.stretch,
+                            use_cache=use_cache)
+        cn = blk.points[:, 2] == 0.0
+        bodies.append(Body("half-space", blk.points, blk.tets, E_hs, m2.nu, -1, -L, cn,
+                           geo.Plane()))
+        return bodies, [blk]
+    ball = mc.ball_mesh(R, sz.fine, sz.h, R / 4, stretch=sz.stretch, use_cache=use_cache)
+    p = ball.points.copy()
+    ctr = np.array([0.0, 0.0, R])
+    r = np.linalg.norm(p - ctr, axis=1)
+    on = (np.abs(r - R) < 1e-5 * R) & (p[:, 2] < R * (1 - 1e-9))
+    p[on] = ctr + (p[on] - ctr) * (R / r[on])[:, None]          # exactly onto the sphere
+    bodies.append(Body("ball", p, ball.tets, case.material1.E, case.material1.nu, +1, R, on,
+                       case.upper))
+    meshes = [ball]
+    m2 = case.material2
+    if case.lower_kind == "ball":
+        R2 = case.lower_radii[0]
+        b2 = mc.ball_mesh(R2, sz.fine, sz.h, R2 / 4, stretch=sz.stretch, use_cache=use_cache)
+        q = b2.points.copy()
+        ctr2 = np.array([0.0, 0.0, R2])
+        r2 = np.linalg.norm(q - ctr2, axis=1)
+        on2 = (np.abs(r2 - R2) < 1e-5 * R2) & (q[:, 2] < R2 * (1 - 1e-9))
+        q[on2] = ctr2 + (q[on2] - ctr2) * (R2 / r2[on2])[:, None]
+        q[:, 2] *= -1.0
+        bodies.append(Body("ball 2", q, b2.tets, m2.E, m2.nu, -1, -R2, on2, case.lower))
+        meshes.append(b2)
+        return bodies, meshes
+    L = 8.0 * major
+    Lx = Ly = L
+    if case.lower_kind == "race":
+        rx2, ry2 = case.lower_radii
+        Lx = min(L, 0.3 * abs(rx2))
+        Ly = min(L, 0.75 * abs(ry2))
+    H = max(Lx, Ly)
+    blk = mc.block_mesh((Lx, Ly, H), sz.fine, sz.h, H / 5, stretch=sz.stretch,
+                        use_cache=use_cache)
+    cn = blk.points[:, 2] == 0.0
+    if case.lower_kind == "race":
+        blk = mc.morph_block(blk, case.lower, H)
+    bodies.append(Body(case.lower_kind, blk.points, blk.tets, m2.E, m2.nu, -1, -H, cn,
+                       case.lower))
+    meshes.append(blk)
+    return bodies, meshes
+
+
+def run_case(case: ContactCase, level: str = "standard", mode: str = "half-space",
+             gap: str = "hertz", *, solver: str | None = None, use_cache: bool = True,
+             progress: Callable[[str], None] | None = None, load: float | None = None,
+             approach: float | None = None) -> FEResult:
+    """Mesh, assemble, solve and post-process one contact case.
+
+    Parameters
+    ----------
+    case : ContactCase
+    level, mode, gap : see :func:`ball_on_race`.
+    solver : str, optional
+        Force a sparse solver (:data:`ballrace.fem.solvers.SOLVERS`).
+    use_cache : bool
+        Use the mesh cache.
+    progress : callable, optional
+        Called with the name of each stage ("mesh", "assemble", "contact", "extract").
+    approach : float, optional
+        Impose the rigid approach of the far planes [m] instead of the case's load.
+    """
+    from . import extract as ex
+    from . import halfspace
+    from .model import assemble_body, compliance, solve_contact
+
+    check_choice(level, "level", tuple(LEVELS))
+    check_choice(mode, "mode", MODES)
+    check_choice(gap, "gap", GAPS)
+    step = progress or (lambda stage: None)
+    c = case.analytic
+    timings = {}
+    sz = sizing(case, level)
+
+    step("mesh")
+    t0 = time.perf_counter()
+    bodies, meshes = _bodies(case, mode, sz, use_cache)
+    timings["mesh"] = time.perf_counter() - t0
+
+    step("assemble")
+    states = []
+    for b in bodies:
+        st = assemble_body(b, sz.grid, solver)
+        states.append(st)
+        for k, v in st.timings.items():
+            timings[k] = timings.get(k, 0.0) + v
+
+    step("contact")
+    t0 = time.perf_counter()
+    if gap == "hertz":
+        def g0(x, y):
+            return case.upper_q.height(x, y) - case.lower_q.height(x, y)
+    else:
+        def g0(x, y):
+            return case.upper.height(x, y) - case.lower.height(x, y)
+    I = sz.grid.integrals(g0)
+    C = compliance(states)
+    sol = solve_contact(C, I["G0"], I["m"], load=None if approach is not None else case.load / 4,
+                        approach=approach, p_ref=float(c.p_max), delta_ref=float(c.approach))
+    timings["contact"] = time.perf_counter() - t0
+
+    step("extract")
+    t0 = time.perf_counter()
+    mom = ex.pressure_moments(sol.lam, I)
+    edge = sol.lam[sz.grid.boundary_tents()]
+    if np.any(edge > 1e-6 * np.max(sol.lam)):
+        log.warning("contact reaches the edge of the pressure grid: enlarge it")
+    a_fe, b_fe = max(mom["ax"], mom["ay"]), min(mom["ax"], mom["ay"])
+    us = [ex.displacement(s, sol.lam) for s in states]
+    eps = 1e-7 * sz.h
+    # depth-point approach
+    d_fe = sol.Delta
+    w_sum = 0.0
+    for s, u in zip(states, us):
+        b = s.body
+        zq = sz.zq
+        pt = np.array([[eps, eps, b.side * zq]])
+        uz = ex.probe_displacement(s, u, pt)[0, 2]
+        d_fe -= b.side * uz             # displacement of the depth point towards the support
+        Eb, nub = b.E, b.nu
+        w_sum += halfspace.axial_displacement(zq, float(c.semi_axis_x), float(c.semi_axis_y),
+                                              float(c.p_max), Eb, nub)
+    d_an = float(c.approach) - w_sum
+
+    # stresses in the lower body (the race / plane / half-space)
+    low, ul = states[-1], us[-1]
+    ax_, ay_ = float(c.semi_axis_x), float(c.semi_axis_y)
+    minor = min(ax_, ay_)
+    hs = 1e-3 * sz.h
+    xs = np.linspace(0.0, 1.6 * ax_, 65)
+    zs = np.linspace(0.04, 1.6, 61) * minor
+    Xs, Zs = np.meshgrid(xs, zs, indexing="ij")
+    surf = low.body.surface
+    hx = surf.height(Xs, 0.0 * Xs)
+    pts = np.stack([Xs.ravel() + eps, np.full(Xs.size, eps), (hx - Zs).ravel()], axis=1)
+    S = ex.to_depth_frame(ex.stresses(low, ul, pts, hs))
+    tau = S[:, 4].reshape(Xs.shape)
+    tres, vm = ex.tresca_von_mises(S)
+    prof = np.max(np.abs(tau), axis=0)
+    z0_fe, tau0_fe = ex.parabola_vertex(zs, prof)
+    # axis
+    za = np.linspace(0.02, 2.5, 126) * minor
+    pa = np.stack([np.full(za.size, eps), np.full(za.size, eps), -za], axis=1)
+    Sa = ex.to_depth_frame(ex.stresses(low, ul, pa, hs))
+    tr_a, vm_a = ex.tresca_von_mises(Sa)
+    ms_d, ms = ex.parabola_vertex(za, tr_a)
+    vm_d, vmx = ex.parabola_vertex(za, vm_a)
+    # analytic subsurface predictions
+    from ballrace.analytic import subsurface as sub
+
+    nu_low = low.body.nu
+    osh = sub.orthogonal_shear(c)
+    x0, z0 = float(osh.x0), float(osh.z0)
+    ptx = np.array([[x0 + eps, eps, surf.height(x0, 0.0) - z0]])
+    tau_at = abs(float(ex.to_depth_frame(ex.stresses(low, ul, ptx, hs))[0, 4]))
+    msa = sub.max_shear(c, nu=nu_low)
+    vma = sub.von_mises(c, nu=nu_low)
+    timings["extract"] = time.perf_counter() - t0
+
+    tol = TOLERANCES[level] if gap == "hertz" else {}
+    rows = []
+
+    def row(q, unit, fe, an):
+        err = fe / an - 1.0
+        t = tol.get(q)
+        rows.append({"quantity": q, "unit": unit, "fe": float(fe), "analytic": float(an),
+                     "error": float(err), "tol": t, "ok": bool(t is None or abs(err) <= t)})
+
+    row("a", "m", a_fe, float(c.a))
+    row("b", "m", b_fe, float(c.b))
+    row("p_max", "Pa", mom["p_max"], float(c.p_max))
+    row("approach", "m", d_fe, d_an)
+    row("tau0", "Pa", tau0_fe, float(osh.tau0))
+    row("tau_x0z0", "Pa", tau_at, float(osh.tau0))
+    row("z0", "m", z0_fe, z0)
+    row("max_shear", "Pa", ms, float(msa.tau_max))
+    row("max_shear_depth", "m", ms_d, float(msa.depth))
+    row("von_mises", "Pa", vmx, float(vma.sigma_vm))
+    row("von_mises_depth", "m", vm_d, float(vma.depth))
+
+    fields = {"section_x": xs, "section_z": zs, "tau_xz": tau,
+              "max_shear": tres.reshape(Xs.shape), "von_mises": vm.reshape(Xs.shape),
+              "grid": sz.grid, "lam": sol.lam, "axis_z": za, "axis_tresca": tr_a,
+              "axis_von_mises": vm_a, "states": states}
+    info = {"approach_hertz": float(c.approach), "depth_point": sz.zq,
+            "rigid_approach_error": sol.Delta / float(c.approach) - 1.0,
+            "complementarity": sol.complementarity, "n_tents": sz.grid.n_tents,
+            "h_contact": sz.h, "stretch": sz.stretch,
+            "mesh_nodes": [int(m.n_nodes) for m in meshes],
+            "mesh_digests": [m.digest() for m in meshes]}
+    timings["total"] = sum(v for k, v in timings.items())
+    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
+    res = FEResult(case=case, mode=mode, gap=gap, level=level, a=a_fe, b=b_fe,
+                   p_max=mom["p_max"], approach=d_fe, approach_rigid=sol.Delta, tau0=tau0_fe,
+                   z0=z0_fe, tau_x0z0=tau_at, max_shear=ms, max_shear_depth=ms_d,
+                   von_mises=vmx, von_mises_depth=vm_d,
+                   n_dofs=int(sum(s.n_dofs for s in states)), timings=timings,
+                   solver=states[0].solver, peak_rss=int(peak), comparison=rows, fields=fields,
+                   info=info)
+    log.info("%s (%s, %s gap, %s): %d DOFs in %.1f s", case.name, mode, gap, level,
+             res.n_dofs, timings["total"])
+    return res

@@ -1,0 +1,93 @@
+"""Mesh-convergence study: errors against Hertz / Lundberg–Palmgren versus DOFs.
+
+For each mesh size (elements per minor semi-axis ``n``) the case is solved and the
+relative error of each quantity recorded; the observed rate is the slope of
+``log|error|`` against ``log(DOFs)`` (least squares, as in scikit-fem's
+``tests/test_convergence.py``).  For a 3-D mesh ``DOFs ~ h^-3``, so a rate r in DOFs
+is ``3 r`` in h.
+"""
+from __future__ import annotations
+
+import logging
+from dataclasses import dataclass
+
+import numpy as np
+
+__all__ = ["ConvergenceStudy", "convergence_study", "fitted_rate"]
+
+log = logging.getLogger(__name__)
+
+QUANTITIES = ("a", "b", "p_max", "approach", "tau0", "z0", "max_shear", "von_mises")
+
+
+def fitted_rate(dofs, errors) -> float:
+    """Slope of log|error| against log(DOFs) (NaN with fewer than two non-zero errors).
+
+    Examples
+    --------
+    >>> round(fitted_rate([1e3, 8e3, 64e3], [1e-2, 2.5e-3, 6.25e-4]), 6)
+    -0.666667
+    """
+    d = np.asarray(dofs, dtype=float)
+    e = np.abs(np.asarray(errors, dtype=float))
+    ok = e > 0
+    if ok.sum() < 2:
+        return float("nan")
+    return float(np.polyfit(np.log(d[ok]), np.log(e[ok]), 1)[0])
+
+
+@dataclass(frozen=True)
+class ConvergenceStudy:
+    """Result of :func:`convergence_study`: ``n``, ``dofs``, ``seconds``, ``errors[q]``,
+    ``rates[q]`` (per DOF)."""
+
+    n: tuple
+    dofs: tuple
+    seconds: tuple
+    errors: dict
+    rates: dict
+
+    def rows(self):
+        """Table rows: (n, DOFs, seconds, error per quantity...)."""
+        return [(n, d, s, *[self.errors[q][i] for q in QUANTITIES])
+                for i, (n, d, s) in enumerate(zip(self.n, self.dofs, self.seconds))]
+
+
+def convergence_study(case, sizes=(4, 6, 8, 11), mode: str = "half-space",
+                      progress=None, **kwargs) -> ConvergenceStudy:
+    """Solve ``case`` at several mesh sizes and fit error rates.
+
+    Parameters
+    ----------
+    case : ContactCase
+        From :func:`ballrace.fem.race_case` / ``plane_case`` / ``ball_case``.
+    sizes : sequence of int
+        Elements per minor semi-axis at the contact.
+    mode : {"half-space", "two-body"}
+    progress : callable(str), optional
+        Called before each run.
+    """
+    from . import api
+
+    errs = {q: [] for q in QUANTITIES}
+    dofs, secs = [], []
+    saved = dict(api.LEVELS)
+    try:
+        for n in sizes:
+            if progress:
+                progress(f"n = {n}")
+            api.LEVELS["_study"] = int(n)
+            api.TOLERANCES["_study"] = api.TOLERANCES["standard"]
+            r = api.run_case(case, level="_study", mode=mode, **kwargs)
+            rows = {row["quantity"]: row for row in r.comparison}
+            for q in QUANTITIES:
+                errs[q].append(rows[q]["error"])
+            dofs.append(r.n_dofs)
+            secs.append(r.timings["total"])
+            log.info("convergence n=%d: %d DOFs, %.1f s", n, r.n_dofs, r.timings["total"])
+    finally:
+        api.LEVELS.clear()
+        api.LEVELS.update(saved)
+        api.TOLERANCES.pop("_study", None)
+    rates = {q: fitted_rate(dofs, errs[q]) for q in QUANTITIES}
+    return ConvergenceStudy(tuple(sizes), tuple(dofs), tuple(secs), errs, rates)

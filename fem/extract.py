@@ -1,0 +1,178 @@
+"""Post-processing of a solved FE contact: what the analytic library predicts, measured.
+
+* ``a, b`` from the pressure moments, ``a_x = (5 int p x^2 dA / F)^(1/2)`` (exact for
+  the Hertz semi-ellipsoid); ``p_max = 3F/(2 pi a b)`` (FE-NOTES: the last active node
+  is quantised and nodal pressures oscillate, the moments are not);
+* approach by the depth-point method (:mod:`ballrace.fem.halfspace`);
+* stresses from the exact P2 displacement gradient of the element containing each
+  point (located with a KD-tree of element centroids and barycentric tests).  Stresses
+  are reported in the analytic frame of :mod:`ballrace.analytic.subsurface` (depth z
+  positive into the lower body): ``tau_xz`` there is ``-sigma_xz`` of the mesh frame;
+* the depth of the orthogonal-shear peak from a parabola through the peak of
+  ``max_x |tau_xz|(z)`` (the depth is ill-conditioned, FE-NOTES).
+"""
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["displacement", "locate", "evaluate", "probe_displacement", "stresses", "parabola_vertex",
+           "pressure_moments"]
+
+# component order of the returned stress arrays
+COMPONENTS = ("sxx", "syy", "szz", "sxy", "sxz", "syz")
+
+
+def displacement(state, lam) -> np.ndarray:
+    """Full displacement vector ``u = X lambda`` of a body [m]."""
+    return state.X @ np.asarray(lam)
+
+
+def _locator(state):
+    """KD-tree of element centroids and inverse affine maps, cached on the state."""
+    cache = state.__dict__.setdefault("_locator", {})
+    if not cache:
+        from scipy.spatial import cKDTree
+
+        m = state.mesh
+        P = m.p[:, m.t]                                   # (3, 4, nt)
+        A = np.stack([P[:, 1] - P[:, 0], P[:, 2] - P[:, 0], P[:, 3] - P[:, 0]], axis=-1)
+        A = np.moveaxis(A, 1, 0)                          # (nt, 3, 3), columns = edges
+        cache["inv"] = np.linalg.inv(A)
+        cache["origin"] = P[:, 0].T.copy()                # (nt, 3)
+        cache["tree"] = cKDTree(P.mean(axis=1).T)
+    return cache
+
+
+def locate(state, pts, k: int = 24):
+    """Element index and reference coordinates (n, 3) of points (n, 3) in a body's mesh."""
+    cache = _locator(state)
+    pts = np.asarray(pts, dtype=float)
+    n = pts.shape[0]
+    tind = np.full(n, -1)
+    X = np.zeros((n, 3))
+    todo = np.arange(n)
+    best = np.full(n, -np.inf)
+    while todo.size:
+        kk = min(k, cache["inv"].shape[0])
+        _, cand = cache["tree"].query(pts[todo], k=kk)
+        cand = np.atleast_2d(cand)
+        d = pts[todo, None, :] - cache["origin"][cand]    # (m, k, 3)
+        Xc = np.einsum("mkij,mkj->mki", cache["inv"][cand], d)
+        lam_min = np.minimum(Xc.min(axis=2), 1.0 - Xc.sum(axis=2))
+        j = np.argmax(lam_min, axis=1)
+        lm = lam_min[np.arange(todo.size), j]
+        better = lm > best[todo]
+        sel = todo[better]
+        tind[sel] = cand[better, j[better]]
+        X[sel] = Xc[better, j[better]]
+        best[sel] = lm[better]
+        done = best[todo] > -1e-9
+        todo = todo[~done]
+        if todo.size and kk >= min(4 * k * 8, cache["inv"].shape[0]):
+            raise ValueError(f"{todo.size} probe points lie outside the mesh of {state.body.name}")
+        k *= 4
+    return tind, X
+
+
+def evaluate(state, u, pts):
+    """Displacement (n, 3) [m] and its gradient (n, 3, 3), ``g[:, i, j] = du_i/dx_j``,
+    at points (n, 3), evaluated exactly from the P2 field of the containing element."""
+    from skfem import ElementTetP2
+
+    tind, X = locate(state, pts)
+    el = ElementTetP2()
+    edofs = state.scalar_basis.element_dofs[:, tind]      # (10, n)
+    U = u.reshape(-1, 3)
+    inv = _locator(state)["inv"][tind]                    # (n, 3, 3) reference <- physical
+    val = np.zeros((len(tind), 3))
+    grad = np.zeros((len(tind), 3, 3))
+    for i in range(edofs.shape[0]):
+        phi, dphi = el.lbasis(X.T, i)                     # (n,), (3, n) reference gradient
+        ui = U[edofs[i]]                                  # (n, 3)
+        val += phi[:, None] * ui
+        g = np.einsum("nji,jn->ni", inv, dphi)            # physical gradient = inv^T dphi
+        grad += ui[:, :, None] * g[:, None, :]
+    return val, grad
+
+
+def probe_displacement(state, u, pts) -> np.ndarray:
+    """Displacement (n, 3) at points (n, 3) of the body [m]."""
+    return evaluate(state, u, pts)[0]
+
+
+def stresses(state, u, pts, h: float = 0.0) -> np.ndarray:
+    """Stress components (n, 6) in the mesh frame at points (n, 3) [Pa].
+
+    Order ``sxx, syy, szz, sxy, sxz, syz``; exact P2 gradient of the containing element
+    (``h`` is ignored, kept for compatibility).
+    """
+    _, grad = evaluate(state, u, np.asarray(pts, dtype=float))
+    E, nu = state.body.E, state.body.nu
+    lam = E * nu / ((1 + nu) * (1 - 2 * nu))
+    mu = E / (2 * (1 + nu))
+    eps = 0.5 * (grad + grad.transpose(0, 2, 1))
+    tr = np.trace(eps, axis1=1, axis2=2)
+    sig = 2 * mu * eps
+    sig[:, 0, 0] += lam * tr
+    sig[:, 1, 1] += lam * tr
+    sig[:, 2, 2] += lam * tr
+    return np.stack([sig[:, 0, 0], sig[:, 1, 1], sig[:, 2, 2], sig[:, 0, 1], sig[:, 0, 2],
+                     sig[:, 1, 2]], axis=1)
+
+
+def to_depth_frame(s: np.ndarray) -> np.ndarray:
+    """Stresses of the lower body from the mesh frame (z up) to the depth frame (z down)."""
+    out = s.copy()
+    out[:, 4] *= -1.0
+    out[:, 5] *= -1.0
+    return out
+
+
+def tresca_von_mises(s: np.ndarray):
+    """Tresca (sigma1 - sigma3)/2 and von Mises stresses of components (n, 6) [Pa]."""
+    sxx, syy, szz, sxy, sxz, syz = s.T
+    T = np.stack([np.stack([sxx, sxy, sxz], -1), np.stack([sxy, syy, syz], -1),
+                  np.stack([sxz, syz, szz], -1)], -2)
+    ev = np.linalg.eigvalsh(T)
+    tresca = 0.5 * (ev[:, -1] - ev[:, 0])
+    vm = np.sqrt(0.5 * ((sxx - syy) ** 2 + (syy - szz) ** 2 + (szz - sxx) ** 2)
+                 + 3.0 * (sxy**2 + sxz**2 + syz**2))
+    return tresca, vm
+
+
+def parabola_vertex(z, f, i: int | None = None, half: int = 2):
+    """Vertex (z*, f*) of the least-squares parabola through ``2 half + 1`` points around
+    the maximum of f (or index i); falls back to the sample at the boundary.
+
+    Examples
+    --------
+    >>> z = np.linspace(0, 1, 11); f = 1 - (z - 0.43) ** 2
+    >>> [round(float(v), 6) for v in parabola_vertex(z, f)]
+    [0.43, 1.0]
+    """
+    z = np.asarray(z, dtype=float)
+    f = np.asarray(f, dtype=float)
+    i = int(np.argmax(f)) if i is None else i
+    lo, hi = max(0, i - half), min(len(z), i + half + 1)
+    if hi - lo < 3:
+        return float(z[i]), float(f[i])
+    c2, c1, c0 = np.polyfit(z[lo:hi], f[lo:hi], 2)
+    if c2 >= 0:
+        return float(z[i]), float(f[i])
+    zv = -c1 / (2 * c2)
+    if not (z[lo] <= zv <= z[hi - 1]):
+        return float(z[i]), float(f[i])
+    return float(zv), float(np.polyval([c2, c1, c0], zv))
+
+
+def pressure_moments(lam, integrals) -> dict:
+    """Load, semi-axes (a_x, a_y) and p_max from the tent pressures (quarter model).
+
+    ``a_x = (5 sum lam Mxx / sum lam m)^(1/2)`` — exact for the Hertz pressure
+    ``p0 (1 - x^2/a_x^2 - y^2/a_y^2)^(1/2)``, whose second moment is ``F a_x^2 / 5``.
+    """
+    lam = np.asarray(lam)
+    F = float(lam @ integrals["m"])
+    ax = float(np.sqrt(5.0 * (lam @ integrals["Mxx"]) / F))
+    ay = float(np.sqrt(5.0 * (lam @ integrals["Myy"]) / F))
+    return {"load_quarter": F, "ax": ax, "ay": ay, "p_max": 1.5 * 4.0 * F / (np.pi * ax * ay)}

@@ -1,0 +1,369 @@
+r"""Elastic bodies, the pressure grid, the compliance matrix and the NNLS contact solve.
+
+Formulation (FE-NOTES; Kalker's variational principle in a discrete form):
+
+* the contact pressure is ``p(x, y) = sum_k lambda_k phi_k(x, y)`` with bilinear tents
+  ``phi_k`` on a structured grid over the expected quarter ellipse, independent of
+  the FE mesh; ``lambda >= 0`` is ``p >= 0``;
+* each body i (P2 tetrahedra, linear elasticity, symmetry planes x = 0 and y = 0,
+  its far plane held in z) gets the load matrix
+  ``F_i[:, k] = s_i int phi_k |n_z| v_z dA`` over its candidate contact facets
+  (s_i = +1 for the ball, pushed up, -1 for the lower body, pushed down); the
+  stiffness is factorised once and ``X_i = K_i^{-1} F_i`` is one multi-RHS solve;
+* compliance ``C = sum_i F_i^T X_i`` (small, symmetric positive definite);
+* weighted gap ``G_k = G0_k + (C lambda)_k - Delta m_k`` with ``G0_k = int phi_k g0 dA``
+  from the analytic surfaces and ``m_k = int phi_k dA``; Delta is the rigid approach
+  of the bodies' far planes;
+* for fixed Delta, ``min 1/2 l^T C l + (G0 - Delta m)^T l, l >= 0`` is the NNLS problem
+  ``min |L^T l + L^{-1}(G0 - Delta m)|`` with ``C = L L^T``; an outer root-find on
+  Delta matches ``m^T lambda`` to the (quarter) load.
+
+Everything heavy (scikit-fem) is imported inside the functions.
+"""
+from __future__ import annotations
+
+import logging
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+
+__all__ = ["PressureGrid", "Body", "BodyState", "assemble_body", "ContactSolution",
+           "solve_contact", "compliance"]
+
+log = logging.getLogger(__name__)
+
+
+# --------------------------------------------------------------------------- pressure grid
+@dataclass(frozen=True)
+class PressureGrid:
+    """Structured grid of bilinear tents on ``[0, Lx] x [0, Ly]`` (quarter model).
+
+    Attributes
+    ----------
+    Lx, Ly : float
+        Extent [m].
+    nx, ny : int
+        Number of cells along x and y.
+
+    Examples
+    --------
+    >>> g = PressureGrid(1.0, 2.0, 4, 8)
+    >>> g.n_tents, round(float(g.integrals(lambda x, y: 0 * x)["m"].sum()), 12)
+    (45, 2.0)
+    """
+
+    Lx: float
+    Ly: float
+    nx: int
+    ny: int
+
+    @property
+    def n_tents(self) -> int:
+        """Number of tents (grid nodes)."""
+        return (self.nx + 1) * (self.ny + 1)
+
+    @property
+    def dx(self) -> float:
+        """Cell size along x [m]."""
+        return self.Lx / self.nx
+
+    @property
+    def dy(self) -> float:
+        """Cell size along y [m]."""
+        return self.Ly / self.ny
+
+    def nodes(self):
+        """Tent centres (x, y), each (n_tents,), index k = i * (ny + 1) + j [m]."""
+        X, Y = np.meshgrid(np.linspace(0, self.Lx, self.nx + 1),
+                           np.linspace(0, self.Ly, self.ny + 1), indexing="ij")
+        return X.ravel(), Y.ravel()
+
+    def weights(self, x, y):
+        """Bilinear tent weights at points: (point index, tent index, weight), 4 per point.
+
+        Points outside the grid get zero weights.
+        """
+        x = np.asarray(x, dtype=float).ravel()
+        y = np.asarray(y, dtype=float).ravel()
+        u = x / self.dx
+        v = y / self.dy
+        inside = (u >= 0) & (u <= self.nx) & (v >= 0) & (v <= self.ny)
+        i = np.clip(np.floor(u).astype(np.int64), 0, self.nx - 1)
+        j = np.clip(np.floor(v).astype(np.int64), 0, self.ny - 1)
+        fu = np.clip(u - i, 0.0, 1.0)
+        fv = np.clip(v - j, 0.0, 1.0)
+        pid = np.arange(x.size)
+        rows, cols, vals = [], [], []
+        for di, dj, w in ((0, 0, (1 - fu) * (1 - fv)), (1, 0, fu * (1 - fv)),
+                          (0, 1, (1 - fu) * fv), (1, 1, fu * fv)):
+            rows.append(pid)
+            cols.append((i + di) * (self.ny + 1) + (j + dj))
+            vals.append(np.where(inside, w, 0.0))
+        return np.concatenate(rows), np.concatenate(cols), np.concatenate(vals)
+
+    def evaluate(self, lam, x, y):
+        """Pressure ``sum lambda_k phi_k`` at points (x, y) [Pa]."""
+        x = np.asarray(x, dtype=float)
+        r, c, w = self.weights(x, y)
+        out = np.zeros(x.size)
+        np.add.at(out, r, w * np.asarray(lam)[c])
+        return out.reshape(x.shape)
+
+    def integrals(self, gap, order: int = 6) -> dict:
+        """Tent integrals over the grid (Gauss, ``order`` points per direction per cell).
+
+        Returns ``m = int phi_k``, ``G0 = int phi_k g0``, ``Mxx = int phi_k x^2``,
+        ``Myy = int phi_k y^2`` (arrays of length n_tents) for ``gap(x, y)`` [m].
+        """
+        g, w = np.polynomial.legendre.leggauss(order)
+        g = 0.5 * (g + 1.0)
+        w = 0.5 * w
+        ci, cj = np.meshgrid(np.arange(self.nx), np.arange(self.ny), indexing="ij")
+        ci, cj = ci.ravel(), cj.ravel()
+        GU, GV = np.meshgrid(g, g, indexing="ij")
+        WW = np.outer(w, w).ravel() * self.dx * self.dy
+        fu, fv = GU.ravel(), GV.ravel()
+        x = (ci[:, None] + fu[None, :]) * self.dx
+        y = (cj[:, None] + fv[None, :]) * self.dy
+        g0 = gap(x, y)
+        out = {k: np.zeros(self.n_tents) for k in ("m", "G0", "Mxx", "Myy")}
+        for di, dj, phi in ((0, 0, (1 - fu) * (1 - fv)), (1, 0, fu * (1 - fv)),
+                            (0, 1, (1 - fu) * fv), (1, 1, fu * fv)):
+            k = (ci + di) * (self.ny + 1) + (cj + dj)
+            pw = phi * WW
+            np.add.at(out["m"], k, np.full(k.size, pw.sum()))
+            np.add.at(out["G0"], k, (g0 * pw).sum(axis=1))
+            np.add.at(out["Mxx"], k, (x * x * pw).sum(axis=1))
+            np.add.at(out["Myy"], k, (y * y * pw).sum(axis=1))
+        return out
+
+    def boundary_tents(self) -> np.ndarray:
+        """Indices of the tents on the outer edges x = Lx or y = Ly."""
+        i, j = np.meshgrid(np.arange(self.nx + 1), np.arange(self.ny + 1), indexing="ij")
+        mask = (i == self.nx) | (j == self.ny)
+        return np.flatnonzero(mask.ravel())
+
+
+# --------------------------------------------------------------------------- bodies
+@dataclass
+class Body:
+    """One elastic body of the quarter model.
+
+    Attributes
+    ----------
+    name : label ("ball", "race", "plane", "half-space").
+    points, tets : mesh (physical coordinates [m]) and connectivity.
+    E, nu : Young's modulus [Pa] and Poisson's ratio [-].
+    side : +1 for the upper body (ball, surface below it), -1 for the lower body.
+    z_fixed : the plane z = z_fixed is held in z (block bottom, ball equator) [m].
+    contact_nodes : boolean mask of the vertices on the candidate contact surface.
+    surface : object with ``height(x, y)`` for the body's surface (depth reference).
+    """
+
+    name: str
+    points: np.ndarray
+    tets: np.ndarray
+    E: float
+    nu: float
+    side: int
+    z_fixed: float
+    contact_nodes: np.ndarray
+    surface: object = None
+
+
+@dataclass
+class BodyState:
+    """A body after assembly and solve: basis, ``X = K^{-1} F`` (all DOFs), F."""
+
+    body: Body
+    basis: object
+    scalar_basis: object
+    F: object               # sparse (n_dofs, n_tents)
+    X: np.ndarray           # dense (n_dofs, n_tents)
+    n_dofs: int
+    solver: str
+    timings: dict = field(default_factory=dict)
+
+    @property
+    def mesh(self):
+        """The scikit-fem mesh."""
+        return self.basis.mesh
+
+
+def _skfem_mesh(points, tets):
+    from skfem import MeshTet
+
+    p = np.ascontiguousarray(points.T)
+    t = np.ascontiguousarray(tets.T)
+    # orient every tetrahedron positively
+    a, b, c, d = (p[:, t[i]] for i in range(4))
+    vol = np.einsum("ij,ij->j", np.cross(b - a, c - a, axis=0), d - a)
+    neg = vol < 0
+    if np.any(neg):
+        t = t.copy()
+        t[[1, 2]] = np.where(neg, t[[2, 1]], t[[1, 2]])
+    return MeshTet(p, t)
+
+
+def assemble_body(body: Body, grid: PressureGrid, solver: str | None = None) -> BodyState:
+    """Assemble the stiffness and load matrices of a body and solve for every tent.
+
+    Boundary conditions: ``u_x = 0`` on x = 0, ``u_y = 0`` on y = 0 (symmetry) and
+    ``u_z = 0`` on ``z = z_fixed``; no rigid-body mode remains.
+
+    Parameters
+    ----------
+    body : Body
+    grid : PressureGrid
+    solver : str, optional
+        Force a sparse solver (:data:`ballrace.fem.solvers.SOLVERS`).
+    """
+    import scipy.sparse as sp
+    from skfem import Basis, ElementTetP2, ElementVector, FacetBasis, asm
+    from skfem.models.elasticity import lame_parameters, linear_elasticity
+
+    from .solvers import factorize
+
+    tm = {}
+    t0 = time.perf_counter()
+    mesh = _skfem_mesh(body.points, body.tets)
+    ev = ElementVector(ElementTetP2())
+    basis = Basis(mesh, ev, intorder=2)        # exact for the P2 stiffness on affine tets
+    sbasis = basis.with_element(ElementTetP2())
+    K = asm(linear_elasticity(*lame_parameters(body.E, body.nu)), basis)
+    tm["assemble"] = time.perf_counter() - t0
+
+    # candidate contact facets: boundary facets with all vertices on the contact surface,
+    # restricted to the grid region (plus a margin)
+    t0 = time.perf_counter()
+    bf = mesh.boundary_facets()
+    fv = mesh.facets[:, bf]
+    cand = np.all(body.contact_nodes[fv], axis=0)
+    xy = mesh.p[:2, fv]                                   # (2, 3, nf)
+    cand &= (xy[0].min(axis=0) <= grid.Lx * 1.02) & (xy[1].min(axis=0) <= grid.Ly * 1.02)
+    facets = bf[cand]
+    if facets.size == 0:
+        raise RuntimeError(f"{body.name}: no candidate contact facets found")
+    fb = FacetBasis(mesh, ev, facets=facets, intorder=6)
+    xq = np.asarray(fb.global_coordinates())                    # (3, nf, nq)
+    wq = fb.dx * np.abs(fb.normals[2])                     # projected area weights
+    r, c, w = grid.weights(xq[0], xq[1])
+    nf, nq = wq.shape
+    rows, cols, vals = [], [], []
+    wflat = wq.ravel()
+    for j in range(len(fb.basis)):
+        vz = np.asarray(fb.basis[j][0])[2].ravel()             # (nf*nq,)
+        dofs = np.repeat(fb.element_dofs[j], nq)           # global dof per quadrature point
+        val = body.side * vz[r] * wflat[r] * w
+        keep = val != 0
+        rows.append(dofs[r][keep])
+        cols.append(c[keep])
+        vals.append(val[keep])
+    F = sp.coo_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
+                      shape=(basis.N, grid.n_tents)).tocsr()
+    tm["load_matrix"] = time.perf_counter() - t0
+
+    # Dirichlet DOFs
+    sym_x = mesh.facets_satisfying(lambda x: x[0] == 0.0, boundaries_only=True)
+    sym_y = mesh.facets_satisfying(lambda x: x[1] == 0.0, boundaries_only=True)
+    zf = body.z_fixed
+    tol = 1e-9 * float(np.ptp(mesh.p))
+    far = mesh.facets_satisfying(lambda x: np.abs(x[2] - zf) < tol, boundaries_only=True)
+    D = np.unique(np.concatenate([basis.get_dofs(sym_x).all(["u^1"]),
+                                  basis.get_dofs(sym_y).all(["u^2"]),
+                                  basis.get_dofs(far).all(["u^3"])]))
+    if sym_x.size == 0 or sym_y.size == 0 or far.size == 0:
+        raise RuntimeError(f"{body.name}: a symmetry or support plane was not found in the mesh")
+    free = np.setdiff1d(np.arange(basis.N), D)
+    t0 = time.perf_counter()
+    Kff = K[free][:, free].tocsc()
+    del K
+    solve, name = factorize(Kff, solver)
+    tm["factorize"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    Ff = F[free].toarray()
+    Xf = solve(Ff)
+    X = np.zeros((basis.N, grid.n_tents))
+    X[free] = Xf
+    tm["solve"] = time.perf_counter() - t0
+    log.info("%s: %d DOFs, %d contact facets, %d tents; %s", body.name, basis.N, facets.size,
+             grid.n_tents, ", ".join(f"{k} {v:.2f} s" for k, v in tm.items()))
+    return BodyState(body=body, basis=basis, scalar_basis=sbasis, F=F, X=X, n_dofs=basis.N,
+                     solver=name, timings=tm)
+
+
+def compliance(states) -> np.ndarray:
+    """Compliance matrix ``C = sum_i F_i^T X_i`` (symmetrised) [m^5/N]."""
+    C = sum(np.asarray(s.F.T @ s.X) for s in states)
+    return 0.5 * (C + C.T)
+
+
+# --------------------------------------------------------------------------- contact solve
+@dataclass
+class ContactSolution:
+    """Tent pressures ``lam`` [Pa], rigid approach ``Delta`` [m], load (quarter) [N]."""
+
+    lam: np.ndarray
+    Delta: float
+    load: float
+    gap: np.ndarray          # weighted gap G0 + C lam - Delta m [m^3]
+    complementarity: float   # |lam . gap| / (|lam| |gap|)
+    seconds: float
+
+
+def solve_contact(C, G0, m, *, load: float | None = None, approach: float | None = None,
+                  p_ref: float = 1.0, delta_ref: float = 1.0) -> ContactSolution:
+    """Frictionless unilateral contact for a given (quarter) load or rigid approach.
+
+    Parameters
+    ----------
+    C : (n, n) ndarray
+        Compliance matrix [m^5/N].
+    G0, m : (n,) ndarray
+        Weighted initial gaps [m^3] and tent areas [m^2].
+    load : float, optional
+        Load carried by the modelled sector [N].
+    approach : float, optional
+        Rigid approach of the far planes [m] (instead of ``load``).
+    p_ref, delta_ref : float
+        Pressure [Pa] and length [m] scales (Hertz p0 and delta) for conditioning.
+    """
+    from scipy.optimize import brentq, nnls
+    from scipy.linalg import cholesky, solve_triangular
+
+    if (load is None) == (approach is None):
+        raise ValueError("give exactly one of load [N] and approach [m]")
+    t0 = time.perf_counter()
+    A = float(np.mean(m))
+    Ch = C * p_ref / (delta_ref * A)
+    Gh = G0 / (delta_ref * A)
+    mh = m / A
+    L = cholesky(Ch, lower=True)
+
+    def lam_of(d):
+        q = Gh - d * mh
+        rhs = -solve_triangular(L, q, lower=True)
+        lam, _ = nnls(L.T, rhs, maxiter=50 * len(q))
+        return lam
+
+    def load_of(d):
+        return float(m @ lam_of(d)) * p_ref
+
+    if approach is not None:
+        dh = approach / delta_ref
+    else:
+        hi = 1.5
+        while load_of(hi) < load:
+            hi *= 2.0
+            if hi > 1e3:
+                raise RuntimeError("contact solve: load not reached (check the pressure grid)")
+        lo = 0.0
+        dh = brentq(lambda d: load_of(d) - load, lo, hi, xtol=1e-13, rtol=1e-13)
+    lam = lam_of(dh)
+    gap = (Gh + Ch @ lam - dh * mh) * delta_ref * A
+    lam = lam * p_ref
+    nl, ng = np.linalg.norm(lam), np.linalg.norm(gap)
+    comp = float(abs(lam @ gap) / (nl * ng)) if nl > 0 and ng > 0 else 0.0
+    return ContactSolution(lam=lam, Delta=dh * delta_ref, load=float(m @ lam), gap=gap,
+                           complementarity=comp, seconds=time.perf_counter() - t0)

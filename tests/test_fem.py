@@ -1,0 +1,198 @@
+"""Quick-level FE checks (default suite, well under a minute) and input validation.
+
+Standard-level accuracy is asserted in ``tests/test_fem_slow.py`` (``make test-fem``).
+"""
+from __future__ import annotations
+
+import importlib
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import ballrace
+from ballrace.analytic import hertz
+
+def _has_fem() -> bool:
+    return all(importlib.util.find_spec(m) is not None for m in ("skfem", "gmsh", "meshio"))
+
+
+needs_fem = pytest.mark.skipif(not _has_fem(), reason="needs the fem extra (skfem, gmsh, meshio)")
+
+
+@pytest.fixture(scope="session", autouse=True)
+def _cache(tmp_path_factory):
+    """A private mesh cache per test session (never the user's)."""
+    mp = pytest.MonkeyPatch()
+    mp.setenv("BALLRACE_CACHE", str(tmp_path_factory.mktemp("ballrace-cache")))
+    yield
+    mp.undo()
+
+
+@pytest.fixture(scope="module")
+def brg209():
+    # 209 radial bearing of Hamrock & Dowson (1981) Table 3.2; contact angle 0
+    return ballrace.BallBearing(12.7e-3, 9, 65e-3, 0.52, 0.52, free_contact_angle=0.0)
+
+
+def test_import_is_light():
+    code = ("import sys, ballrace.fem, ballrace.meshes; "
+            "bad = [m for m in ('gmsh', 'skfem', 'pyvista', 'meshio') if m in sys.modules]; "
+            "print(','.join(bad))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == ""
+
+
+# --------------------------------------------------------------------------- bad input
+def test_bad_inputs(brg209):
+    from ballrace import fem
+
+    with pytest.raises(ValueError, match="load"):
+        fem.ball_on_race(brg209, 0.0, level="quick")
+    with pytest.raises(ValueError, match="load"):
+        fem.ball_on_plane(12.7e-3, -5.0, level="quick")
+    with pytest.raises(ValueError, match="level"):
+        fem.ball_on_plane(12.7e-3, 100.0, level="coarse")
+    with pytest.raises(ValueError, match="mode"):
+        fem.ball_on_plane(12.7e-3, 100.0, level="quick", mode="3-body")
+    with pytest.raises(ValueError, match="race"):
+        fem.ball_on_race(brg209, 100.0, race="middle")
+    with pytest.raises(ValueError, match="ball_diameter"):       # D >= d_m
+        fem.ball_on_race(_Brg(70e-3, 65e-3, 0.52), 100.0)
+    with pytest.raises(ValueError, match="f_inner"):              # f <= 0.5
+        fem.ball_on_race(_Brg(12.7e-3, 65e-3, 0.5), 100.0)
+    with pytest.raises(TypeError):
+        fem.ball_on_race("209", 100.0)
+
+
+class _Brg:
+    """Duck-typed bearing that skips BallBearing's own checks (to reach fem's)."""
+
+    def __init__(self, D, dm, f):
+        self.ball_diameter, self.pitch_diameter, self.f_inner, self.f_outer = D, dm, f, f
+        self.material = ballrace.BEARING_STEEL
+        self.ball_material = self.ring_material = None
+
+    def curvature(self, race, beta):  # pragma: no cover - not reached
+        raise AssertionError
+
+
+def test_bearing_rejects_bad_geometry():
+    with pytest.raises(ValueError):
+        ballrace.BallBearing(70e-3, 3, 65e-3, 0.52, 0.52, free_contact_angle=0.0)
+    with pytest.raises(ValueError):
+        ballrace.BallBearing(12.7e-3, 9, 65e-3, 0.5, 0.52, free_contact_angle=0.0)
+
+
+# --------------------------------------------------------------------------- geometry
+def test_race_torus_matches_hertz_radii(brg209):
+    from ballrace.meshes import geometry as geo
+
+    for race in ("inner", "outer"):
+        for beta in (0.0, np.radians(25.0)):
+            t = geo.race_torus(12.7e-3, 65e-3, 0.52, race, beta)
+            cur = brg209.curvature(race, beta)
+            x = 5e-6
+            kx = 2 * t.height(x, 0.0) / x**2           # race curvature (convex -> negative)
+            ky = 2 * t.height(0.0, x) / x**2
+            Rx = 1 / (2 / 12.7e-3 - kx)
+            Ry = 1 / (2 / 12.7e-3 - ky)
+            assert Rx == pytest.approx(float(cur.Rx), rel=1e-5)
+            assert Ry == pytest.approx(float(cur.Ry), rel=1e-5)
+
+
+def test_halfspace_displacement_limits():
+    from ballrace.fem.halfspace import axial_displacement
+
+    c = hertz.elliptical_contact(1000.0, 0.004, 0.08, 219.78e9)
+    nu = 0.3
+    E = 0.5 * 219.78e9 * (1 - nu**2)      # E/(1-nu^2) = E'/2: w(0) is the whole approach
+    w0 = axial_displacement(0.0, float(c.semi_axis_x), float(c.semi_axis_y), float(c.p_max), E, nu)
+    assert w0 == pytest.approx(float(c.approach), rel=1e-6)
+
+
+def test_pressure_grid_moments():
+    from ballrace.fem.model import PressureGrid
+    from ballrace.fem.extract import pressure_moments
+
+    c = hertz.elliptical_contact(1000.0, 0.004, 0.02, 219.78e9)
+    ax, ay = float(c.semi_axis_x), float(c.semi_axis_y)
+    g = PressureGrid(1.3 * ax, 1.3 * ay, 60, 60)
+    xk, yk = g.nodes()
+    lam = c.pressure(xk, yk)
+    mom = pressure_moments(lam, g.integrals(lambda x, y: 0 * x))
+    assert mom["ax"] == pytest.approx(ax, rel=3e-3)
+    assert mom["ay"] == pytest.approx(ay, rel=3e-3)
+
+
+# --------------------------------------------------------------------------- meshes
+@needs_fem
+@pytest.mark.fem
+def test_mesh_determinism():
+    from ballrace.meshes import ball_mesh, block_mesh
+
+    a = 0.4e-3
+    h1 = block_mesh((3e-3, 3e-3, 3e-3), (1.3 * a, 1.3 * a, a), a / 4, use_cache=False).digest()
+    h2 = block_mesh((3e-3, 3e-3, 3e-3), (1.3 * a, 1.3 * a, a), a / 4, use_cache=False).digest()
+    assert h1 == h2
+    b1 = ball_mesh(6.35e-3, (a, 4 * a, a), a / 3, stretch=3.0, use_cache=False)
+    b2 = ball_mesh(6.35e-3, (a, 4 * a, a), a / 3, stretch=3.0, use_cache=False)
+    assert b1.digest() == b2.digest()
+    r = np.linalg.norm(b1.points - [0, 0, 6.35e-3], axis=1)
+    assert r.max() == pytest.approx(6.35e-3, rel=1e-5)
+    assert b1.points[:, 2].min() == pytest.approx(0.0, abs=1e-12)   # touches the origin
+    # a different parameter gives a different mesh
+    h3 = block_mesh((3e-3, 3e-3, 3e-3), (1.3 * a, 1.3 * a, a), a / 5, use_cache=False).digest()
+    assert h3 != h1
+
+
+@needs_fem
+@pytest.mark.fem
+def test_mesh_cache_roundtrip(tmp_path, monkeypatch):
+    from ballrace.meshes import block_mesh, cache_dir
+
+    monkeypatch.setenv("BALLRACE_CACHE", str(tmp_path))
+    m1 = block_mesh((2e-3, 2e-3, 2e-3), (5e-4, 5e-4, 5e-4), 2e-4)
+    files = list(cache_dir().glob("block-*.vtu"))
+    assert len(files) == 1
+    m2 = block_mesh((2e-3, 2e-3, 2e-3), (5e-4, 5e-4, 5e-4), 2e-4)
+    assert m2.seconds == 0.0 and m1.digest() == m2.digest()
+
+
+# --------------------------------------------------------------------------- quick FE runs
+def _check(r, names=("a", "b", "p_max", "approach", "tau0", "z0")):
+    rows = {row["quantity"]: row for row in r.comparison}
+    bad = [f"{q}: {100 * rows[q]['error']:+.2f} % (tol {100 * rows[q]['tol']:.1f} %)"
+           for q in names if not rows[q]["ok"]]
+    assert not bad, "; ".join(bad)
+
+
+@needs_fem
+@pytest.mark.fem
+def test_quick_ball_on_plane():
+    from ballrace import fem
+
+    r = fem.ball_on_plane(12.7e-3, 2000.0, ballrace.BEARING_STEEL, level="quick")
+    c = r.analytic
+    assert r.a == pytest.approx(float(c.a), rel=0.05)
+    assert r.b == pytest.approx(float(c.b), rel=0.05)
+    assert r.p_max == pytest.approx(float(c.p_max), rel=0.06)
+    _check(r)
+    assert r.info["complementarity"] < 1e-8
+    assert r.n_dofs > 0 and r.timings["total"] > 0
+
+
+@needs_fem
+@pytest.mark.fem
+def test_quick_ball_on_inner_race(brg209):
+    from ballrace import fem
+
+    r = fem.ball_on_race(brg209, 4450.0, race="inner", level="quick", mode="half-space")
+    c = r.analytic
+    assert float(c.a) / float(c.b) > 9                  # a long, thin ellipse along y
+    assert r.a == pytest.approx(float(c.a), rel=0.05)
+    assert r.b == pytest.approx(float(c.b), rel=0.05)
+    assert r.p_max == pytest.approx(float(c.p_max), rel=0.06)
+    assert r.approach == pytest.approx(r.comparison[3]["analytic"], rel=0.03)
+    _check(r)
