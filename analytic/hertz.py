@@ -217,24 +217,25 @@ def _ellip_parts(k: np.ndarray):
     return np.log((K - D1) / (p * D1)), K, E
 
 
-_D1_COEF = None
+@functools.cache
+def d1_series_coefficients(n_terms: int = 17) -> np.ndarray:
+    """Coefficients (highest power first, for ``np.polyval``) of (K(m) - E(m))/m.
+
+    K - E = (pi/2) sum_{n>=1} c_n 2n/(2n-1) m^n, c_n = [(2n)!/(4^n n!^2)]^2
+    (Abramowitz & Stegun 1964, eqs. 17.3.11–17.3.12); 17 terms are exact to rounding
+    for m < 0.05.  Shared by the stiffness derivatives in :mod:`ballrace.analytic.loaddist`.
+    """
+    coef = []
+    c = 1.0
+    for n in range(1, n_terms + 1):
+        c *= ((2 * n - 1) / (2 * n)) ** 2
+        coef.append(0.5 * np.pi * c * 2 * n / (2 * n - 1))      # coefficient of m^(n-1)
+    return np.array(coef[::-1])
 
 
 def _d1_series(m: np.ndarray) -> np.ndarray:
-    """(K(m) - E(m))/m as a power series, exact to rounding for m < 0.05.
-
-    K - E = (pi/2) sum_{n>=1} c_n 2n/(2n-1) m^n, c_n = [(2n)!/(4^n n!^2)]^2
-    (Abramowitz & Stegun 1964, eqs. 17.3.11–17.3.12).
-    """
-    global _D1_COEF
-    if _D1_COEF is None:
-        coef = []
-        c = 1.0
-        for n in range(1, 16):
-            c *= ((2 * n - 1) / (2 * n)) ** 2
-            coef.append(0.5 * np.pi * c * 2 * n / (2 * n - 1))
-        _D1_COEF = np.array(coef[::-1])
-    return np.polyval(_D1_COEF, m)
+    """(K(m) - E(m))/m by its power series (:func:`d1_series_coefficients`), m < 0.05."""
+    return np.polyval(d1_series_coefficients(), m)
 
 
 _TABLE_N = 4096                       # intervals of the ln k(ln alpha) table

@@ -88,20 +88,10 @@ class ConvergenceError(RuntimeError):
 
 
 # =========================================================================== stiffness
-_D1_COEF = None
-
-
 def _d1_and_derivative(m):
     """(K - E)/m and its m-derivative for small m by series (A&S 1964 eqs. 17.3.11-12)."""
-    global _D1_COEF
-    if _D1_COEF is None:
-        coef = []
-        c = 1.0
-        for n in range(1, 18):
-            c *= ((2 * n - 1) / (2 * n)) ** 2
-            coef.append(0.5 * np.pi * c * 2 * n / (2 * n - 1))     # coefficient of m^(n-1)
-        _D1_COEF = np.array(coef[::-1])
-    return np.polyval(_D1_COEF, m), np.polyval(np.polyder(_D1_COEF), m)
+    coef = hertz.d1_series_coefficients()
+    return np.polyval(coef, m), np.polyval(np.polyder(coef), m)
 
 
 def _race_stiffness(Rx, Ry, Ep):
