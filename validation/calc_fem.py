@@ -1,0 +1,109 @@
+"""Finite-element calculations (:mod:`ballrace.fem`), run through dask by the runner.
+
+The runner injects ``level`` (from ``--fem``), ``render_dir`` (the report's render folder,
+or None) and ``case_id``.  A render that fails is logged and left out; it never fails
+the case.
+"""
+from __future__ import annotations
+
+import logging
+import math
+import os
+import threading
+
+from .calc_bearing import BEARING_INPUTS, make_bearing
+from .registry import Param, calculation
+
+log = logging.getLogger(__name__)
+
+#: gmsh (meshing) is not thread-safe: concurrent meshing in two threads of one process
+#: segfaults.  FE calculations in one process therefore run one at a time; separate
+#: dask worker processes still run in parallel.
+FE_LOCK = threading.Lock()
+
+_FEM = "ballrace.fem"
+_CONTEXT = {"level": Param("str", "quick", choices=("quick", "standard", "fine")),
+            "render_dir": Param("str", None), "case_id": Param("str", "fe")}
+_OPTIONS = {"mode": Param("str", "half-space", choices=("half-space", "two-body")),
+            "gap": Param("str", "hertz", choices=("hertz", "exact"))}
+_OUT = {"a": "[length]", "b": "[length]", "p_max": "[pressure]", "tau0": "[pressure]",
+        "z0": "[length]", "tau_x0z0": "[pressure]", "max_shear": "[pressure]",
+        "max_shear_depth": "[length]", "von_mises": "[pressure]",
+        "von_mises_depth": "[length]", "approach": "[length]", "approach_vs_hertz": "",
+        "n_dofs": "", "wall_time": "[time]",
+        **{f"{q}_vs_hertz": "" for q in ("a", "b", "p_max", "tau0", "max_shear")}}
+
+
+def _outputs(r, render_dir, case_id) -> dict:
+    out = {k: float(getattr(r, k)) for k in ("a", "b", "p_max", "tau0", "z0", "tau_x0z0",
+                                              "max_shear", "max_shear_depth", "von_mises",
+                                              "von_mises_depth", "approach")}
+    rows = {row["quantity"]: row for row in r.comparison}
+    out["approach_vs_hertz"] = float(rows["approach"]["error"]) if "approach" in rows else math.nan
+    for q in ("a", "b", "p_max", "tau0", "max_shear"):
+        out[f"{q}_vs_hertz"] = float(rows[q]["error"]) if q in rows else math.nan
+    out["n_dofs"] = float(r.n_dofs)
+    out["wall_time"] = float(r.timings.get("total", math.nan))
+    arts = []
+    if render_dir:
+        from ballrace import fem
+
+        for field in ("von_mises", "tau_xz"):
+            path = os.path.join(render_dir, f"{case_id}-{field}.png")
+            try:
+                fem.render(r, field=field, path=path)
+                arts.append((field, path))
+            except Exception as exc:  # noqa: BLE001 - a render must not fail the check
+                log.warning("render of %s (%s) failed: %s: %s", case_id, field,
+                            type(exc).__name__, exc)
+                break
+    out["_artifacts"] = arts
+    return out
+
+
+@calculation("fem.ball_on_plane", requires=(_FEM + ":ball_on_plane",), fem=True,
+             inputs={"ball_diameter": Param("[length]"), "load": Param("[force]"),
+                     "E": Param("[pressure]", 200e9), "nu": Param("", 0.3), **_OPTIONS,
+                     **_CONTEXT},
+             outputs=_OUT)
+def ball_on_plane(ball_diameter, load, E, nu, mode, gap, level, render_dir, case_id):
+    """FE ball on a flat of the same material."""
+    from ballrace import Material, fem
+
+    with FE_LOCK:
+        r = fem.ball_on_plane(ball_diameter, load, Material(E=E, nu=nu), level=level,
+                              mode=mode, gap=gap)
+        return _outputs(r, render_dir, case_id)   # renders (VTK) under the lock too
+
+
+@calculation("fem.ball_on_ball", requires=(_FEM + ":ball_on_ball",), fem=True,
+             inputs={"ball_diameter": Param("[length]"), "load": Param("[force]"),
+                     "E": Param("[pressure]", 200e9), "nu": Param("", 0.3), **_OPTIONS,
+                     **_CONTEXT},
+             outputs=_OUT)
+def ball_on_ball(ball_diameter, load, E, nu, mode, gap, level, render_dir, case_id):
+    """FE of two equal balls pressed together (SSNV104, MOOSE hertz_spherical)."""
+    from ballrace import Material, fem
+
+    with FE_LOCK:
+        r = fem.ball_on_ball(ball_diameter, load, Material(E=E, nu=nu), level=level,
+                             mode=mode, gap=gap)
+        return _outputs(r, render_dir, case_id)   # renders (VTK) under the lock too
+
+
+@calculation("fem.ball_on_race", requires=(_FEM + ":ball_on_race",), fem=True,
+             inputs={**{k: v for k, v in BEARING_INPUTS.items() if k not in ("E", "nu")},
+                     "E": Param("[pressure]", 200e9), "nu": Param("", 0.3),
+                     "load": Param("[force]"),
+                     "race": Param("str", "inner", choices=("inner", "outer")),
+                     "contact_angle": Param("[angle]", 0.0), **_OPTIONS, **_CONTEXT},
+             outputs=_OUT)
+def ball_on_race(load, race, contact_angle, mode, gap, level, render_dir, case_id, **kw):
+    """FE ball on an inner or outer race groove."""
+    from ballrace import fem
+
+    brg = make_bearing(**kw)
+    with FE_LOCK:
+        r = fem.ball_on_race(brg, load, race=race, contact_angle=contact_angle, level=level,
+                             mode=mode, gap=gap)
+        return _outputs(r, render_dir, case_id)   # renders (VTK) under the lock too

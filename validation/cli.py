@@ -1,0 +1,244 @@
+"""``ballrace validate`` and ``ballrace teach``: registered on the root typer app.
+
+The library logs; this module prints (rich).  Heavy imports happen inside the commands.
+"""
+from __future__ import annotations
+
+import logging
+import sys
+from pathlib import Path
+from typing import Annotated, Optional
+
+import typer
+
+__all__ = ["register"]
+
+log = logging.getLogger(__name__)
+
+_STYLE = {"pass": "green", "fail": "bold red", "error": "bold magenta", "missing": "bold yellow",
+          "skipped": "dim"}
+_MARK = {"pass": "PASS", "fail": "FAIL", "error": "ERROR", "missing": "MISSING",
+         "skipped": "SKIP"}
+
+teach_app = typer.Typer(add_completion=False, no_args_is_help=True,
+                        help="Teaching figures drawn from the library.")
+
+
+def validate(
+    cases: Annotated[Optional[str], typer.Option(
+        "--cases", help="Glob of case files (default: all packaged cases); a relative pattern "
+                        "such as 'hertz*' is also tried in the packaged case folder.")] = None,
+    fem: Annotated[str, typer.Option(
+        "--fem", help="FE level: quick | standard | none (none reports FE cases as skipped "
+                      "by request).")] = "quick",
+    scheduler: Annotated[Optional[str], typer.Option(
+        "--scheduler", help="dask scheduler address (tcp://host:8786); default: a LocalCluster "
+                            "for FE and sweep cases.")] = None,
+    workers: Annotated[Optional[int], typer.Option(
+        "--workers", help="LocalCluster worker processes (default: one in-process worker, 2 threads).")] = None,
+    serial: Annotated[bool, typer.Option(
+        "--serial", help="Run everything in this process, without dask.")] = False,
+    report: Annotated[Optional[Path], typer.Option(
+        "--report", help="Write index.html and results.json to this folder.")] = None,
+    baseline: Annotated[Optional[Path], typer.Option(
+        "--baseline", help="Compare with this stored results/baseline file.")] = None,
+    update_baseline: Annotated[bool, typer.Option(
+        "--update-baseline", help="Write the --baseline file from this run.")] = False,
+    no_plots: Annotated[bool, typer.Option(
+        "--no-plots", help="Report without plots (faster).")] = False,
+):
+    """Run the reference cases, print a summary, optionally write the report and baseline.
+
+    Exits 1 when any case fails, errors or is missing (or a baseline value moved), 2 on
+    bad options or case files.
+    """
+    from rich.console import Console
+
+    from .runner import FEM_LEVELS
+    from .schema import CaseFileError, load_cases
+
+    console = Console()
+    if logging.getLogger().level > logging.DEBUG:   # dask's INFO chatter drowns the progress
+        _quiet_dask()
+    if fem not in FEM_LEVELS:
+        _usage(console, f"--fem must be one of {', '.join(FEM_LEVELS)}; got {fem!r}")
+    if update_baseline and baseline is None:
+        _usage(console, "--update-baseline needs --baseline FILE (where to write it)")
+    try:
+        selected = load_cases(cases)
+    except CaseFileError as exc:
+        _usage(console, str(exc))
+    code = run_and_report(selected, console=console, fem=fem, scheduler=scheduler,
+                          workers=workers, serial=serial, report=report, baseline=baseline,
+                          update_baseline=update_baseline, plots=not no_plots)
+    raise typer.Exit(code=code)
+
+
+def _quiet_dask() -> None:
+    try:
+        import distributed  # noqa: F401 - configures its loggers on import
+    except ImportError:
+        return
+    for name in list(logging.root.manager.loggerDict):
+        if name.split(".")[0] in ("distributed", "dask"):
+            logging.getLogger(name).setLevel(logging.WARNING)
+
+
+def run_and_report(selected, *, console, fem="quick", scheduler=None, workers=None,
+                   serial=False, report=None, baseline=None, update_baseline=False,
+                   plots=True, client=None) -> int:
+    """Run ``selected`` cases with a progress display; returns the exit code."""
+    from rich.progress import (BarColumn, MofNCompleteColumn, Progress, SpinnerColumn,
+                               TextColumn, TimeElapsedColumn)
+
+    from . import baseline as bl
+    from .runner import run_cases
+
+    artifact_dir = None
+    if report is not None:
+        report.mkdir(parents=True, exist_ok=True)
+        artifact_dir = report / "renders"
+        artifact_dir.mkdir(exist_ok=True)
+    console.print(f"[bold]ballrace validate[/]: {len(selected)} case(s), --fem {fem}"
+                  + (f", scheduler {scheduler}" if scheduler else "") + ("" if not serial
+                                                                         else ", serial"))
+    with Progress(SpinnerColumn(), TextColumn("[progress.description]{task.description}"),
+                  BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
+                  console=console, transient=True) as progress:
+        task = progress.add_task("running", total=len(selected))
+
+        def on_start(case):
+            progress.update(task, description=f"running {case.id}")
+
+        def on_result(r):
+            style = _STYLE[r.status]
+            msg = f" [dim]{r.message}[/]" if r.message else ""
+            progress.console.print(f"[{style}]{_MARK[r.status]:>7}[/] {r.id:<40} "
+                                   f"{r.duration:8.3f} s{msg}", highlight=False)
+            progress.advance(task)
+
+        run = run_cases(selected, fem=fem, serial=serial, client=client, scheduler=scheduler,
+                        workers=workers, artifact_dir=artifact_dir, on_start=on_start,
+                        on_result=on_result)
+    _summary(console, run)
+
+    drift = None
+    if baseline is not None and update_baseline:
+        path = bl.write_baseline(run, baseline)
+        console.print(f"baseline written: {path} ({sum(len(v) for v in bl.snapshot(run).values())}"
+                      " values)")
+    elif baseline is not None:
+        try:
+            drift = bl.compare_baseline(run, baseline)
+        except (OSError, ValueError) as exc:
+            _usage(console, f"--baseline {baseline}: {exc}")
+        _baseline_summary(console, drift, baseline)
+
+    if report is not None:
+        from ballrace.reports import html
+
+        path = html.write_report(run, report, baseline=drift, plots=plots)
+        console.print(f"report: {path}  (results: {report / 'results.json'})")
+    code = 0 if run.ok and (drift is None or drift.ok) else 1
+    if code:
+        console.print("[bold red]validation FAILED[/] (see the rows above)")
+    else:
+        console.print("[bold green]validation passed[/]")
+    return code
+
+
+def _summary(console, run) -> None:
+    from rich.table import Table
+
+    from .runner import STATUSES
+
+    t = Table(title=f"Validation summary (--fem {run.fem}, {run.duration:.1f} s, {run.scheduler})")
+    t.add_column("area")
+    for s in STATUSES:
+        t.add_column(s, justify="right", style=_STYLE[s] if s != "pass" else "green")
+    t.add_column("time [s]", justify="right")
+    total = {s: 0 for s in STATUSES}
+    for area, rows in run.by_area().items():
+        counts = {s: sum(r.status == s for r in rows) for s in STATUSES}
+        for s in STATUSES:
+            total[s] += counts[s]
+        t.add_row(area, *[str(counts[s]) if counts[s] else "" for s in STATUSES],
+                  f"{sum(r.duration for r in rows):.2f}")
+    t.add_row("[bold]total[/]", *[f"[bold]{total[s]}[/]" for s in STATUSES],
+              f"{run.duration:.2f}", end_section=True)
+    console.print(t)
+    bad = [r for r in run.results if not r.ok]
+    if bad:
+        bt = Table(title="Not passing")
+        bt.add_column("status")
+        bt.add_column("case")
+        bt.add_column("why", overflow="fold")
+        for r in bad:
+            bt.add_row(f"[{_STYLE[r.status]}]{_MARK[r.status]}[/]", r.id, r.message)
+        console.print(bt)
+
+
+def _baseline_summary(console, drift, path) -> None:
+    from rich.table import Table
+
+    if drift.ok:
+        console.print(f"baseline {path}: {drift.n_checked} value(s) unchanged within tolerance")
+        return
+    t = Table(title=f"Moved against baseline {path}")
+    for c in ("case", "output", "baseline", "now", "change", "tolerance"):
+        t.add_column(c)
+    for d in drift.moved:
+        t.add_row(d.case, d.output, f"{d.old:.6g}" if d.old is not None else "-",
+                  f"{d.new:.6g}" if d.new is not None else "-", d.change, d.tolerance)
+    console.print(t)
+
+
+def _usage(console, msg: str) -> None:
+    console.print(f"[bold red]error:[/] {msg}", highlight=False)
+    raise typer.Exit(code=2)
+
+
+@teach_app.command("subsurface")
+def teach_subsurface(
+    load: Annotated[str, typer.Option(help='Normal load ("1000 N").')] = "2000 N",
+    rx1: Annotated[str, typer.Option(help="Body 1 radius in x (rolling).")] = "6.35 mm",
+    ry1: Annotated[str, typer.Option(help="Body 1 radius in y.")] = "6.35 mm",
+    rx2: Annotated[str, typer.Option(help='Body 2 radius in x ("inf" flat, < 0 concave).')] = "inf",
+    ry2: Annotated[str, typer.Option(help="Body 2 radius in y.")] = "inf",
+    e1: Annotated[str, typer.Option("--E1", help="Young's modulus (both bodies).")] = "200 GPa",
+    nu1: Annotated[float, typer.Option("--nu1", help="Poisson's ratio (both bodies).")] = 0.3,
+    out: Annotated[Path, typer.Option("--out", help="PNG to write.")] = Path("subsurface.png"),
+):
+    """Draw max shear, von Mises and orthogonal shear under a contact, depths marked."""
+    from rich.console import Console
+
+    from ballrace.units import parse_quantity
+
+    from . import teach
+
+    console = Console()
+    try:
+        q = parse_quantity(load, "[force]", "load")
+        radii = [parse_quantity(v, "[length]", n, allow_inf=True)
+                 for n, v in (("rx1", rx1), ("ry1", ry1), ("rx2", rx2), ("ry2", ry2))]
+        e = parse_quantity(e1, "[pressure]", "E1")
+    except ValueError as exc:
+        _usage(console, str(exc))
+    try:
+        info = teach.subsurface_figure(q, *radii, E=e, nu=nu1, path=out)
+    except ImportError as exc:
+        console.print(f"[bold red]error:[/] the subsurface module is not available ({exc})")
+        raise typer.Exit(code=1)
+    except ValueError as exc:
+        _usage(console, str(exc))
+    from rich.markup import escape
+
+    console.print(f"wrote {escape(str(out))}")
+    for k, v in info.items():
+        console.print(escape(f"  {k}: {v}"))
+
+
+def register(app: typer.Typer) -> None:
+    """Add ``validate`` and the ``teach`` group to the root app."""
+    app.command("validate")(validate)
+    app.add_typer(teach_app, name="teach")

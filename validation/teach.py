@@ -1,0 +1,100 @@
+"""``ballrace teach subsurface``: the stress fields under a contact, depths marked.
+
+Draws, in the plane y = 0 through the contact centre, the maximum shear stress
+(Tresca), the von Mises stress and the orthogonal shear stress tau_xz (Lundberg &
+Palmgren's tau_yz), all over p0, with the depths of the maxima from
+:func:`~ballrace.analytic.subsurface.max_shear`, :func:`~.von_mises` and
+:func:`~.orthogonal_shear` marked, plus their depth profiles on the axis.
+"""
+from __future__ import annotations
+
+import logging
+import math
+from pathlib import Path
+
+__all__ = ["subsurface_figure"]
+
+log = logging.getLogger(__name__)
+
+
+def subsurface_figure(load, rx1, ry1, rx2=math.inf, ry2=math.inf, *, E=200e9, nu=0.3,
+                      path="subsurface.png", n: int = 121) -> dict:
+    """Write the teaching figure to ``path``; returns the marked numbers (SI and over p0 / b).
+
+    Parameters
+    ----------
+    load : float
+        Normal load [N].
+    rx1, ry1, rx2, ry2 : float
+        Principal radii [m] (concave < 0, ``inf`` flat).
+    E, nu : float
+        Young's modulus [Pa] and Poisson's ratio [-] of both bodies.
+    path : path
+        PNG to write.
+    """
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+    import numpy as np
+
+    from ballrace import Material
+    from ballrace.analytic import hertz, subsurface
+
+    from .figures import subsurface_fields
+
+    c = hertz.point_contact(load, rx1, ry1, rx2, ry2, Material(E=E, nu=nu))
+    x, z, f = subsurface_fields(c, nu=nu, n=n)
+    b = float(c.semi_axis_x)
+    p0 = float(c.p_max)
+    mx = subsurface.max_shear(c, nu=nu)
+    vm = subsurface.von_mises(c, nu=nu)
+    o = subsurface.orthogonal_shear(c)
+    marks = {"max shear": (0.0, float(mx.depth) / b, float(mx.tau_max) / p0),
+             "von Mises": (0.0, float(vm.depth) / b, float(vm.sigma_vm) / p0),
+             "orthogonal shear": (float(o.x0) / b, float(o.z0) / b, float(o.tau0) / p0)}
+    fig, axes = plt.subplots(2, 2, figsize=(11, 8))
+    panels = (("tau_max", "max shear (Tresca) / p0", "viridis", "max shear"),
+              ("von_mises", "von Mises / p0", "viridis", "von Mises"),
+              ("tau_xz", "orthogonal shear tau_xz / p0", "RdBu_r", "orthogonal shear"))
+    try:
+        for ax, (key, title, cmap, mark) in zip(axes.ravel(), panels):
+            cs = ax.contourf(x, z, f[key], levels=24, cmap=cmap)
+            ax.contour(x, z, f[key], levels=12, colors="k", linewidths=0.3)
+            fig.colorbar(cs, ax=ax, shrink=0.85)
+            mx0, mz0, mv = marks[mark]
+            xs = (mx0, -mx0) if mx0 else (0.0,)
+            for xm in xs:
+                ax.plot(xm, mz0, "w+", ms=12, mew=2)
+            ax.axhline(mz0, color="w", ls="--", lw=0.8)
+            ax.annotate(f"{mv:.3f} p0 at z = {mz0:.3f} b", (xs[0], mz0), color="w",
+                        xytext=(6, -12), textcoords="offset points", fontsize=8)
+            ax.set_title(title, fontsize=10)
+            ax.set_xlabel("x / b (rolling direction)")
+            ax.set_ylabel("depth z / b")
+            ax.invert_yaxis()
+            ax.set_aspect("equal")
+        ax = axes[1, 1]
+        mid = len(x) // 2
+        ax.plot(f["tau_max"][:, mid], z, label="max shear on the axis")
+        ax.plot(f["von_mises"][:, mid], z, label="von Mises on the axis")
+        ax.plot(np.max(np.abs(f["tau_xz"]), axis=1), z, label="max |tau_xz| over x")
+        for name, (_, mz0, _) in marks.items():
+            ax.axhline(mz0, ls="--", lw=0.7, color="k")
+            ax.annotate(name, (ax.get_xlim()[1], mz0), ha="right", va="bottom", fontsize=7)
+        ax.invert_yaxis()
+        ax.set_xlabel("stress / p0")
+        ax.set_ylabel("depth z / b")
+        ax.legend(fontsize=8)
+        ax.grid(alpha=0.3)
+        fig.suptitle(f"Subsurface stresses: Q = {load:g} N, a = {float(c.a) * 1e3:.3f} mm, "
+                     f"b = {float(c.b) * 1e3:.3f} mm, p0 = {p0 / 1e9:.3f} GPa, nu = {nu}")
+        fig.tight_layout()
+        Path(path).parent.mkdir(parents=True, exist_ok=True)
+        fig.savefig(path, dpi=110)
+    finally:
+        plt.close(fig)
+    log.info("wrote %s", path)
+    return {"p_max [Pa]": p0, "b (semi-axis along x) [m]": b,
+            **{f"{k}: value / p0, depth / b": (round(v, 4), round(d, 4))
+               for k, (_, d, v) in marks.items()}}
