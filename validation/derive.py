@@ -134,14 +134,19 @@ _CASES = {
 }
 
 
-def main() -> None:  # pragma: no cover - prints the tables quoted by the case files
+def main() -> None:  # pragma: no cover - writes the tables quoted by the case files
+    import sys
+
+    def out(line: str) -> None:
+        sys.stdout.write(line + "\n")
+
     for name, args in _CASES.items():
         d = hertz_exact(*args)
-        print(name, " ".join(f"{k}={v:.10g}" for k, v in d.items()))
+        out(name + " " + " ".join(f"{k}={v:.10g}" for k, v in d.items()))
     for nu in (0.25, 0.3):
-        print("circle axis nu", nu, circle_axis_max_shear(nu))
-    print("line", line_max_shear())
-    print("LP circle", lundberg_palmgren_circle())
+        out(f"circle axis nu {nu} {circle_axis_max_shear(nu)}")
+    out(f"line {line_max_shear()}")
+    out(f"LP circle {lundberg_palmgren_circle()}")
 
 
 if __name__ == "__main__":  # pragma: no cover
