@@ -266,7 +266,7 @@ class _Model:
                                       f"bearings (n_rows=1); got n_rows={b.n_rows}")
         D = b.ball_diameter
         A = b.curvature_center_distance
-        m = float(np.pi * D**3 * b.ball_material.density / 6.0)
+        m = b.ball_mass
         return _Model(D=D, dm=b.pitch_diameter, Z=b.n_balls, A=A,
                       sbf=float(np.sin(b.free_contact_angle)),
                       cbf=float(np.cos(b.free_contact_angle)),
