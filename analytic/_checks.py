@@ -40,7 +40,7 @@ def as_array(value, name: str, *, allow_inf: bool = False) -> np.ndarray:
         raise TypeError(f"{name} must be a real number or an array of real numbers; "
                         f"got {type(value).__name__} {value!r}") from None
     bad = np.isnan(arr) if allow_inf else ~np.isfinite(arr)
-    if np.any(bad):
+    if bad.any():
         kind = "not NaN" if allow_inf else "finite"
         raise ValueError(f"{name} must be {kind}; got {_first(arr, bad)!r}{_where(bad)}")
     return arr
@@ -55,7 +55,7 @@ def check_positive(value, name: str, unit: str = "", *, allow_inf: bool = False)
     """Array of floats > 0, else ``ValueError`` naming ``name`` and the allowed range."""
     arr = as_array(value, name, allow_inf=allow_inf)
     bad = ~(arr > 0)
-    if np.any(bad):
+    if bad.any():
         u = f" [{unit}]" if unit else ""
         raise ValueError(f"{name} must be > 0{u}; got {_first(arr, bad)!r}{_where(bad)}")
     return arr
@@ -65,7 +65,7 @@ def check_nonnegative(value, name: str, unit: str = "") -> np.ndarray:
     """Array of finite floats >= 0, else ``ValueError`` naming ``name``."""
     arr = as_array(value, name)
     bad = arr < 0
-    if np.any(bad):
+    if bad.any():
         u = f" [{unit}]" if unit else ""
         raise ValueError(f"{name} must be >= 0{u}; got {_first(arr, bad)!r}{_where(bad)}")
     return arr
@@ -81,7 +81,7 @@ def check_range(value, name: str, low: float | None = None, high: float | None =
         bad |= (arr < low) if low_inclusive else (arr <= low)
     if high is not None:
         bad |= (arr > high) if high_inclusive else (arr >= high)
-    if np.any(bad):
+    if bad.any():
         lo = "(-inf" if low is None else ("[" if low_inclusive else "(") + f"{low:g}"
         hi = "inf)" if high is None else f"{high:g}" + ("]" if high_inclusive else ")")
         u = f" [{unit}]" if unit else ""

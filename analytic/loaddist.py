@@ -481,7 +481,7 @@ def _newton(model, geo, F, u0, fixed, arm, rtol, max_iter):
                 unew[w] = ua[w] + t[w, None] * du[w]
                 sw = _State(model, geo, unew[w], arm)
                 Rw, ew = residual(sw, a[w])
-                snew.Kn[w], snew.J[w], snew.delta[w] = sw.Kn, sw.J, sw.delta
+                snew.Kn[w], snew.J[w], snew.delta[w], snew.Q[w] = sw.Kn, sw.J, sw.delta, sw.Q
                 Rn[w], en[w] = Rw, ew
                 worse[w] = (Rw * Rw).sum(1) > m0[w]
         u[a] = unew
@@ -503,6 +503,104 @@ def _newton(model, geo, F, u0, fixed, arm, rtol, max_iter):
     if it:
         log.debug("load distribution: %d cases converged in at most %d Newton iterations", N, it)
     return u, iters
+
+
+def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
+    """`_newton` for a single load case, with scalar control flow.
+
+    The same iteration -- scaled Newton step with the Levenberg floor, the symmetric
+    frozen-stiffness fallback, the trust radius, the Armijo search on the frozen-stiffness
+    potential ("groove" arm) or on the residual norm ("contact" arm), the round-off floor --
+    without the vectorized driver's active-set indexing, which for one case costs more
+    than the physics.  ``tests/test_loaddist.py`` checks that both drivers agree.
+    Returns (u (1,5), iterations (1,), final _State).
+    """
+    sc = np.array([1.0, 1.0, 1.0, model.Ri, model.Ri])
+    sc2 = np.outer(sc, sc)
+    fx = fixed[0]
+    anyfixed = bool(fx.any())
+    n_free = max(int((~fx).sum()), 1)
+    F = np.where(fx, 0.0, F[0])
+    Fs_ext = float(np.abs(F / sc).max())
+    step_max = 0.25 * model.A
+
+    def residual(st):
+        R = (st.F[0] - F) / sc
+        if anyfixed:
+            R[fx] = 0.0
+        qmax = float(st.Q.max())
+        return R, float(np.abs(R).max()) / max(Fs_ext, qmax, 1e-300), qmax
+
+    def scaled(J, mu):
+        Js = J / sc2
+        if anyfixed:
+            Js[fx, :] = 0.0
+            Js[:, fx] = 0.0
+        if mu is None:                                    # Levenberg floor (see _newton)
+            mu = max(1e-12 * abs(float(np.trace(Js))) / n_free,
+                     1e-6 * max(Fs_ext, qmax) / model.A)
+        Js.flat[::6] += np.where(fx, 1.0, mu)
+        return Js, mu
+
+    u = u0[0].copy()
+    st = _State(model, geo, u[None], arm)
+    R, err, qmax = residual(st)
+    it = 0
+    while err > rtol:
+        if it >= max_iter:
+            raise ConvergenceError(
+                f"load distribution did not converge after {it} iterations: relative "
+                f"equilibrium residual {err:.3e} (> rtol={rtol:g}); loads {F.tolist()}, "
+                f"displacements {u.tolist()}")
+        it += 1
+        Js, mu = scaled(st.J[0], None)
+        dS = -np.linalg.solve(Js, R)
+        if arm == "groove" and not float(R @ dS) < 0.0:
+            sb = _State(model, geo, u[None], arm, Kn=st.Kn)
+            Jb, _ = scaled(0.5 * (sb.J[0] + sb.J[0].T), mu)
+            dS = -np.linalg.solve(Jb, R)
+        size = float(np.abs(dS).max())
+        if size > step_max:
+            dS *= step_max / size
+        g = float(R @ dS)
+        du = dS / sc
+        t = 1.0
+        local = err < 1e-6
+        if arm == "groove":
+            if not local:
+                d = st.delta
+                phi0 = 0.4 * float((st.Kn * d * d * np.sqrt(d)).sum()) - float(F @ u)
+                for _ in range(60):
+                    ph = float(_potential(model, geo, (u + t * du)[None], st.Kn, F[None])[0])
+                    if ph <= phi0 + 1e-4 * t * g:
+                        break
+                    t *= 0.5
+            unew = u + t * du
+            snew = _State(model, geo, unew[None], arm)
+            Rn, en, qn = residual(snew)
+        else:
+            m0 = float(R @ R)
+            unew = u + du
+            snew = _State(model, geo, unew[None], arm)
+            Rn, en, qn = residual(snew)
+            for _ in range(0 if local else 40):
+                if float(Rn @ Rn) <= m0:
+                    break
+                t *= 0.5
+                unew = u + t * du
+                snew = _State(model, geo, unew[None], arm)
+                Rn, en, qn = residual(snew)
+        dmax = float(snew.delta.max())
+        umax = float(np.abs(unew * sc).max())
+        fl = max(100.0 * rtol, 20.0 * np.finfo(float).eps * umax / dmax if dmax > 0 else 0.0)
+        floor = fl >= en > 0.5 * err
+        u, st, R, err, qmax = unew, snew, Rn, en, qn
+        if floor and err > rtol:
+            log.debug("load distribution: stopped at the round-off floor (%.2e)", err)
+            break
+    if it:
+        log.debug("load distribution: converged in %d Newton iterations", it)
+    return u[None], np.array([it]), st
 
 
 # =========================================================================== results
@@ -710,8 +808,9 @@ def _loads_array(Fa, Fy, Fz, My, Mz):
     return np.stack(b, axis=-1)
 
 
-def _result(bearing, model, psi, x0, z0, Pd, u, applied, imposed, arm, iters, shape, method):
-    st = _State(model, _Geo(model, psi, x0, z0), u, arm)
+def _result(bearing, model, psi, x0, z0, Pd, u, applied, imposed, arm, iters, shape, method,
+            state=None):
+    st = _State(model, _Geo(model, psi, x0, z0), u, arm) if state is None else state
     Z = model.Z
     return LoadDistribution(
         bearing=bearing, azimuths=psi,
@@ -830,12 +929,19 @@ def solve(bearing: BallBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *, displ
     u0 = np.where(imposed, np.nan_to_num(D), u0)
     rtol = float(check_range(rtol, "rtol", 0.0, 1e-3, high_inclusive=True, unit="-"))
     geo = _Geo(model, psi, x0, z0)
-    u, iters = _newton(model, geo, L, u0, imposed, "groove", rtol, max_iter)
-    if moment_arm == "contact":
-        u, it2 = _newton(model, geo, L, u, imposed, "contact", rtol, max_iter)
-        iters = iters + it2
+    if L.shape[0] == 1:
+        u, iters, st = _newton_one(model, geo, L, u0, imposed, "groove", rtol, max_iter)
+        if moment_arm == "contact":
+            u, it2, st = _newton_one(model, geo, L, u, imposed, "contact", rtol, max_iter)
+            iters = iters + it2
+    else:
+        st = None
+        u, iters = _newton(model, geo, L, u0, imposed, "groove", rtol, max_iter)
+        if moment_arm == "contact":
+            u, it2 = _newton(model, geo, L, u, imposed, "contact", rtol, max_iter)
+            iters = iters + it2
     return _result(bearing, model, psi, x0, z0, Pd, u, L, imposed, moment_arm, iters, shape,
-                   "exact")
+                   "exact", state=st)
 
 
 def radial(bearing: BallBearing, Fr, clearance=None, azimuth_offset: float = 0.0,

@@ -283,14 +283,24 @@ def test_equilibrium_residual(arm):
     assert np.all(np.abs(F - applied).max(1) / scale < RTOL_EQ)
 
 
-def test_vectorized_equals_scalar():
+@pytest.mark.parametrize("arm", ["groove", "contact"])
+def test_vectorized_equals_scalar(arm):
+    # one case runs the scalar driver (_newton_one), several the vectorized one (_newton)
     brg = ricci218()
     loads = random_loads(5, seed=7)
-    rv = brg.solve(**loads)
+    rv = brg.solve(**loads, moment_arm=arm)
     for i in range(5):
-        ri = brg.solve(**{k: v[i] for k, v in loads.items()})
+        ri = brg.solve(**{k: v[i] for k, v in loads.items()}, moment_arm=arm)
         assert np.allclose(ri.ball_loads, rv.ball_loads[i], rtol=1e-9, atol=1e-9 * ri.max_ball_load)
+        assert np.allclose(ri.stiffness, rv.stiffness[i], rtol=1e-7,
+                           atol=1e-9 * np.abs(ri.stiffness).max())
     assert rv.loaded_zone.shape == (5,) and rv.stiffness.shape == (5, 5, 5)
+    # imposed DOFs through both drivers
+    disp = [None, None, None, 2e-4, None]
+    r1 = brg.solve(Fa=loads["Fa"][0], Fy=loads["Fy"][0], displacements=disp, moment_arm=arm)
+    r2 = brg.solve(Fa=loads["Fa"][:2], Fy=loads["Fy"][:2], displacements=disp, moment_arm=arm)
+    assert r1.relative_residual < RTOL_EQ and np.all(r2.relative_residual < RTOL_EQ)
+    assert np.allclose(r1.loads, r2.loads[0], rtol=1e-8, atol=1e-9 * np.abs(r1.loads).max())
 
 
 def test_rotational_symmetry():
@@ -465,6 +475,10 @@ def test_random_bearings_and_loads(case):
     assert r.relative_residual < RTOL_EQ
     assert 0.0 <= r.loaded_zone <= np.pi
     assert np.all(np.isfinite(r.inner.p_max)) and np.all(np.isfinite(r.outer.a))
+    # the vectorized driver (two cases) agrees with the scalar one
+    r2 = brg.solve(Fa=[Fa, Fa], Fy=Fy, Fz=Fz, My=My, Mz=Mz)
+    assert np.all(r2.relative_residual < RTOL_EQ)
+    assert np.allclose(r2.ball_loads[1], r.ball_loads, rtol=1e-7, atol=1e-7 * r.max_ball_load)
     if Fa > 0 and Fy == Fz == My == Mz == 0:
         t = brg.thrust(Fa)
         assert np.allclose(t.ball_loads, r.ball_loads, rtol=1e-7)
