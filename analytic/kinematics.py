@@ -134,7 +134,8 @@ def cage_speed(D, d_m, contact_angle=0.0, speed_inner=1.0, speed_outer=0.0):
 
     Examples
     --------
-    CWRU 6205 drive-end bearing, inner ring at 1 rev/s (FTF factor 0.3983):
+    CWRU 6205 drive-end bearing geometry, inner ring at 1 rev/s (0.39831 from the
+    geometry; CWRU's table prints 0.39828, inconsistent with its own BPFO/Z = 0.39831):
 
     >>> round(float(cage_speed(0.3126, 1.537, 0.0, 1.0)), 4)
     0.3983
@@ -512,7 +513,9 @@ def defect_frequencies(D, d_m, n_balls, contact_angle=0.0, speed_inner=1.0,
 
     Examples
     --------
-    CWRU drive-end 6205-2RS JEM SKF (D = 0.3126 in, d_m = 1.537 in, Z = 9):
+    CWRU drive-end 6205-2RS JEM SKF (D = 0.3126 in, d_m = 1.537 in, Z = 9); CWRU
+    prints 3.5848, 5.4152 and, for the rolling element (2 BSF), 4.7135 (the geometry
+    gives 4.71344):
 
     >>> f = defect_frequencies(0.3126, 1.537, 9, 0.0, speed_inner=1.0)
     >>> round(float(f.bpfo), 4), round(float(f.bpfi), 4), round(float(2 * f.bsf), 4)

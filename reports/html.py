@@ -26,6 +26,8 @@ AREA_TITLES = {
     "bearing": "Bearing geometry and load distribution",
     "life": "Ratings and life",
     "ehl": "Elastohydrodynamic film",
+    "kinematics": "Kinematics and defect frequencies",
+    "highspeed": "High speed: centrifugal force, gyroscopic moment, Jones equilibrium",
     "fem": "Finite-element checks",
 }
 

@@ -69,7 +69,8 @@ def test_all_packaged_cases_load_and_cover_the_areas():
     cases = load_cases()
     assert len(cases) >= 40
     areas = {c.area for c in cases}
-    assert {"hertz", "subsurface", "bearing", "life", "ehl", "fem"} <= areas
+    assert {"hertz", "subsurface", "bearing", "life", "ehl", "kinematics", "highspeed",
+            "fem"} <= areas
     kinds = {c.kind for c in cases}
     assert {"published", "independent derivation", "FE check"} <= kinds
     for c in cases:

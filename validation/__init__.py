@@ -2,7 +2,8 @@
 
 * :mod:`~ballrace.validation.schema` — case files (TOML) and their checks;
 * :mod:`~ballrace.validation.registry` — named calculations (SI inputs -> SI outputs);
-* ``calc_*`` — the calculations of each area (hertz, subsurface, bearing, life, ehl, fem);
+* ``calc_*`` — the calculations of each area (hertz, subsurface, bearing, life, ehl,
+  kinematics and highspeed, fem);
 * :mod:`~ballrace.validation.runner` — run, compare, statuses (pass/fail/error/missing/skipped);
 * :mod:`~ballrace.validation.distributed` — dask plumbing for FE cases and sweeps;
 * :mod:`~ballrace.validation.baseline` — regression snapshots (kept apart from the cases);

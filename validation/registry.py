@@ -43,6 +43,7 @@ CALC_MODULES = (
     "ballrace.validation.calc_bearing",
     "ballrace.validation.calc_life",
     "ballrace.validation.calc_ehl",
+    "ballrace.validation.calc_kinematics",
     "ballrace.validation.calc_fem",
 )
 
@@ -88,7 +89,7 @@ class Calculation:
     func : callable
         ``func(**si_inputs) -> dict[str, float]``.
     area : str
-        Report section (hertz, subsurface, bearing, life, ehl, fem, sweep).
+        Report section (hertz, subsurface, bearing, life, ehl, kinematics, highspeed, fem).
     inputs : mapping of str to Param
     outputs : mapping of str to str
         Output name -> pint dimensionality (``""`` dimensionless, ``"[angle]"`` in rad).

@@ -235,7 +235,8 @@ def format_value(v: float | None, dimension: str) -> str:
     unit = {"[length]": "m", "[force]": "N", "[pressure]": "Pa", "[time]": "s",
             "[force] / [length]": "N/m", "[mass] / [length] / [time]": "Pa*s",
             "1 / [pressure]": "1/Pa", "[length] / [time]": "m/s", "1 / [time]": "1/s",
-            "[force] / [length] ** 1.5": "N/m^1.5"}.get(dimension, "")
+            "[force] / [length] ** 1.5": "N/m^1.5", "[mass]": "kg",
+            "[force] * [length]": "N*m"}.get(dimension, "")
     return f"{v:.6g} {unit}".strip()
 
 
