@@ -91,7 +91,8 @@ def register(app: typer.Typer) -> None:
     def fem_cmd(
         case_file: Annotated[Optional[str], typer.Argument(
             help="CASE.toml, or the word 'convergence' for a mesh-convergence study.")] = None,
-        case: Annotated[str, typer.Option(help="race | plane | ball (without a case file)")] = "race",
+        case: Annotated[str, typer.Option(
+            help="race | plane | ball, or inner | outer for a race case (without a case file)")] = "race",
         race: Annotated[str, typer.Option(help="inner | outer")] = "inner",
         load: Annotated[str, typer.Option(help='Ball load, e.g. "4450 N".')] = "4450 N",
         level: Annotated[str, typer.Option(help="quick | standard | fine")] = "standard",
@@ -115,6 +116,8 @@ def register(app: typer.Typer) -> None:
                 f = spec.get("fem", {})
                 level_, mode_, gap_ = f.get("level", level), f.get("mode", mode), f.get("gap", gap)
             else:
+                if case in ("inner", "outer"):          # shorthand: --case inner
+                    case, race = "race", case
                 spec = {"case": {"kind": case, "race": race, "load": load}}
                 level_, mode_, gap_ = level, mode, gap
             cse = _case_from(spec)

@@ -66,6 +66,21 @@ def test_bad_inputs(brg209):
         fem.ball_on_race("209", 100.0)
 
 
+def test_cli_rejects_bad_input_before_meshing(tmp_path):
+    """``ballrace fem`` exits 2 with the argument named; ``--case inner`` is a race case."""
+    from typer.testing import CliRunner
+
+    from ballrace.cli import app
+
+    run = CliRunner().invoke
+    res = run(app, ["fem", "--case", "inner", "--load", "-5 N", "--out", str(tmp_path)])
+    assert res.exit_code == 2 and "load must be > 0" in res.output
+    res = run(app, ["fem", "--case", "outer", "--load", "3 m", "--out", str(tmp_path)])
+    assert res.exit_code == 2 and "load" in res.output
+    res = run(app, ["fem", "--case", "cylinder", "--out", str(tmp_path)])
+    assert res.exit_code == 2 and "case.kind must be" in res.output
+
+
 class _Brg:
     """Duck-typed bearing that skips BallBearing's own checks (to reach fem's)."""
 
