@@ -6,7 +6,8 @@ Each case runs in its own subprocess so its peak memory (ru_maxrss) and wall tim
 its own.  Cases: ``inner-hs`` / ``inner-2b`` (ball on the inner race of the 209 bearing,
 D = 12.7 mm, d_m = 65 mm, f = 0.52, contact angle 0, Q = 4450 N; half-space / two
 elastic bodies), ``outer-hs``, ``plane-hs`` / ``plane-2b`` (ball on plane, 2000 N),
-``inner-exact`` (exact sphere–torus gap).  Budgets (issue 5): half-space <= 90 s and
+``outer-2b``, ``ball-2b`` (two 12.7 mm balls, 2000 N), ``inner-exact`` (exact
+sphere–torus gap).  Budgets (issue 5): half-space <= 90 s and
 8 GB, two bodies <= 5 min and 16 GB; a, b, p0 0.5 %, delta 1 %, tau0 3 %, z0 10 %.
 """
 from __future__ import annotations
@@ -21,6 +22,8 @@ CASES = {
     "inner-hs": ("race", "inner", 4450.0, "half-space", "hertz"),
     "inner-2b": ("race", "inner", 4450.0, "two-body", "hertz"),
     "outer-hs": ("race", "outer", 4450.0, "half-space", "hertz"),
+    "outer-2b": ("race", "outer", 4450.0, "two-body", "hertz"),
+    "ball-2b": ("ball", None, 2000.0, "two-body", "hertz"),
     "plane-hs": ("plane", None, 2000.0, "half-space", "hertz"),
     "plane-2b": ("plane", None, 2000.0, "two-body", "hertz"),
     "inner-exact": ("race", "inner", 4450.0, "half-space", "exact"),
@@ -35,6 +38,8 @@ t0 = time.perf_counter()
 if kind == "race":
     brg = ballrace.BallBearing(12.7e-3, 9, 65e-3, 0.52, 0.52, free_contact_angle=0.0)
     r = fem.ball_on_race(brg, load, race=race, level=level, mode=mode, gap=gap)
+elif kind == "ball":
+    r = fem.ball_on_ball(12.7e-3, load, level=level, mode=mode, gap=gap)
 else:
     r = fem.ball_on_plane(12.7e-3, load, level=level, mode=mode, gap=gap)
 d = r.to_dict()

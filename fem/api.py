@@ -19,13 +19,39 @@ from ballrace.analytic._checks import check_choice, check_positive, check_range
 from ballrace.analytic.materials import BEARING_STEEL, Material, effective_modulus
 from ballrace.meshes import geometry as geo
 
-__all__ = ["LEVELS", "MODES", "GAPS", "TOLERANCES", "ContactCase", "FEResult", "ball_on_race",
+__all__ = ["LEVELS", "MeshLevel", "MODES", "GAPS", "TOLERANCES", "ContactCase", "FEResult", "ball_on_race",
            "ball_on_plane", "ball_on_ball", "run_case", "race_case", "plane_case", "ball_case"]
 
 log = logging.getLogger(__name__)
 
-#: Mesh levels: elements per minor semi-axis of the contact ellipse at the contact.
-LEVELS = {"quick": 5, "standard": 9, "fine": 14}
+@dataclass(frozen=True)
+class MeshLevel:
+    """Mesh resolution at the contact (frozen).
+
+    Attributes
+    ----------
+    n : float
+        Elements per minor semi-axis b of the contact ellipse: h = b/n across the ellipse
+        and in depth [-].
+    max_stretch : float
+        Largest element elongation s along the major axis of a long ellipse [-]
+        (s = clip((a/b)/2.5, 1, max_stretch); elements are h s long along a).  The
+        major axis a of a conformal groove contact converges as (h s / b)^2: at
+        h s = 0.41 b the 209 inner-race a was 0.45 % short, at 0.26 b 0.14–0.21 %
+        (measured, docs/fem.md).
+    """
+
+    n: float
+    max_stretch: float = 4.0
+
+    def __post_init__(self):
+        check_range(self.n, "n", 0.0, None, unit="-")
+        check_range(self.max_stretch, "max_stretch", 1.0, None, low_inclusive=True, unit="-")
+
+
+#: Named mesh levels (:class:`MeshLevel`); ``run_case(level=MeshLevel(...))`` for others.
+LEVELS = {"quick": MeshLevel(5, 4.0), "standard": MeshLevel(9, 2.3),
+          "fine": MeshLevel(12, 2.0)}
 MODES = ("half-space", "two-body")
 GAPS = ("hertz", "exact")
 
@@ -40,6 +66,22 @@ TOLERANCES = {
               "von_mises": 0.12, "von_mises_depth": 0.30},
 }
 TOLERANCES["fine"] = TOLERANCES["standard"]
+
+#: Two elastic bodies on a conformal groove: the on-axis stress maxima of the real
+#: geometry exceed Hertz's half-space values by an amount that grows with a / (f D)
+#: (209 inner race: max shear +1.4 % at 556 N, +2.6 % at 4450 N; outer race +3.8 %;
+#: half-space mode +0.3 %, docs/fem.md), so they are held to 5 % there.
+CONFORMAL_STRESS_TOLERANCE = {"max_shear": 0.05, "von_mises": 0.05}
+
+#: Extent of the lower body (half-space block, plane block), in semi-major axes.
+BLOCK_EXTENT = 8.0
+#: Land modelled beyond each shoulder edge of the two-body race, in groove radii f D.
+RACE_LAND_WIDTH = 1.0
+#: Element elongation along a long ellipse's major axis: s = (a/b) / STRETCH_RATIO, clipped
+#: to [1, MeshLevel.max_stretch].
+STRETCH_RATIO = 2.5
+#: Pressure tents per semi-axis (at most; never finer than 1.4 surface elements).
+TENTS_PER_AXIS = 16.0
 
 
 # --------------------------------------------------------------------------- cases
@@ -128,7 +170,8 @@ def race_case(brg, load: float, race: str = "inner", contact_angle: float = 0.0)
     ry2 = -f * D
     return ContactCase(
         name=f"ball on {race} race", load=load, analytic=c, ball_radius=D / 2,
-        upper=geo.Sphere(D / 2, +1), lower=geo.race_torus(D, dm, f, race, beta),
+        upper=geo.Sphere(D / 2, +1),
+        lower=geo.ring_surface(D, dm, f, race, beta, getattr(brg, f"shoulder_height_{race}", None)),
         upper_q=geo.Paraboloid(D / 2, D / 2, +1), lower_q=geo.Paraboloid(rx2, ry2, -1),
         lower_kind="race", material1=m1, material2=m2, lower_radii=(rx2, ry2))
 
@@ -185,7 +228,7 @@ class FEResult:
     approach : depth-point approach, comparable with Hertz's delta [m] (see
         ``approach_hertz_equivalent``: FE depth-point approach + half-space w(z_q)).
     approach_rigid : raw rigid approach of the far planes [m] (includes bulk compliance).
-    tau0, z0 : orthogonal shear |tau_xz| peak [Pa] and its depth [m] (parabola fit).
+    tau0, z0 : orthogonal shear |tau_xz| peak [Pa] and its depth [m] (extract.peak_fit).
     tau_x0z0 : |tau_xz| at the analytic (x0, z0) [Pa].
     max_shear, max_shear_depth, von_mises, von_mises_depth : on-axis maxima [Pa], [m].
     n_dofs : total degrees of freedom; timings : seconds per stage; peak_rss : [bytes].
@@ -256,8 +299,9 @@ def ball_on_race(brg, load: float, race: str = "inner", contact_angle: float = 0
     race : {"inner", "outer"}
     contact_angle : float
         Contact angle [rad].
-    level : {"quick", "standard", "fine"}
-        Mesh level (:data:`LEVELS`).
+    level : {"quick", "standard", "fine"} or MeshLevel
+        Mesh level (:data:`LEVELS`); a :class:`MeshLevel` is held to the standard
+        tolerances.
     mode : {"half-space", "two-body"}
         Elastic half-space under a rigid indenter of the combined curvature (E' folded
         into the half-space modulus), or the ball and the race both elastic.
@@ -302,21 +346,30 @@ class _Sizing:
     zq: float
 
 
-def sizing(case: ContactCase, level: str) -> _Sizing:
+def _level(level) -> tuple[str, MeshLevel]:
+    """(name, MeshLevel) of a level name or a :class:`MeshLevel`."""
+    if isinstance(level, MeshLevel):
+        return f"n={level.n:g},s<={level.max_stretch:g}", level
+    check_choice(level, "level", tuple(LEVELS))
+    return level, LEVELS[level]
+
+
+def sizing(case: ContactCase, level) -> _Sizing:
     """Element size, anisotropy, refinement box and pressure grid for a level."""
     from .model import PressureGrid
 
+    lv = _level(level)[1]
     c = case.analytic
     ax, ay = float(c.semi_axis_x), float(c.semi_axis_y)
     minor, major = min(ax, ay), max(ax, ay)
-    h = minor / LEVELS[level]
+    h = minor / lv.n
     # elongate the elements along y when the ellipse is long in y (bearing contacts)
-    s = float(np.clip(ay / ax / 2.5, 1.0, 4.0)) if ay > ax else 1.0
+    s = float(np.clip(ay / ax / STRETCH_RATIO, 1.0, lv.max_stretch)) if ay > ax else 1.0
     ext = 1.3
     Lx, Ly = ext * ax, ext * ay
     # tent spacing: fine enough for the moments, >= 1.4x the surface mesh (inf-sup, FE-NOTES)
-    dx = max(ax / 16.0, 1.4 * h)
-    dy = max(ay / 16.0, 1.4 * h * s)
+    dx = max(ax / TENTS_PER_AXIS, 1.4 * h)
+    dy = max(ay / TENTS_PER_AXIS, 1.4 * h * s)
     grid = PressureGrid(Lx, Ly, max(3, int(round(Lx / dx))), max(3, int(round(Ly / dy))))
     fine = (Lx + 2 * h, Ly + 2 * h * s, 1.6 * minor)
     return _Sizing(h=h, stretch=s, fine=fine, grid=grid, zq=3.0 * minor)
@@ -334,7 +387,7 @@ def _bodies(case: ContactCase, mode: str, sz: _Sizing, use_cache: bool):
     if mode == "half-space":
         m2 = case.material2
         E_hs = 0.5 * float(c.E_prime) * (1.0 - m2.nu**2)       # E/(1-nu^2) = E* = E'/2
-        L = 8.0 * major
+        L = BLOCK_EXTENT * major
         blk = mc.block_mesh((L, L, L), sz.fine, sz.h, L / 5, stretch=sz.stretch,
                             use_cache=use_cache)
         cn = blk.points[:, 2] == 0.0
@@ -363,12 +416,15 @@ def _bodies(case: ContactCase, mode: str, sz: _Sizing, use_cache: bool):
         bodies.append(Body("ball 2", q, b2.tets, m2.E, m2.nu, -1, -R2, on2, case.lower))
         meshes.append(b2)
         return bodies, meshes
-    L = 8.0 * major
+    L = BLOCK_EXTENT * major
     Lx = Ly = L
     if case.lower_kind == "race":
+        # the ring: groove and lands (meshes.geometry.RingSurface), one groove radius of
+        # land beyond each shoulder edge; along the rolling direction a third of the
+        # race radius
         rx2, ry2 = case.lower_radii
         Lx = min(L, 0.3 * abs(rx2))
-        Ly = min(L, 0.75 * abs(ry2))
+        Ly = min(L, case.lower.shoulder_y + RACE_LAND_WIDTH * abs(ry2))
     H = max(Lx, Ly)
     blk = mc.block_mesh((Lx, Ly, H), sz.fine, sz.h, H / 5, stretch=sz.stretch,
                         use_cache=use_cache)
@@ -404,13 +460,13 @@ def run_case(case: ContactCase, level: str = "standard", mode: str = "half-space
     from . import halfspace
     from .model import assemble_body, compliance, solve_contact
 
-    check_choice(level, "level", tuple(LEVELS))
+    level, lv = _level(level)
     check_choice(mode, "mode", MODES)
     check_choice(gap, "gap", GAPS)
     step = progress or (lambda stage: None)
     c = case.analytic
     timings = {}
-    sz = sizing(case, level)
+    sz = sizing(case, lv)
 
     step("mesh")
     t0 = time.perf_counter()
@@ -477,14 +533,14 @@ def run_case(case: ContactCase, level: str = "standard", mode: str = "half-space
     tau = S[:, 4].reshape(Xs.shape)
     tres, vm = ex.tresca_von_mises(S)
     prof = np.max(np.abs(tau), axis=0)
-    z0_fe, tau0_fe = ex.parabola_vertex(zs, prof)
+    z0_fe, tau0_fe = ex.peak_fit(zs, prof)
     # axis
     za = np.linspace(0.02, 2.5, 126) * minor
     pa = np.stack([np.full(za.size, eps), np.full(za.size, eps), -za], axis=1)
     Sa = ex.to_depth_frame(ex.stresses(low, ul, pa, hs))
     tr_a, vm_a = ex.tresca_von_mises(Sa)
-    ms_d, ms = ex.parabola_vertex(za, tr_a)
-    vm_d, vmx = ex.parabola_vertex(za, vm_a)
+    ms_d, ms = ex.peak_fit(za, tr_a)
+    vm_d, vmx = ex.peak_fit(za, vm_a)
     # analytic subsurface predictions
     from ballrace.analytic import subsurface as sub
 
@@ -497,7 +553,10 @@ def run_case(case: ContactCase, level: str = "standard", mode: str = "half-space
     vma = sub.von_mises(c, nu=nu_low)
     timings["extract"] = time.perf_counter() - t0
 
-    tol = TOLERANCES[level] if gap == "hertz" else {}
+    # custom MeshLevels are held to the standard tolerances
+    tol = TOLERANCES.get(level, TOLERANCES["standard"]) if gap == "hertz" else {}
+    if tol and mode == "two-body" and case.lower_kind == "race":
+        tol = {**tol, **{q: max(tol[q], v) for q, v in CONFORMAL_STRESS_TOLERANCE.items()}}
     rows = []
 
     def row(q, unit, fe, an):

@@ -54,8 +54,12 @@ class ConvergenceStudy:
 
 
 def convergence_study(case, sizes=(4, 6, 8, 11), mode: str = "half-space",
-                      progress=None, **kwargs) -> ConvergenceStudy:
+                      progress=None, max_stretch: float | None = None,
+                      **kwargs) -> ConvergenceStudy:
     """Solve ``case`` at several mesh sizes and fit error rates.
+
+    The refinement is uniform: every element dimension scales with 1/n and the
+    anisotropy (elongation along a long ellipse's major axis) is held fixed.
 
     Parameters
     ----------
@@ -66,28 +70,24 @@ def convergence_study(case, sizes=(4, 6, 8, 11), mode: str = "half-space",
     mode : {"half-space", "two-body"}
     progress : callable(str), optional
         Called before each run.
+    max_stretch : float, optional
+        Element elongation cap (:class:`ballrace.fem.MeshLevel`); default the standard
+        level's.
     """
     from . import api
 
+    cap = api.LEVELS["standard"].max_stretch if max_stretch is None else max_stretch
     errs = {q: [] for q in QUANTITIES}
     dofs, secs = [], []
-    saved = dict(api.LEVELS)
-    try:
-        for n in sizes:
-            if progress:
-                progress(f"n = {n}")
-            api.LEVELS["_study"] = int(n)
-            api.TOLERANCES["_study"] = api.TOLERANCES["standard"]
-            r = api.run_case(case, level="_study", mode=mode, **kwargs)
-            rows = {row["quantity"]: row for row in r.comparison}
-            for q in QUANTITIES:
-                errs[q].append(rows[q]["error"])
-            dofs.append(r.n_dofs)
-            secs.append(r.timings["total"])
-            log.info("convergence n=%d: %d DOFs, %.1f s", n, r.n_dofs, r.timings["total"])
-    finally:
-        api.LEVELS.clear()
-        api.LEVELS.update(saved)
-        api.TOLERANCES.pop("_study", None)
+    for n in sizes:
+        if progress:
+            progress(f"n = {n}")
+        r = api.run_case(case, level=api.MeshLevel(float(n), cap), mode=mode, **kwargs)
+        rows = {row["quantity"]: row for row in r.comparison}
+        for q in QUANTITIES:
+            errs[q].append(rows[q]["error"])
+        dofs.append(r.n_dofs)
+        secs.append(r.timings["total"])
+        log.info("convergence n=%s: %d DOFs, %.1f s", n, r.n_dofs, r.timings["total"])
     rates = {q: fitted_rate(dofs, errs[q]) for q in QUANTITIES}
     return ConvergenceStudy(tuple(sizes), tuple(dofs), tuple(secs), errs, rates)

@@ -8,14 +8,15 @@
   point (located with a KD-tree of element centroids and barycentric tests).  Stresses
   are reported in the analytic frame of :mod:`ballrace.analytic.subsurface` (depth z
   positive into the lower body): ``tau_xz`` there is ``-sigma_xz`` of the mesh frame;
-* the depth of the orthogonal-shear peak from a parabola through the peak of
-  ``max_x |tau_xz|(z)`` (the depth is ill-conditioned, FE-NOTES).
+* the depth of the orthogonal-shear peak from a quartic least-squares fit over the
+  top 10 % of ``max_x |tau_xz|(z)`` (:func:`peak_fit`; the depth is ill-conditioned,
+  FE-NOTES).
 """
 from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["displacement", "locate", "evaluate", "probe_displacement", "stresses", "parabola_vertex",
+__all__ = ["displacement", "locate", "evaluate", "probe_displacement", "stresses", "peak_fit",
            "pressure_moments"]
 
 # component order of the returned stress arrays
@@ -104,7 +105,9 @@ def stresses(state, u, pts, h: float = 0.0) -> np.ndarray:
     """Stress components (n, 6) in the mesh frame at points (n, 3) [Pa].
 
     Order ``sxx, syy, szz, sxy, sxz, syz``; exact P2 gradient of the containing element
-    (``h`` is ignored, kept for compatibility).
+    (``h`` is ignored, kept for compatibility).  (A continuous field recovered by nodal
+    averaging was tried: it moved tau0, z0 and the on-axis maxima by < 1.5 % of their
+    values and fixed none of the differences from Hertz, so the raw field is kept.)
     """
     _, grad = evaluate(state, u, np.asarray(pts, dtype=float))
     E, nu = state.body.E, state.body.nu
@@ -140,29 +143,46 @@ def tresca_von_mises(s: np.ndarray):
     return tresca, vm
 
 
-def parabola_vertex(z, f, i: int | None = None, half: int = 2):
-    """Vertex (z*, f*) of the least-squares parabola through ``2 half + 1`` points around
-    the maximum of f (or index i); falls back to the sample at the boundary.
+def peak_fit(z, f, window: float = 0.9, degree: int = 4, min_points: int = 7):
+    """Location and value (z*, f*) of the maximum of sampled f(z), robust to element noise.
+
+    A least-squares polynomial of ``degree`` through the contiguous run of samples with
+    ``f >= window * max f`` around the largest sample (widened to ``min_points``), then
+    maximised within that run (roots of its derivative).  P2 stresses are piecewise linear and jump
+    between elements, so the largest sample of a flat peak (the orthogonal shear varies
+    by < 1 % over ±15 % of its depth) is a poor estimate of its depth; the 3-point
+    parabola through it moved z0 of the 209 inner race by 13 % between two meshes of the
+    same level.  On exact (analytic) profiles of the 209 inner race and a ball on a plane
+    this fit is biased by < 0.25 % in depth and < 0.03 % in value (measured,
+    ``docs/fem.md``).
 
     Examples
     --------
-    >>> z = np.linspace(0, 1, 11); f = 1 - (z - 0.43) ** 2
-    >>> [round(float(v), 6) for v in parabola_vertex(z, f)]
+    >>> z = np.linspace(0, 1, 41); f = 1 - (z - 0.43) ** 2 + 0.3 * (z - 0.43) ** 3
+    >>> [round(float(v), 4) for v in peak_fit(z, f)]
     [0.43, 1.0]
     """
     z = np.asarray(z, dtype=float)
     f = np.asarray(f, dtype=float)
-    i = int(np.argmax(f)) if i is None else i
-    lo, hi = max(0, i - half), min(len(z), i + half + 1)
-    if hi - lo < 3:
-        return float(z[i]), float(f[i])
-    c2, c1, c0 = np.polyfit(z[lo:hi], f[lo:hi], 2)
-    if c2 >= 0:
-        return float(z[i]), float(f[i])
-    zv = -c1 / (2 * c2)
-    if not (z[lo] <= zv <= z[hi - 1]):
-        return float(z[i]), float(f[i])
-    return float(zv), float(np.polyval([c2, c1, c0], zv))
+    i = int(np.argmax(f))
+    inside = f >= window * f[i]
+    lo = hi = i
+    while lo > 0 and inside[lo - 1]:
+        lo -= 1
+    while hi < z.size - 1 and inside[hi + 1]:
+        hi += 1
+    while hi - lo + 1 < min(min_points, z.size):
+        lo, hi = max(0, lo - 1), min(z.size - 1, hi + 1)
+    zz, ff = z[lo:hi + 1], f[lo:hi + 1]
+    deg = min(degree, zz.size - 1)
+    scale = max(float(np.ptp(zz)), 1e-300)
+    c = np.polyfit((zz - zz[0]) / scale, ff, deg)
+    r = np.roots(np.polyder(c))
+    real = r.real[(np.abs(r.imag) < 1e-12) & (r.real > 0) & (r.real < 1)]
+    cand = np.concatenate([[0.0, 1.0], real])
+    v = np.polyval(c, cand)
+    k = int(np.argmax(v))
+    return float(zz[0] + cand[k] * scale), float(v[k])
 
 
 def pressure_moments(lam, integrals) -> dict:

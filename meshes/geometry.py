@@ -27,7 +27,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Surface", "Plane", "Sphere", "Paraboloid", "RaceTorus", "race_torus", "gap"]
+__all__ = ["Surface", "Plane", "Sphere", "Paraboloid", "RaceTorus", "RingSurface", "race_torus",
+           "ring_surface", "gap"]
 
 
 class Surface:
@@ -147,6 +148,87 @@ class RaceTorus(Surface):
             if np.all(np.abs(step) < 1e-15 * self.minor_radius):
                 break
         return z
+
+
+@dataclass(frozen=True)
+class RingSurface(Surface):
+    """Race groove with its lands: the ring surface ``h = min(h_groove, h_land)``.
+
+    The ring is the material inside the land cylinder (inner ring; outside it for the
+    outer ring) with the groove torus cut away; seen from the contact, the surface is the
+    first of the two met, i.e. the lower height.  The land cylinder is coaxial with the
+    bearing, ``shoulder_height`` above the groove bottom (Hamrock & Dowson 1981 fig. 2.17).
+
+    Attributes
+    ----------
+    groove : RaceTorus
+    land_radius : float
+        Radius of the land cylinder about the bearing axis [m].
+    valid_y : float
+        The groove height is used for |y| <= valid_y (inside the groove, where the torus
+        Newton iteration is reliable); the land beyond [m].
+    shoulder_y : float
+        |y| of the shoulder edge (groove meets land) at contact angle 0 [m].
+    """
+
+    groove: RaceTorus
+    land_radius: float
+    valid_y: float
+    shoulder_y: float = float("nan")
+
+    def land_height(self, x, y):
+        """Height of the land cylinder over (x, y), the root nearest the contact [m]."""
+        x, y = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
+        c = np.asarray(self.groove.axis_point)
+        e = np.asarray(self.groove.axis_dir)
+        q0 = np.stack([x - c[0], y - c[1], np.full(x.shape, -c[2])])
+        qe = np.tensordot(e, q0, axes=1)
+        A = 1.0 - e[2] ** 2
+        B = 2.0 * (q0[2] - qe * e[2])
+        C = (q0 * q0).sum(0) - qe * qe - self.land_radius**2
+        disc = np.sqrt(np.maximum(B * B - 4 * A * C, 0.0))
+        r1, r2 = (-B - disc) / (2 * A), (-B + disc) / (2 * A)
+        return np.where(np.abs(r1) < np.abs(r2), r1, r2)
+
+    def height(self, x, y):
+        """Ring surface height [m]: groove inside ``valid_y``, otherwise the land."""
+        x, y = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
+        inside = np.abs(y) <= self.valid_y
+        hg = self.groove.height(x, np.where(inside, y, 0.0))
+        return np.where(inside, np.minimum(hg, self.land_height(x, y)), self.land_height(x, y))
+
+
+def ring_surface(ball_diameter: float, pitch_diameter: float, f: float, race: str,
+                 contact_angle: float = 0.0, shoulder_height: float | None = None
+                 ) -> RingSurface:
+    """Groove and lands of a race in the local contact frame (see :class:`RingSurface`).
+
+    Parameters
+    ----------
+    ball_diameter, pitch_diameter, f, race, contact_angle
+        As for :func:`race_torus` [m, m, -, -, rad].
+    shoulder_height : float, optional
+        Land height above the groove bottom [m]; default 0.2 D (typical of deep-groove
+        ball bearings, Harris 2001 §2.2).  Capped so that the shoulder edge lies
+        within 0.85 f D of the groove centre plane.
+
+    Examples
+    --------
+    209 inner race: the groove bottom at the contact, the land 2.54 mm above it.
+
+    >>> s = ring_surface(12.7e-3, 65e-3, 0.52, "inner")
+    >>> abs(float(s.height(0.0, 0.0))) < 1e-15, round(float(s.height(0.0, 8e-3)) * 1e3, 4)
+    (True, 2.54)
+    """
+    D, r = ball_diameter, f * ball_diameter
+    t = race_torus(D, pitch_diameter, f, race, contact_angle)
+    hs = 0.2 * D if shoulder_height is None else float(shoulder_height)
+    h_max = r * (1.0 - np.sqrt(1.0 - 0.85**2))          # shoulder edge at y = 0.85 r
+    hs = min(hs, h_max)
+    land = t.major_radius - r + hs if race == "inner" else t.major_radius + r - hs
+    y_edge = np.sqrt(r * r - (r - hs) ** 2)
+    return RingSurface(groove=t, land_radius=float(land),
+                       valid_y=float(min(0.9 * r, y_edge + 0.05 * r)), shoulder_y=float(y_edge))
 
 
 def race_torus(ball_diameter: float, pitch_diameter: float, f: float, race: str,

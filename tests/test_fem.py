@@ -117,6 +117,27 @@ def test_race_torus_matches_hertz_radii(brg209):
             assert Ry == pytest.approx(float(cur.Ry), rel=1e-5)
 
 
+@pytest.mark.parametrize("race", ["inner", "outer"])
+def test_ring_surface_groove_and_lands(race):
+    """Groove inside the shoulders, land cylinder (coaxial, h_s above the groove bottom)
+    outside: checked against the closed forms of the contact-angle-0 cross-sections."""
+    from ballrace.meshes import geometry as geo
+
+    D, dm, f, hs = 12.7e-3, 65e-3, 0.52, 2.0e-3
+    s = geo.ring_surface(D, dm, f, race, 0.0, shoulder_height=hs)
+    r = f * D
+    assert s.shoulder_y == pytest.approx(np.sqrt(r * r - (r - hs) ** 2), rel=1e-12)
+    y = np.linspace(0.0, 0.95 * s.shoulder_y, 7)
+    assert np.allclose(s.height(0.0, y), r - np.sqrt(r * r - y * y), rtol=0, atol=1e-12)
+    # land along x: a circle about the bearing axis, radius R_L (convex inner, concave outer)
+    R_L = (dm - D) / 2 + hs if race == "inner" else (dm + D) / 2 - hs
+    x = np.linspace(0.0, 3e-3, 5)
+    sign = -1.0 if race == "inner" else 1.0
+    expect = hs + sign * (R_L - np.sqrt(R_L**2 - x * x))
+    assert np.allclose(s.height(x, 1.5 * s.shoulder_y), expect, rtol=0, atol=1e-12)
+    assert np.all(np.isfinite(s.height(x[:, None], np.linspace(0, 3 * r, 40))))
+
+
 def test_halfspace_displacement_limits():
     from ballrace.fem.halfspace import axial_displacement
 
@@ -125,6 +146,29 @@ def test_halfspace_displacement_limits():
     E = 0.5 * 219.78e9 * (1 - nu**2)      # E/(1-nu^2) = E'/2: w(0) is the whole approach
     w0 = axial_displacement(0.0, float(c.semi_axis_x), float(c.semi_axis_y), float(c.p_max), E, nu)
     assert w0 == pytest.approx(float(c.approach), rel=1e-6)
+
+
+@needs_fem
+@pytest.mark.parametrize("E, nu", [(200e9, 0.3), (3.1e11, 0.26), (1.0, 0.45)])
+def test_fast_p2_elasticity_equals_scikit_fem(E, nu):
+    """Our vectorized P2 stiffness equals scikit-fem's asm(linear_elasticity) to 1e-12."""
+    from skfem import Basis, ElementTetP2, ElementVector, MeshTet, asm
+    from skfem.models.elasticity import lame_parameters, linear_elasticity
+
+    from ballrace.fem.model import elasticity_p2
+
+    m = MeshTet().refined(2)
+    p = m.p + 0.03 * np.random.default_rng(1).standard_normal(m.p.shape)   # distorted
+    m = MeshTet(p, m.t)
+    b = Basis(m, ElementVector(ElementTetP2()), intorder=2)
+    K0 = asm(linear_elasticity(*lame_parameters(E, nu)), b)
+    sb = b.with_element(ElementTetP2())
+    K1 = elasticity_p2(m.p, m.t, sb.element_dofs, b.N, E, nu, chunk=100)   # several chunks
+    assert abs(K0 - K1).max() <= 1e-12 * abs(K0).max()
+    # rigid-body modes are in the kernel: a translation and an infinitesimal rotation
+    X = sb.doflocs                                   # vector DOF = 3 * scalar DOF + component
+    for mode in (np.tile([1.0, 0, 0], sb.N), np.stack([-X[1], X[0], 0 * X[2]]).T.ravel()):
+        assert np.abs(K1 @ mode).max() <= 1e-10 * abs(K1).max()
 
 
 def test_pressure_grid_moments():
