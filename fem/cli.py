@@ -137,14 +137,15 @@ def register(app: typer.Typer) -> None:
             from rich.console import Console
             from rich.table import Table
 
-            t = Table(title=f"mesh convergence: {cse.name}, {mode_} (errors vs analytic)")
+            t = Table(title=f"mesh convergence: {cse.name}, {mode_} (errors vs analytic; "
+                            "rate = slope of log|error| vs log DOFs, x3 for h)")
             for col in ("n/minor", "DOFs", "s", *QUANTITIES):
                 t.add_column(col, justify="right")
             for row in st.rows():
                 t.add_row(str(row[0]), f"{row[1]:,}", f"{row[2]:.1f}",
                           *[f"{100 * e:+.2f} %" for e in row[3:]])
             t.add_row("rate", "per DOF", "", *[f"{st.rates[q]:.2f}" for q in QUANTITIES])
-            Console().print(t)
+            Console(width=max(Console().width, 140)).print(t)
             (out / "convergence.json").write_text(json.dumps(
                 {"n": st.n, "dofs": st.dofs, "seconds": st.seconds, "errors": st.errors,
                  "rates": st.rates}, indent=2))
