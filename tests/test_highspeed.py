@@ -326,15 +326,30 @@ def test_bad_inputs_name_the_argument():
         hs.ball_mass(0.01, -1.0)
 
 
+@pytest.mark.parametrize("rpm, gyro", [(3000, "harris"), (3358, "harris"), (4000, "harris"),
+                                       (4000, "none")])
+def test_light_thrust_moderate_speed_converges(rpm, gyro):
+    """Found by hypothesis: 200 N thrust at 3000-4000 rpm (centrifugal force ~3x the
+    thrust share of a ball) left the damped Newton creeping at step 1/64 until
+    ConvergenceError; the Levenberg-Marquardt rescue must reach equilibrium."""
+    r = hs.solve(BRG, Fa=200.0, control="outer", gyroscopic=gyro, speed_inner=rpm * RPM)
+    assert r.relative_residual < 1e-8
+    assert np.all(r.outer_contact_angles < r.inner_contact_angles)   # F_c loads the outer race
+    assert np.all(r.outer_loads > r.inner_loads)
+
+
 @settings(max_examples=25, deadline=None)
 @given(Fa=st.floats(200.0, 40000.0), Fr=st.floats(0.0, 20000.0),
        rpm=st.floats(0.0, 15000.0), outer_ring=st.booleans(),
        control=st.sampled_from(["outer", "jones"]),
        gyro=st.sampled_from(list(hs.GYROSCOPIC)))
 def test_no_nan_for_valid_inputs(Fa, Fr, rpm, outer_ring, control, gyro):
-    """Random valid loads and speeds: finite results, converged equilibrium.  (Inner-race
-    control is left out: with light thrust at high speed it can have no equilibrium, the
-    friction needed at the inner contact exceeding its normal load; see the next test.)"""
+    """Random valid loads and speeds: finite results, converged equilibrium (an
+    unconverged solve raises ConvergenceError and fails).  Inner-race control is left
+    out: 2 of 400 random inner-control cases still raise (e.g. Fa = 446 N, Fr = 1158 N,
+    13,975 rpm, Harris gyroscopics: residual 2e-3) -- light load at high speed, where the
+    inner contact may be unable to control the ball; whether an equilibrium exists there
+    is not established.  Outer and Jones control: 0 failures in 300 random cases."""
     w = rpm * RPM
     kw = dict(speed_outer=w) if outer_ring else dict(speed_inner=w)
     r = hs.solve(BRG, Fa=Fa, Fr=Fr, control=control, gyroscopic=gyro, **kw)
@@ -346,13 +361,17 @@ def test_no_nan_for_valid_inputs(Fa, Fr, rpm, outer_ring, control, gyro):
     assert np.all(r.inner_loads >= 0) and np.all(r.outer_loads >= 0)
 
 
-def test_inner_control_without_equilibrium_raises_with_hint():
+def test_inner_control_light_inner_contact_converges_and_flags_slip():
     """Fa = 1000 N at 8641 rpm, inner control, gyroscopic moment reacted at the inner race:
-    the inner contact would need a friction force ~6x its normal load at 6000 rpm already
-    and no equilibrium exists at 8641 rpm; the error names residual and iterations."""
-    r = hs.solve(BRG, Fa=1000.0, speed_inner=6000 * RPM, control="inner",
-                 gyroscopic="controlling-race", friction_coefficient=0.1)
-    assert np.all(r.gyroscopic_slip)
-    with pytest.raises(hs.ConvergenceError, match=r"residual .* after \d+ Newton iterations"):
-        hs.solve(BRG, Fa=1000.0, speed_inner=8641 * RPM, control="inner",
-                 gyroscopic="controlling-race")
+    the inner contact carries ~3 N against ~220 N at the outer.  The equations do have a
+    solution (the damped Newton alone stalled here and this test used to expect an error;
+    the Levenberg-Marquardt rescue finds it), but with mu = 0.1 every ball would pivot.
+    An unreachable rtol still raises, naming residual, iterations and the hint."""
+    kw = dict(Fa=1000.0, speed_inner=8641 * RPM, control="inner",
+              gyroscopic="controlling-race")
+    r = hs.solve(BRG, friction_coefficient=0.1, **kw)
+    assert r.relative_residual < 1e-8 and np.all(r.gyroscopic_slip)
+    assert r.inner_loads.max() < 0.05 * r.outer_loads.min()
+    with pytest.raises(hs.ConvergenceError,
+                       match=r"residual .* after \d+ Newton iterations.*control='outer'"):
+        hs.solve(BRG, rtol=1e-300, **kw)
