@@ -17,7 +17,8 @@ are accepted by :func:`render`.
 from __future__ import annotations
 
 from .api import (GAPS, LEVELS, MODES, TOLERANCES, ContactCase, FEResult, MeshLevel,
-                  ball_case, ball_on_ball, ball_on_plane, ball_on_race, plane_case, race_case, run_case)
+                  ball_case, ball_on_ball, ball_on_plane, ball_on_race, plane_case, race_case,
+                  run_case)
 from .render import render
 from .solvers import SOLVERS, available_solvers
 

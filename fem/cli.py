@@ -92,7 +92,8 @@ def register(app: typer.Typer) -> None:
         case_file: Annotated[Optional[str], typer.Argument(
             help="CASE.toml, or the word 'convergence' for a mesh-convergence study.")] = None,
         case: Annotated[str, typer.Option(
-            help="race | plane | ball, or inner | outer for a race case (without a case file)")] = "race",
+            help="race | plane | ball, or inner | outer for a race case (without a case "
+                 "file)")] = "race",
         race: Annotated[str, typer.Option(help="inner | outer")] = "inner",
         load: Annotated[str, typer.Option(help='Ball load, e.g. "4450 N".')] = "4450 N",
         level: Annotated[str, typer.Option(help="quick | standard | fine")] = "standard",
