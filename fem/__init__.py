@@ -17,11 +17,12 @@ are accepted by :func:`render`.
 from __future__ import annotations
 
 from .api import (GAPS, LEVELS, MODES, TOLERANCES, ContactCase, FEResult, MeshLevel,
-                  ball_case, ball_on_ball, ball_on_plane, ball_on_race, plane_case, race_case,
-                  run_case)
+                  ball_case, ball_on_ball, ball_on_groove, ball_on_plane, ball_on_race,
+                  groove_case, plane_case, race_case, run_case)
 from .render import render
 from .solvers import SOLVERS, available_solvers
 
-__all__ = ["ball_on_race", "ball_on_plane", "ball_on_ball", "run_case", "render",
-           "race_case", "plane_case", "ball_case", "ContactCase", "FEResult", "LEVELS", "MeshLevel",
-           "MODES", "GAPS", "TOLERANCES", "SOLVERS", "available_solvers"]
+__all__ = ["ball_on_race", "ball_on_plane", "ball_on_ball", "ball_on_groove", "run_case",
+           "render", "race_case", "plane_case", "ball_case", "groove_case", "ContactCase",
+           "FEResult", "LEVELS", "MeshLevel", "MODES", "GAPS", "TOLERANCES", "SOLVERS",
+           "available_solvers"]

@@ -9,7 +9,7 @@ import logging
 import math
 import resource
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Callable
 
 import numpy as np
@@ -20,8 +20,8 @@ from ballrace.analytic.materials import BEARING_STEEL, Material, effective_modul
 from ballrace.meshes import geometry as geo
 
 __all__ = ["LEVELS", "MeshLevel", "MODES", "GAPS", "TOLERANCES", "ContactCase", "FEResult",
-           "ball_on_race", "ball_on_plane", "ball_on_ball", "run_case", "race_case", "plane_case",
-           "ball_case"]
+           "ball_on_race", "ball_on_plane", "ball_on_ball", "ball_on_groove", "run_case",
+           "race_case", "plane_case", "ball_case", "groove_case"]
 
 log = logging.getLogger(__name__)
 
@@ -206,6 +206,54 @@ def plane_case(ball_diameter: float, load: float, material: Material = BEARING_S
                        material1=m1, material2=m2)
 
 
+def groove_case(ball_diameter: float, load: float, race_radius: float, groove_radius: float,
+                race: str = "inner", material: Material = BEARING_STEEL,
+                race_material: Material | None = None) -> ContactCase:
+    """Ball in a race groove given by plain radii (no bearing needed), contact angle 0.
+
+    Parameters
+    ----------
+    ball_diameter : float
+        Ball diameter D [m].
+    load : float
+        Ball load Q [N], > 0.
+    race_radius : float
+        Distance from the bearing axis to the contact point, i.e. the race's radius in
+        the rolling plane [m]: > 0 for an inner race, > D for an outer race.
+    groove_radius : float
+        Groove (cross-section) radius r [m], > D/2.
+    race : {"inner", "outer"}
+    material, race_material : Material
+        Ball and race materials (the race defaults to the ball's).
+
+    The groove is the torus of an equivalent bearing with d_m = 2 race_radius + D
+    (inner) or 2 race_radius - D (outer) and f = r/D (Ricci 2009 eqs. 8-11), so this is
+    :func:`race_case` without the rest of the bearing.
+
+    Examples
+    --------
+    >>> c = groove_case(12.7e-3, 4450.0, 26.15e-3, 6.604e-3).analytic   # 209 inner race
+    >>> round(float(c.a) * 1e3, 3), round(float(c.b) * 1e3, 4)
+    (2.562, 0.276)
+    """
+    from ballrace.analytic.bearing import BallBearing
+
+    D = float(check_positive(ball_diameter, "ball_diameter", "m"))
+    check_choice(race, "race", ("inner", "outer"))
+    r = float(check_range(groove_radius, "groove_radius", D / 2, None, unit="m"))
+    if race == "inner":
+        Rr = float(check_positive(race_radius, "race_radius", "m"))
+        dm = 2.0 * Rr + D
+    else:
+        Rr = float(check_range(race_radius, "race_radius", D, None, unit="m"))
+        dm = 2.0 * Rr - D
+    m1 = _check_material(material, "material")
+    m2 = _check_material(race_material or material, "race_material")
+    brg = BallBearing(D, 3, dm, r / D, r / D, free_contact_angle=0.0, ball_material=m1,
+                      ring_material=m2)
+    return replace(race_case(brg, load, race, 0.0), name=f"ball in {race} groove")
+
+
 def ball_case(ball_diameter: float, load: float, material: Material = BEARING_STEEL,
               other_diameter: float | None = None,
               other_material: Material | None = None) -> ContactCase:
@@ -342,6 +390,16 @@ def ball_on_ball(ball_diameter: float, load: float, material: Material = BEARING
     """FE check of two balls pressed together (see :func:`ball_on_race`)."""
     return run_case(ball_case(ball_diameter, load, material, other_diameter), level=level,
                     mode=mode, gap=gap, **kwargs)
+
+
+def ball_on_groove(ball_diameter: float, load: float, race_radius: float, groove_radius: float,
+                   race: str = "inner", material: Material = BEARING_STEEL,
+                   level: str = "standard", mode: str = "half-space", gap: str = "hertz",
+                   race_material: Material | None = None, **kwargs) -> FEResult:
+    """FE check of a ball in a groove given by plain radii (:func:`groove_case`; options
+    as :func:`ball_on_race`)."""
+    return run_case(groove_case(ball_diameter, load, race_radius, groove_radius, race, material,
+                                race_material), level=level, mode=mode, gap=gap, **kwargs)
 
 
 # --------------------------------------------------------------------------- pipeline

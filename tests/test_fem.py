@@ -81,6 +81,23 @@ def test_cli_rejects_bad_input_before_meshing(tmp_path):
     assert res.exit_code == 2 and "case.kind must be" in res.output
 
 
+def test_groove_case_from_plain_radii_equals_bearing_case(brg209):
+    """A ball in a groove given by radii is the 209 race case without the bearing."""
+    from ballrace import fem
+
+    for race, Rr in (("inner", (65e-3 - 12.7e-3) / 2), ("outer", (65e-3 + 12.7e-3) / 2)):
+        g = fem.groove_case(12.7e-3, 4450.0, Rr, 0.52 * 12.7e-3, race=race)
+        c = fem.race_case(brg209, 4450.0, race)
+        for q in ("a", "b", "p_max", "approach"):
+            assert float(getattr(g.analytic, q)) == pytest.approx(float(getattr(c.analytic, q)),
+                                                                  rel=1e-12)
+        assert g.lower_radii == pytest.approx(c.lower_radii, rel=1e-12)
+    with pytest.raises(ValueError, match="groove_radius"):
+        fem.groove_case(12.7e-3, 100.0, 26e-3, 6.0e-3)               # r <= D/2
+    with pytest.raises(ValueError, match="race_radius"):
+        fem.groove_case(12.7e-3, 100.0, 10e-3, 6.6e-3, race="outer")  # inside the ball
+
+
 class _Brg:
     """Duck-typed bearing that skips BallBearing's own checks (to reach fem's)."""
 
