@@ -74,6 +74,16 @@ def _check_geometry(D, d_m, name_alpha, alpha):
     return D, d_m, a
 
 
+def _check_angles(D, d_m, contact_angle_inner, contact_angle_outer):
+    """Checked D, d_m, alpha_i and alpha_o (alpha_o defaults to alpha_i)."""
+    D, d_m, ai = _check_geometry(D, d_m, "contact_angle_inner", contact_angle_inner)
+    if contact_angle_outer is None:
+        return D, d_m, ai, ai
+    ao = check_range(contact_angle_outer, "contact_angle_outer", -0.5 * np.pi, 0.5 * np.pi,
+                     low_inclusive=True, high_inclusive=True, unit="rad")
+    return D, d_m, ai, ao
+
+
 def pitch_ratio(D, d_m, contact_angle=0.0):
     r"""Harris's gamma = D cos(alpha) / d_m [-].
 
@@ -231,10 +241,7 @@ def pitch_angle(D, d_m, contact_angle_inner, contact_angle_outer=None, control="
     33.639
     """
     check_choice(control, "control", CONTROLS)
-    ao = contact_angle_inner if contact_angle_outer is None else contact_angle_outer
-    D, d_m, ai = _check_geometry(D, d_m, "contact_angle_inner", contact_angle_inner)
-    ao = check_range(ao, "contact_angle_outer", -0.5 * np.pi, 0.5 * np.pi,
-                     low_inclusive=True, high_inclusive=True, unit="rad")
+    D, d_m, ai, ao = _check_angles(D, d_m, contact_angle_inner, contact_angle_outer)
     return _scalar(_pitch_angle(D / d_m, ai, ao, control))
 
 
@@ -382,10 +389,7 @@ def ball_kinematics(D, d_m, contact_angle_inner, contact_angle_outer=None,
     True
     """
     check_choice(control, "control", CONTROLS)
-    ao = contact_angle_inner if contact_angle_outer is None else contact_angle_outer
-    D, d_m, ai = _check_geometry(D, d_m, "contact_angle_inner", contact_angle_inner)
-    ao = check_range(ao, "contact_angle_outer", -0.5 * np.pi, 0.5 * np.pi,
-                     low_inclusive=True, high_inclusive=True, unit="rad")
+    D, d_m, ai, ao = _check_angles(D, d_m, contact_angle_inner, contact_angle_outer)
     wi = as_array(speed_inner, "speed_inner")
     wo = as_array(speed_outer, "speed_outer")
     beta, wc, wR, s_i, s_o, r_i, r_o = _kinematics(D / d_m, ai, ao, wi, wo, control)
@@ -438,10 +442,7 @@ def spin_to_roll(D, d_m, contact_angle_inner, contact_angle_outer=None, control=
     (0.22296, True)
     """
     check_choice(control, "control", CONTROLS)
-    ao = contact_angle_inner if contact_angle_outer is None else contact_angle_outer
-    D, d_m, ai = _check_geometry(D, d_m, "contact_angle_inner", contact_angle_inner)
-    ao = check_range(ao, "contact_angle_outer", -0.5 * np.pi, 0.5 * np.pi,
-                     low_inclusive=True, high_inclusive=True, unit="rad")
+    D, d_m, ai, ao = _check_angles(D, d_m, contact_angle_inner, contact_angle_outer)
     rho = D / d_m
     beta = _pitch_angle(rho, ai, ao, control)
     inner = (1.0 - rho * np.cos(ai)) * np.tan(ai - beta) + rho * np.sin(ai)

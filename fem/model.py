@@ -22,6 +22,7 @@ Everything heavy (scikit-fem) is imported inside the functions.
 """
 from __future__ import annotations
 
+import functools
 import logging
 import time
 from dataclasses import dataclass, field
@@ -206,6 +207,7 @@ def _skfem_mesh(points, tets):
     return MeshTet(p, t)
 
 
+@functools.lru_cache(maxsize=1)
 def _p2_gradient_products():
     """M[a, k, b, l] = (1/V) int c_ak c_bl dV for the P2 tetrahedron, with the gradients
     of the ten scalar basis functions written as grad N_a = sum_k c_ak(lambda) grad lambda_k.
@@ -290,10 +292,9 @@ def elasticity_p2(points, tets, element_dofs, n_dofs, E, nu, chunk: int = 20000)
         rows.append(np.repeat(d, 30, axis=1).ravel())
         cols.append(np.tile(d, (1, 30)).ravel())
         data.append(Ke.ravel())
-    K = sp.csr_matrix((np.concatenate(data), (np.concatenate(rows), np.concatenate(cols))),
-                      shape=(n_dofs, n_dofs))
-    K.sum_duplicates()
-    return K
+    # COO -> CSR sums the duplicate (shared-DOF) entries
+    return sp.csr_matrix((np.concatenate(data), (np.concatenate(rows), np.concatenate(cols))),
+                         shape=(n_dofs, n_dofs))
 
 
 def assemble_body(body: Body, grid: PressureGrid, solver: str | None = None) -> BodyState:

@@ -194,8 +194,9 @@ class RingSurface(Surface):
         """Ring surface height [m]: groove inside ``valid_y``, otherwise the land."""
         x, y = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
         inside = np.abs(y) <= self.valid_y
+        hl = self.land_height(x, y)
         hg = self.groove.height(x, np.where(inside, y, 0.0))
-        return np.where(inside, np.minimum(hg, self.land_height(x, y)), self.land_height(x, y))
+        return np.where(inside, np.minimum(hg, hl), hl)
 
 
 def ring_surface(ball_diameter: float, pitch_diameter: float, f: float, race: str,
