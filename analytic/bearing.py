@@ -406,7 +406,7 @@ class BallBearing:
 
         References
         ----------
-        Hamrock & Dowson (1981) eq. (3.58) (form restored, see REFERENCES.md), fig. 2.17.
+        Hamrock & Dowson (1981) eq. (3.58) (form restored from the geometry; docs/sources.md), fig. 2.17.
         """
         check_choice(race, "race", RACES)
         h = self.shoulder_height_inner if race == "inner" else self.shoulder_height_outer

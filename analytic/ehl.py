@@ -19,7 +19,7 @@ References
 Hamrock, B.J. & Dowson, D. (1977) "Isothermal elastohydrodynamic lubrication of point
 contacts, Part III — Fully flooded results", *J. Lubr. Technol.* 99(2) 264–276 (h_min,
 eq. 16; central film and k = 1.03 α^0.64) and Part IV (starvation results), 99(1) 15–23;
-Hamrock & Dowson (1981) *Ball Bearing Lubrication* ch. 8 (same fits); REFERENCES.md.
+Hamrock & Dowson (1981) *Ball Bearing Lubrication* ch. 8 (same fits); docs/sources.md.
 """
 from __future__ import annotations
 

@@ -567,7 +567,7 @@ def contact_capacity(ball_diameter, n_balls, pitch_diameter, contact_angle, conf
     References
     ----------
     Lundberg, G. & Palmgren, A. (1947) *Acta Polytech. Mech. Eng. Ser.* 1(3); Harris, T.A.
-    (2001) *Rolling Bearing Analysis*, 4th ed., eq. (18.27) (REFERENCES.md); Hamrock &
+    (2001) *Rolling Bearing Analysis*, 4th ed., eq. (18.27) (docs/sources.md); Hamrock &
     Dowson (1981) eqs. (3.117)–(3.123).
 
     Examples
@@ -666,7 +666,7 @@ def lundberg_palmgren_life(ball_loads, contact_angles, *, ball_diameter, pitch_d
     References
     ----------
     Lundberg & Palmgren (1947); Harris (2001) §18.6–18.8 (equivalent loads, eqs. 18.34,
-    18.35); Hamrock & Dowson (1981) eqs. (3.113)–(3.116); REFERENCES.md.
+    18.35); Hamrock & Dowson (1981) eqs. (3.113)–(3.116); docs/sources.md.
 
     Examples
     --------

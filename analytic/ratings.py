@@ -189,7 +189,7 @@ def fc_inch_pound(gamma, *, double_row_radial: bool = False):
 
     .. math:: f_{c,\,\mathrm{inch}} = f_{c,\,\mathrm{metric}}\,\frac{25.4^{1.8}}{4.448}
 
-    (REFERENCES.md; ANSI/AFBMA Std 9 Table 2 footnote 3).  Exact conversion uses
+    (ANSI/AFBMA Std 9 Table 2 footnote 3).  Exact conversion uses
     1 lbf = 4.4482216 N; the standard's 4.448 differs by 5e-6.
 
     Examples

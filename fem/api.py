@@ -42,7 +42,7 @@ class MeshLevel:
         (measured, docs/fem.md).
     tents_per_axis : float
         Largest number of pressure tents per semi-axis [-]; the tent spacing is never
-        below 1.4 surface elements (inf-sup, FE-NOTES), so ``inf`` ties the pressure
+        below 1.4 surface elements (inf-sup, docs/fem.md), so ``inf`` ties the pressure
         grid to the mesh (what a convergence study needs: with 16 the major-axis error
         of the 209 inner race levels off at -0.19 % once the mesh is finer than the
         tents).
@@ -434,7 +434,7 @@ def sizing(case: ContactCase, level) -> _Sizing:
     s = float(np.clip(ay / ax / STRETCH_RATIO, 1.0, lv.max_stretch)) if ay > ax else 1.0
     ext = 1.3
     Lx, Ly = ext * ax, ext * ay
-    # tent spacing: fine enough for the moments, >= 1.4x the surface mesh (inf-sup, FE-NOTES)
+    # tent spacing: fine enough for the moments, >= 1.4x the surface mesh (inf-sup, docs/fem.md)
     dx = max(ax / lv.tents_per_axis, 1.4 * h)
     dy = max(ay / lv.tents_per_axis, 1.4 * h * s)
     grid = PressureGrid(Lx, Ly, max(3, int(round(Lx / dx))), max(3, int(round(Ly / dy))))

@@ -1,7 +1,7 @@
 """Post-processing of a solved FE contact: what the analytic library predicts, measured.
 
 * ``a, b`` from the pressure moments, ``a_x = (5 int p x^2 dA / F)^(1/2)`` (exact for
-  the Hertz semi-ellipsoid); ``p_max = 3F/(2 pi a b)`` (FE-NOTES: the last active node
+  the Hertz semi-ellipsoid); ``p_max = 3F/(2 pi a b)`` (docs/fem.md: the last active node
   is quantised and nodal pressures oscillate, the moments are not);
 * approach by the depth-point method (:mod:`ballrace.fem.halfspace`);
 * stresses from the exact P2 displacement gradient of the element containing each
@@ -10,7 +10,7 @@
   positive into the lower body): ``tau_xz`` there is ``-sigma_xz`` of the mesh frame;
 * the depth of the orthogonal-shear peak from a quartic least-squares fit over the
   top 10 % of ``max_x |tau_xz|(z)`` (:func:`peak_fit`; the depth is ill-conditioned,
-  FE-NOTES).
+  docs/fem.md).
 """
 from __future__ import annotations
 

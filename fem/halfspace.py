@@ -1,6 +1,6 @@
 r"""Elastic half-space quantities under a Hertz pressure, by quadrature (numpy only).
 
-Used to make the FE approach comparable with Hertz's (FE-NOTES, "depth-point
+Used to make the FE approach comparable with Hertz's (docs/fem.md, "depth-point
 method"): Hertz's approach delta is the approach of *distant* points, while a finite
 FE body has its own bulk compliance.  The approach of two on-axis points at depth
 z_q (one per body) is, by Hertz theory, ``delta - w1(z_q) - w2(z_q)`` with w the

@@ -1,6 +1,6 @@
 r"""Elastic bodies, the pressure grid, the compliance matrix and the NNLS contact solve.
 
-Formulation (FE-NOTES; Kalker's variational principle in a discrete form):
+Formulation (docs/fem.md; Kalker's variational principle in a discrete form):
 
 * the contact pressure is ``p(x, y) = sum_k lambda_k phi_k(x, y)`` with bilinear tents
   ``phi_k`` on a structured grid over the expected quarter ellipse, independent of

@@ -1,7 +1,7 @@
 """Sparse symmetric positive-definite solvers with a run-time fallback chain.
 
 The FE check factorises one stiffness matrix per body and solves it for 30–200
-right-hand sides (the pressure tents).  Measured on 2 cores (FE-NOTES, P2
+right-hand sides (the pressure tents).  Measured on 2 cores (docs/fem.md, P2
 elasticity, 83k DOFs, factorisation / 100 right-hand sides):
 
 ==============================  ===============  ==========================

@@ -18,7 +18,7 @@ stretched back, which gives elements elongated along the ellipse's major axis (t
 stress gradients along y scale with a, across with b).  For the ball, the compressed
 body is an ellipsoid.
 
-Determinism (FE-NOTES): one thread, Delaunay 3-D (``Mesh.Algorithm3D = 1``), the OCC
+Determinism (docs/fem.md): one thread, Delaunay 3-D (``Mesh.Algorithm3D = 1``), the OCC
 sphere rotated so its poles and seam lie away from the contact; a test hashes the
 node coordinates of two independent runs.
 
@@ -191,7 +191,7 @@ def _generate(spec: MeshSpec) -> tuple[np.ndarray, np.ndarray]:
         elif spec.kind == "ball":
             R = spec.size[0]
             sph = occ.addSphere(0.0, 0.0, R, R)
-            # move the poles and the seam away from the contact point (FE-NOTES): the seam
+            # move the poles and the seam away from the contact point (docs/fem.md): the seam
             # meridian ends up in z >= R (cut away) and the poles on or beyond the equator.
             occ.rotate([(3, sph)], 0.0, 0.0, R, 0.0, 0.0, 1.0, 1.25 * math.pi)
             occ.rotate([(3, sph)], 0.0, 0.0, R, 1.0, -1.0, 0.0, -0.5 * math.pi)

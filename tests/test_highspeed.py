@@ -47,7 +47,7 @@ def test_zero_speed_thrust_equals_static_and_closed_form():
     s = ld.solve(BRG, Fa=Fa)
     np.testing.assert_allclose(r.inner_loads, s.ball_loads, rtol=1e-10)
     np.testing.assert_allclose(r.displacements, s.displacements, rtol=1e-9, atol=1e-18)
-    # Harris's chart value for this case (REFERENCES.md): beta ~ 41.6 deg
+    # Harris's chart value for this case (Harris 2001, thrust-load chart): beta ~ 41.6 deg
     assert np.degrees(beta) == pytest.approx(41.6, abs=0.1)
     assert np.all(r.centrifugal_force == 0) and np.all(r.gyroscopic_moment == 0)
 

@@ -5,7 +5,7 @@ Verification values (published, cited, tolerance justified):
   F_r = F_1 (1 + 2 cos^(5/2) 45 deg); rounded to the pound, so +-0.5 lb.
 * Ricci (2009): 218 bearing, F_a = 17,800 N at e = 50.8 mm: Q_max = 9,445 N, beta from
   44.317 to 16.169 deg, psi_l = 53.66 deg.  A faithful implementation of his eqs. (26),
-  (30), (31) lands within 1 % / 0.5 deg (REFERENCES.md); ours: -0.50 %, +0.15 deg,
+  (30), (31) lands within 1 % / 0.5 deg (docs/sources.md); ours: -0.50 %, +0.15 deg,
   -0.27 deg, +0.13 deg.
 * Harris (1966, chart method, quoted by Ricci): same bearing, pure 17,800 N thrust,
   beta = 41.6 deg (chart reading, +-0.1 deg).
