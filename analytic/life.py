@@ -17,7 +17,17 @@ Contents
   Harris's form; Hamrock & Dowson 1981 eqs. 3.113–3.123);
 * :func:`material_factor`, :func:`processing_factor`, :func:`lubrication_factor`,
   :func:`hardness_factor`, :func:`adjusted_life` — L_a = D E F G L (Hamrock & Dowson 1981
-  eq. 3.124, §3.5.2–3.5.4, after Bamberger et al. 1971).
+  eq. 3.124, §3.5.2–3.5.4, after Bamberger et al. 1971);
+* re-exported from :mod:`~ballrace.analytic.iso281`, :mod:`~ballrace.analytic.iso16281` and
+  :mod:`~ballrace.analytic.clearance` — the ISO 281:2007 modified rating life
+  (:func:`reliability_factor`, :func:`reference_viscosity`, :func:`viscosity_ratio`,
+  :func:`operating_viscosity`, :func:`fatigue_load_limit`, :func:`fatigue_load_limit_hertz`,
+  :func:`contamination_factor`, :func:`life_modification_factor`,
+  :func:`modified_rating_life`), the ISO/TS 16281 reference rating life
+  (:func:`reference_rating_life`) and the operating clearance
+  (:func:`operating_clearance`).  These are the life calculations the CLI and the case
+  files use; the Hamrock & Dowson factors above stay available for comparison with the
+  1981 literature (docs/life.md says why the ISO path is the default).
 
 Notes on the seed tables
 ------------------------
@@ -66,6 +76,22 @@ __all__ = [
     "lubrication_factor",
     "hardness_factor",
     "adjusted_life",
+    # ISO 281:2007, ISO/TS 16281, operating clearance (re-exported)
+    "reliability_factor",
+    "reference_viscosity",
+    "viscosity_ratio",
+    "walther_constants",
+    "operating_viscosity",
+    "fatigue_load_limit",
+    "fatigue_load_limit_hertz",
+    "contamination_factor",
+    "life_modification_factor",
+    "modified_rating_life",
+    "modified_rating_life_hours",
+    "reference_rating_life",
+    "ReferenceRatingLife",
+    "operating_clearance",
+    "OperatingClearance",
 ]
 
 log = logging.getLogger(__name__)
@@ -891,3 +917,12 @@ def adjusted_life(basic_life, *, material=1.0, processing=1.0, lubrication=1.0, 
 def _s(x):
     x = np.asarray(x, dtype=float)
     return x[()] if x.ndim == 0 else x
+
+
+# =========================================================================== ISO re-exports
+from .clearance import OperatingClearance, operating_clearance  # noqa: E402
+from .iso281 import (contamination_factor, fatigue_load_limit, fatigue_load_limit_hertz,  # noqa: E402
+                     life_modification_factor, modified_rating_life,
+                     modified_rating_life_hours, operating_viscosity, reference_viscosity,
+                     reliability_factor, viscosity_ratio, walther_constants)
+from .iso16281 import ReferenceRatingLife, reference_rating_life  # noqa: E402
