@@ -39,6 +39,29 @@ lubricant, with unit strings parsed by pint at this boundary only
     material = "52100"            # life factors (Hamrock & Dowson 1981 §3.5)
     processing = "air-melt"
     hardness_hrc = 58
+    reliability = 0.9             # ISO 281:2007 a1 (0.90 ... 0.9995)
+    cleanliness = "normal cleanliness"   # ISO 281 Table 13 level, or contamination = 0.5
+    fatigue_limit_method = "hertz"       # C_u: "hertz" (1.5 GPa) or "simplified" (C0/22),
+                                         # or fatigue_limit = "1.2 kN"
+
+    [oil]                         # optional: ISO 281 viscosity ratio kappa
+    nu40 = "68 mm^2/s"            # "cSt" also accepted
+    nu100 = "8.7 mm^2/s"
+    temperature = "70 degC"       # operating temperature (or viscosity = "20 mm^2/s")
+
+    [fits]                        # optional: operating clearance (thick-ring Lamé)
+    bore = "25 mm"
+    outside_diameter = "62 mm"
+    shaft_interference = "12 um"  # diametral; negative = loose
+    housing_interference = "0 um"
+    shaft_bore = "0 mm"           # hollow shaft
+    housing_diameter = "inf mm"   # outer diameter of the housing wall
+    inner_temperature = "50 degC" # rings (shaft, housing); fits made at 20 degC
+    outer_temperature = "40 degC"
+    housing_expansion = "11.5e-6 1/K"    # e.g. 23e-6 1/K for aluminium
+
+With ``[fits]`` the bearing's clearance is the unmounted one and the load distribution
+uses the operating clearance (negative: preload).
 
 Validation uses pydantic v2 (unknown keys are errors, so typos do not pass silently);
 every error names the file and the ``[table].key`` it is about.
@@ -110,6 +133,32 @@ def _models():
         processing: Optional[str] = None
         hardness_hrc: Optional[float] = Field(default=None, gt=0.0, le=70.0)
         lubrication_factor: Optional[float] = Field(default=None, gt=0.0)
+        reliability: float = Field(default=0.9, ge=0.9, le=0.9995)
+        contamination: Optional[float] = Field(default=None, ge=0.0, le=1.0)
+        cleanliness: Optional[str] = None
+        fatigue_limit: Optional[str] = None
+        fatigue_limit_method: Literal["hertz", "simplified"] = "hertz"
+
+    class OilSpec(_Strict):
+        nu40: Optional[str] = None
+        nu100: Optional[str] = None
+        temperature: Optional[str] = None
+        viscosity: Optional[str] = None
+
+    class FitsSpec(_Strict):
+        bore: str
+        outside_diameter: str
+        shaft_interference: str = "0 m"
+        housing_interference: str = "0 m"
+        shaft_bore: str = "0 m"
+        housing_diameter: str = "inf m"
+        inner_temperature: str = "20 degC"
+        outer_temperature: str = "20 degC"
+        reference_temperature: str = "20 degC"
+        shaft_expansion: Optional[str] = None
+        housing_expansion: Optional[str] = None
+        shaft: Optional[MaterialSpec] = None
+        housing: Optional[MaterialSpec] = None
 
     class CaseSpec(_Strict):
         title: str = ""
@@ -119,6 +168,8 @@ def _models():
         operation: OperationSpec
         lubricant: Optional[LubricantSpec] = None
         life: LifeSpec = LifeSpec()
+        oil: Optional[OilSpec] = None
+        fits: Optional[FitsSpec] = None
 
     return CaseSpec
 
@@ -144,6 +195,14 @@ class BearingCase:
     material, processing : Life-factor keys or None.
     hardness_hrc : Operating hardness [HRC] or None.
     lubrication_factor : Explicit lubrication factor F or None.
+    reliability : ISO 281 reliability [-].
+    contamination : e_C [-] (given or from ``cleanliness``) or None.
+    cleanliness : ISO 281 Table 13 level or None.
+    fatigue_limit : Explicit C_u [N] or None.
+    fatigue_limit_method : "hertz" or "simplified".
+    oil_viscosity : Kinematic viscosity at the operating temperature [m^2/s] or None.
+    oil : dict(nu40, nu100 [m^2/s], temperature [K]) or None.
+    clearance : :class:`~ballrace.analytic.clearance.OperatingClearance` from ``[fits]`` or None.
     """
 
     title: str
@@ -163,6 +222,22 @@ class BearingCase:
     processing: Optional[str]
     hardness_hrc: Optional[float]
     lubrication_factor: Optional[float]
+    reliability: float = 0.9
+    contamination: Optional[float] = None
+    cleanliness: Optional[str] = None
+    fatigue_limit: Optional[float] = None
+    fatigue_limit_method: str = "hertz"
+    oil_viscosity: Optional[float] = None
+    oil: Optional[dict] = None
+    clearance: Optional[object] = None
+
+    @property
+    def solver_options(self) -> dict:
+        """Keyword arguments for the load distribution: the operating clearance of
+        ``[fits]`` when it is a preload (a positive one is already the bearing's)."""
+        if self.clearance is not None and self.clearance.operating < 0:
+            return {"clearance": self.clearance.operating}
+        return {}
 
     @property
     def speed_rpm(self) -> float:
@@ -191,6 +266,105 @@ def _speed(text: str, where: str) -> float:
     if not w > 0:
         raise CaseFileError(f"{where}: must be > 0; got {s!r}")
     return w
+
+
+def _temperature(text, where: str) -> float:
+    """Absolute temperature [K] from "70 degC", "343.15 K", "158 degF"."""
+    from ballrace.units import ureg
+
+    s = str(text).strip()
+    parts = s.split(None, 1)
+    try:
+        value = float(parts[0])
+        unit = parts[1] if len(parts) > 1 else ""
+        if not unit:
+            raise ValueError("no unit")
+        T = float(ureg().Quantity(value, unit).to("K").magnitude)
+    except Exception as exc:  # pint raises several error types
+        raise CaseFileError(f"{where}: cannot read {s!r} as a temperature such as "
+                            f"\"70 degC\" or \"343.15 K\" ({exc})") from None
+    if not T > 0:
+        raise CaseFileError(f"{where}: must be above absolute zero; got {s!r}")
+    return T
+
+
+def _iso_inputs(spec, brg, source, q):
+    """ISO 281 / fits inputs of a case (see :func:`parse_case`)."""
+    from ballrace.analytic import clearance as _cl
+    from ballrace.analytic import iso281
+
+    out: dict = {}
+    lf = spec.life
+    if lf.contamination is not None and lf.cleanliness is not None:
+        raise CaseFileError(f"{source}: [life]: give contamination or cleanliness, not both")
+    eC = lf.contamination
+    if lf.cleanliness is not None:
+        if lf.cleanliness not in iso281.CONTAMINATION_LEVELS:
+            raise CaseFileError(f"{source}: [life].cleanliness must be one of "
+                                f"{', '.join(iso281.CONTAMINATION_LEVELS)}; got "
+                                f"{lf.cleanliness!r}")
+        eC = iso281.contamination_factor(lf.cleanliness, brg.pitch_diameter)
+    out.update(reliability=lf.reliability, contamination=eC, cleanliness=lf.cleanliness,
+               fatigue_limit=q(lf.fatigue_limit, "[force]", "[life].fatigue_limit"),
+               fatigue_limit_method=lf.fatigue_limit_method)
+    if out["fatigue_limit"] is not None and not out["fatigue_limit"] > 0:
+        raise CaseFileError(f"{source}: [life].fatigue_limit must be > 0 N")
+    oil = spec.oil
+    if oil is not None:
+        visc_dim = "[length] ** 2 / [time]"
+        if oil.viscosity is not None:
+            if any(v is not None for v in (oil.nu40, oil.nu100, oil.temperature)):
+                raise CaseFileError(f"{source}: [oil]: give viscosity (at the operating "
+                                    "temperature) or nu40, nu100 and temperature, not both")
+            out["oil_viscosity"] = q(oil.viscosity, visc_dim, "[oil].viscosity")
+        else:
+            missing = [k for k in ("nu40", "nu100", "temperature") if getattr(oil, k) is None]
+            if missing:
+                raise CaseFileError(f"{source}: [oil]: missing {', '.join(missing)} (or give "
+                                    "viscosity at the operating temperature)")
+            d = dict(nu40=q(oil.nu40, visc_dim, "[oil].nu40"),
+                     nu100=q(oil.nu100, visc_dim, "[oil].nu100"),
+                     temperature=_temperature(oil.temperature, f"{source}: [oil].temperature"))
+            try:
+                out["oil_viscosity"] = float(iso281.operating_viscosity(**d))
+            except ValueError as exc:
+                raise CaseFileError(f"{source}: [oil]: {exc}") from None
+            out["oil"] = d
+    f = spec.fits
+    if f is not None:
+        import ballrace
+
+        mats = {}
+        for which in ("shaft", "housing"):
+            m = getattr(f, which)
+            if m is not None:
+                mats[which] = ballrace.Material(E=q(m.E, "[pressure]", f"[fits.{which}].E"),
+                                                nu=m.nu, name=m.name or which)
+        exp = {k: q(getattr(f, k), "1 / [temperature]", f"[fits].{k}")
+               for k in ("shaft_expansion", "housing_expansion")}
+        T = {k: _temperature(getattr(f, k), f"{source}: [fits].{k}")
+             for k in ("inner_temperature", "outer_temperature", "reference_temperature")}
+        try:
+            out["clearance"] = _cl.operating_clearance(
+                brg, bore=q(f.bore, "[length]", "[fits].bore"),
+                outside_diameter=q(f.outside_diameter, "[length]", "[fits].outside_diameter"),
+                shaft_interference=q(f.shaft_interference, "[length]", "[fits].shaft_interference"),
+                housing_interference=q(f.housing_interference, "[length]",
+                                       "[fits].housing_interference"),
+                shaft_bore=q(f.shaft_bore, "[length]", "[fits].shaft_bore"),
+                housing_diameter=parse_inf(q, f.housing_diameter, "[fits].housing_diameter"),
+                shaft_material=mats.get("shaft"), housing_material=mats.get("housing"),
+                **T, **exp)
+        except ValueError as exc:
+            raise CaseFileError(f"{source}: [fits]: {exc}") from None
+    return out
+
+
+def parse_inf(q, value, where):
+    """``q`` that accepts an infinite length ("inf mm")."""
+    if str(value).strip().lower().startswith("inf"):
+        return math.inf
+    return q(value, "[length]", where)
 
 
 def parse_case(data: dict, source: str = "<case>") -> BearingCase:
@@ -314,13 +488,22 @@ def parse_case(data: dict, source: str = "<case>") -> BearingCase:
         raise CaseFileError(f"{source}: [bearing]: a deep-groove bearing with a free contact "
                             f"angle of {np.degrees(brg.free_contact_angle):.1f} deg; use "
                             "type = \"angular-contact\"")
+    iso = _iso_inputs(spec, brg, source, q)
+    oc = iso.get("clearance")
+    if oc is not None:
+        if oc.operating >= 0:
+            brg = oc.bearing(brg)
+        elif Fa != 0 and Fr == 0:
+            raise CaseFileError(f"{source}: [fits]: the operating clearance "
+                                f"{oc.operating * 1e6:.3g} um is a preload; the thrust "
+                                "solvers take no preload: give a radial load component")
     return BearingCase(
         title=spec.title, bearing=brg, kind=spec.bearing.type, radial_load=Fr, axial_load=Fa,
         eccentricity=ecc, speed=_speed(spec.operation.speed, f"{source}: [operation].speed"),
         rotating_ring=spec.operation.rotating_ring, viscosity=visc, pressure_viscosity=xi,
         roughness_race=rq_r, roughness_ball=rq_b, standard=lf.standard, material=lf.material,
         processing=lf.processing, hardness_hrc=lf.hardness_hrc,
-        lubrication_factor=lf.lubrication_factor)
+        lubrication_factor=lf.lubrication_factor, **iso)
 
 
 def load_case(path) -> BearingCase:

@@ -45,7 +45,7 @@ def analyze(case) -> dict:
     if i != 1:
         raise ValueError("the load distribution handles single-row bearings only (n_rows = 1)")
     if Fa == 0.0:
-        res = brg.radial(Fr)
+        res = brg.radial(Fr, **case.solver_options)
         method = "radial (H&D 1981 eqs. 3.39-3.42)"
     elif Fr == 0.0 and case.eccentricity is None:
         res = brg.thrust(Fa)
@@ -54,7 +54,7 @@ def analyze(case) -> dict:
         res = brg.eccentric_thrust(Fa, case.eccentricity)
         method = "eccentric thrust (Ricci 2009)"
     else:
-        res = brg.combined(Fr, Fa)
+        res = brg.combined(Fr, Fa, **case.solver_options)
         method = "combined radial and thrust (Jones; H&D 1981 eqs. 3.61-3.74)"
     Q = np.asarray(res.ball_loads, dtype=float)
     beta = np.asarray(res.contact_angles, dtype=float)
@@ -135,6 +135,11 @@ def analyze(case) -> dict:
                      f"angle {math.degrees(brg.free_contact_angle):.2f} deg is used by the "
                      "load distribution")
 
+    # ---------------------------------------------------------------- ISO 281 / 16281 (issue 12)
+    from ballrace.analytic import isocase
+
+    iso = isocase.iso_life(case, res, P=out_life.get("P"))
+
     return {
         "title": case.title,
         "units": {"length": "m", "force": "N", "pressure": "Pa", "angle": "rad",
@@ -158,6 +163,7 @@ def analyze(case) -> dict:
         },
         "life": out_life,
         "film": film,
+        "iso": iso,
         "notes": notes,
     }
 
@@ -245,6 +251,10 @@ def _render(r: dict) -> None:
         con.print(t)
     for n in r["notes"]:
         con.print(f"[dim]note: {n}[/dim]")
+    if r.get("iso"):                      # ISO 281 / ISO/TS 16281 block (issue 12)
+        from ballrace.analytic.isocase import render as _render_iso
+
+        _render_iso(r["iso"], con)
 
 
 def _um(x: float) -> str:

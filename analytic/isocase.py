@@ -1,0 +1,171 @@
+"""ISO 281:2007 / ISO/TS 16281 life and operating clearance of a bearing case.
+
+Used by ``ballrace bearing CASE.toml`` (:mod:`ballrace.analytic.cli`): :func:`iso_life`
+computes plain SI numbers from a validated case and its load distribution; :func:`rows`
+turns them into (quantity, value, unit) rows for the report table.
+"""
+from __future__ import annotations
+
+import logging
+import math
+
+__all__ = ["iso_life", "rows"]
+
+log = logging.getLogger(__name__)
+
+
+def iso_life(case, result, P=None) -> dict:
+    """κ, e_C, C_u, a_ISO, L_nm, L10r, L10mr and the operating clearance of a case.
+
+    Parameters
+    ----------
+    case : BearingCase
+        Validated case (:func:`ballrace.analytic.casefile.load_case`).
+    result : LoadDistribution
+        Its load distribution (one load case).
+    P : float, optional
+        ISO 281 dynamic equivalent load [N]; without it L_nm is not computed.
+
+    Returns
+    -------
+    dict
+        SI values (N, m, m²/s, 1e6 rev; ``*_h`` in hours) and ``notes``.
+
+    Examples
+    --------
+    >>> from ballrace.analytic.casefile import parse_case
+    >>> case = parse_case({"bearing": {"ball_diameter": "11.5 mm", "n_balls": 7,
+    ...     "pitch_diameter": "43.5 mm", "f_inner": 0.52, "f_outer": 0.53,
+    ...     "diametral_clearance": "0 mm"}, "loads": {"radial": "1 kN"},
+    ...     "operation": {"speed": "3000 rpm"}, "oil": {"viscosity": "20 mm^2/s"},
+    ...     "life": {"cleanliness": "normal cleanliness"}})
+    >>> r = iso_life(case, case.bearing.radial(1000.0), P=1000.0)
+    >>> round(r["kappa"], 3), r["contamination"], round(r["L10r"])
+    (1.606, 0.55, 11518)
+    """
+    from ballrace.analytic import iso281, iso16281, ratings
+
+    brg = case.bearing
+    a_nom = case.nominal_contact_angle
+    dm = brg.pitch_diameter
+    notes: list[str] = []
+    C = float(ratings.dynamic_rating(brg, contact_angle=a_nom, standard="ISO 281:2007"))
+    C0 = float(ratings.static_rating(brg, contact_angle=a_nom))
+    Cu_simple = float(iso281.fatigue_load_limit(C0, dm))
+    Cu_hertz = iso281.fatigue_load_limit_hertz(brg, a_nom).C_u
+    if case.fatigue_limit is not None:
+        Cu, Cu_src = case.fatigue_limit, "given"
+    elif case.fatigue_limit_method == "simplified":
+        Cu, Cu_src = Cu_simple, "C0/22 (ISO 281 Annex B, simplified)"
+    else:
+        Cu, Cu_src = Cu_hertz, "1.5 GPa contact stress (ISO 281 Annex B, Hertz)"
+    out: dict = {"C": C, "C_u": Cu, "C_u_source": Cu_src, "C_u_simplified": Cu_simple,
+                 "C_u_hertz": Cu_hertz, "reliability": case.reliability,
+                 "a1": float(iso281.reliability_factor(case.reliability)),
+                 "contamination": case.contamination, "cleanliness": case.cleanliness}
+    ref = iso16281.reference_rating_life(brg, result, dynamic_rating=C,
+                                         rotating=case.rotating_ring,
+                                         nominal_contact_angle=a_nom)
+    n = case.speed_rpm
+    out.update(L10r=ref.L10r, L10r_h=ref.hours(n), P_ref=ref.P_ref, Q_ci=ref.Q_ci,
+               Q_ce=ref.Q_ce, Q_ei=ref.Q_ei, Q_ee=ref.Q_ee)
+    nu = case.oil_viscosity
+    if nu is not None:
+        out["viscosity"] = nu
+        out["nu1"] = float(iso281.reference_viscosity(n, dm))
+        out["kappa"] = float(iso281.viscosity_ratio(nu, n, dm))
+        if case.oil:
+            out["oil_temperature"] = case.oil["temperature"]
+    else:
+        notes.append("no [oil]: kappa, a_ISO, L_nm and L10mr not computed")
+    if case.contamination is None:
+        notes.append("no [life].contamination or cleanliness: a_ISO, L_nm and L10mr not "
+                     "computed")
+    if "kappa" in out and case.contamination is not None:
+        if out["kappa"] < iso281.KAPPA_MIN:
+            notes.append(f"kappa = {out['kappa']:.3g} < 0.1: outside ISO 281:2007, no a_ISO")
+        else:
+            kw = dict(kappa=out["kappa"], contamination=case.contamination, fatigue_limit=Cu)
+            if P is not None:
+                a = float(iso281.life_modification_factor(load=P, **kw))
+                L = out["a1"] * a * (C / P) ** 3
+                out.update(P=P, a_ISO=a, L_nm=L, L_nm_h=L * 1e6 / (60.0 * n))
+            aref = ref.a_iso(**kw)
+            Lmr = ref.modified(reliability=case.reliability, **kw)
+            out.update(a_ISO_ref=aref, L10mr=Lmr, L10mr_h=Lmr * 1e6 / (60.0 * n))
+            if out["kappa"] > iso281.KAPPA_MAX:
+                notes.append(f"kappa = {out['kappa']:.3g} > 4 taken as 4 (ISO 281:2007)")
+    oc = case.clearance
+    if oc is not None:
+        out["clearance"] = {"initial": oc.initial, "fit_inner": oc.fit_inner,
+                            "fit_outer": oc.fit_outer, "thermal": oc.thermal,
+                            "operating": oc.operating, "pressure_inner": oc.pressure_inner,
+                            "pressure_outer": oc.pressure_outer}
+        if oc.operating < 0:
+            notes.append(f"operating clearance {oc.operating * 1e6:.3g} um: preload")
+    notes.append(f"C_u: simplified C0/22 = {Cu_simple:.4g} N, 1.5 GPa Hertz method = "
+                 f"{Cu_hertz:.4g} N (ratio {Cu_hertz / Cu_simple:.3f})")
+    out["notes"] = notes
+    return out
+
+
+def rows(iso: dict) -> list[tuple[str, object, str]]:
+    """(quantity, value, unit) rows of :func:`iso_life` for the report (SI -> display units).
+
+    Examples
+    --------
+    >>> rows({"C": 22381.0, "C_u": 660.0, "C_u_source": "given", "a1": 1.0,
+    ...       "reliability": 0.9, "L10r": 11518.0, "L10r_h": 63989.0,
+    ...       "P_ref": 991.0})[0]
+    ('C (ISO 281:2007)', 22.381, 'kN')
+    """
+    r: list[tuple[str, object, str]] = [
+        ("C (ISO 281:2007)", iso["C"] / 1e3, "kN"),
+        ("fatigue load limit C_u", iso["C_u"] / 1e3, f"kN ({iso['C_u_source']})"),
+    ]
+    if "viscosity" in iso:
+        if "oil_temperature" in iso:
+            r.append(("oil temperature", iso["oil_temperature"] - 273.15, "degC"))
+        r += [("operating viscosity nu", iso["viscosity"] * 1e6, "mm^2/s"),
+              ("reference viscosity nu1", iso["nu1"] * 1e6, "mm^2/s"),
+              ("viscosity ratio kappa", iso["kappa"], "")]
+    if iso.get("contamination") is not None:
+        lvl = f" ({iso['cleanliness']})" if iso.get("cleanliness") else ""
+        r.append(("contamination factor e_C", iso["contamination"], lvl.strip()))
+    r.append((f"reliability {iso['reliability'] * 100:g} %: a1", iso["a1"], ""))
+    if "a_ISO" in iso:
+        r += [("a_ISO (e_C C_u / P)", iso["a_ISO"], ""),
+              ("modified rating life L_nm", iso["L_nm"], "1e6 rev"),
+              ("modified rating life L_nmh", iso["L_nm_h"], "h")]
+    r += [("reference rating life L10r (ISO/TS 16281)", iso["L10r"], "1e6 rev"),
+          ("L10r", iso["L10r_h"], "h"),
+          ("equivalent reference load P_ref", iso["P_ref"], "N")]
+    if "L10mr" in iso:
+        r += [("a_ISO (e_C C_u / P_ref)", iso["a_ISO_ref"], ""),
+              ("modified reference life L10mr", iso["L10mr"], "1e6 rev"),
+              ("L10mr", iso["L10mr_h"], "h")]
+    c = iso.get("clearance")
+    if c:
+        r += [("unmounted clearance", c["initial"] * 1e6, "um"),
+              ("- inner fit / outer fit", f"{c['fit_inner'] * 1e6:.3g} / "
+               f"{c['fit_outer'] * 1e6:.3g}", "um"),
+              ("+ temperatures", c["thermal"] * 1e6, "um"),
+              ("operating clearance", c["operating"] * 1e6,
+               "um (preload)" if c["operating"] < 0 else "um")]
+    return [(q, v if isinstance(v, str) or not math.isfinite(v) else float(v), u)
+            for q, v, u in r]
+
+
+def render(iso: dict, console) -> None:
+    """Print the ISO life table of :func:`iso_life` on a rich ``console``."""
+    from rich.table import Table
+
+    t = Table(title="Life — ISO 281:2007 modified rating life, ISO/TS 16281 reference life")
+    t.add_column("quantity")
+    t.add_column("value", justify="right")
+    t.add_column("unit")
+    for name, v, u in rows(iso):
+        t.add_row(name, v if isinstance(v, str) else f"{v:.6g}", u)
+    console.print(t)
+    for n in iso.get("notes", []):
+        console.print(f"[dim]note: {n}[/dim]")
