@@ -90,3 +90,128 @@ def hardness(hardness_hrc):
 
     g = float(life.hardness_factor(hardness_hrc))
     return {"G": g, "life_drop": 1.0 - g}
+
+
+# --------------------------------------------------------------------------- ISO 281:2007,
+# ISO/TS 16281 and operating clearance (issue 12)
+_ISO281 = "ballrace.analytic.iso281"
+_ISO16281 = "ballrace.analytic.iso16281"
+_CLEAR = "ballrace.analytic.clearance"
+
+
+@calculation("life.iso_reliability", requires=(_ISO281 + ":reliability_factor",),
+             inputs={"reliability": Param("")},
+             outputs={"a1": "", "a1_formula": ""})
+def iso_reliability(reliability):
+    """ISO 281:2007 a1: Table 12 value and the Weibull formula behind it."""
+    from ballrace.analytic import iso281
+
+    return {"a1": float(iso281.reliability_factor(reliability)),
+            "a1_formula": float(iso281.reliability_factor(reliability, method="formula"))}
+
+
+@calculation("life.iso_viscosity", requires=(_ISO281 + ":operating_viscosity",),
+             inputs={"nu40": Param("[length] ** 2 / [time]"),
+                     "nu100": Param("[length] ** 2 / [time]"),
+                     "temperature": Param("[temperature]"),
+                     "speed": Param("1 / [time]"), "pitch_diameter": Param("[length]")},
+             outputs={"nu": "[length] ** 2 / [time]", "nu1": "[length] ** 2 / [time]",
+                      "kappa": ""})
+def iso_viscosity(nu40, nu100, temperature, speed, pitch_diameter):
+    """Walther / ASTM D341 viscosity at temperature, ISO 281 nu1 and kappa."""
+    from ballrace.analytic import iso281
+
+    nu = float(iso281.operating_viscosity(nu40, nu100, temperature))
+    n = _rpm(speed)
+    return {"nu": nu, "nu1": float(iso281.reference_viscosity(n, pitch_diameter)),
+            "kappa": float(iso281.viscosity_ratio(nu, n, pitch_diameter))}
+
+
+@calculation("life.iso_a_iso", requires=(_ISO281 + ":life_modification_factor",),
+             inputs={"kappa": Param(""), "load_ratio": Param("")},
+             outputs={"a_ISO": "", "jump_at_0p4": "", "jump_at_1": ""})
+def iso_a_iso(kappa, load_ratio):
+    """a_ISO(kappa, e_C C_u / P) of radial ball bearings and its relative jumps at the
+    kappa-range boundaries 0.4 and 1 (at the same load ratio)."""
+    from ballrace.analytic import iso281
+
+    f = iso281.life_modification_factor
+
+    def jump(k):
+        lo, hi = float(f(k * (1 - 1e-12), 1.0, load_ratio, 1.0)), float(f(k, 1.0, load_ratio, 1.0))
+        return abs(hi / lo - 1.0)
+
+    return {"a_ISO": float(f(kappa, 1.0, load_ratio, 1.0)), "jump_at_0p4": jump(0.4),
+            "jump_at_1": jump(1.0)}
+
+
+@calculation("life.iso_fatigue_limit", requires=(_ISO281 + ":fatigue_load_limit_hertz",),
+             inputs={"ball_diameter": Param("[length]"), "n_balls": Param("int"),
+                     "pitch_diameter": Param("[length]"), "f_inner": Param(""),
+                     "f_outer": Param(""), "E": Param("[pressure]"), "nu": Param("")},
+             outputs={"C_u_hertz": "[force]", "C_u_simplified": "[force]", "ratio": ""})
+def iso_fatigue_limit(ball_diameter, n_balls, pitch_diameter, f_inner, f_outer, E, nu):
+    """C_u by the 1.5 GPa Hertz method and by C0/22 (ISO 281:2007 Annex B)."""
+    import ballrace
+    from ballrace.analytic import iso281, ratings
+
+    brg = ballrace.BallBearing(ball_diameter, n_balls, pitch_diameter, f_inner, f_outer,
+                               diametral_clearance=0.0, material=ballrace.Material(E=E, nu=nu))
+    h = iso281.fatigue_load_limit_hertz(brg).C_u
+    s = float(iso281.fatigue_load_limit(ratings.static_rating(brg, contact_angle=0.0),
+                                        pitch_diameter))
+    return {"C_u_hertz": h, "C_u_simplified": s, "ratio": h / s}
+
+
+@calculation("life.iso_reference_life",
+             requires=(_ISO16281 + ":reference_rating_life", _LIFE + ":bearing_life"),
+             inputs={"ball_diameter": Param("[length]"), "n_balls": Param("int"),
+                     "pitch_diameter": Param("[length]"), "f_inner": Param(""),
+                     "f_outer": Param(""), "radial_load": Param("[force]"),
+                     "clearance": Param("[length]", 0.0), "azimuth_offset": Param("[angle]", 0.0)},
+             outputs={"C": "[force]", "L10r": "", "L10": "", "L10r_over_L10": "",
+                      "L10r_over_LP": ""})
+def iso_reference_life(ball_diameter, n_balls, pitch_diameter, f_inner, f_outer, radial_load,
+                       clearance, azimuth_offset):
+    """ISO/TS 16281 L10r of a deep-groove bearing under radial load, against (C/Fr)^3 and
+    against the Lundberg-Palmgren bearing_life of the same ball loads."""
+    import ballrace
+    from ballrace.analytic import life, ratings
+
+    brg = ballrace.BallBearing(ball_diameter, n_balls, pitch_diameter, f_inner, f_outer,
+                               diametral_clearance=max(clearance, 0.0))
+    res = brg.radial(radial_load, clearance=clearance, azimuth_offset=azimuth_offset)
+    C = float(ratings.dynamic_rating(brg, contact_angle=0.0))
+    r = life.reference_rating_life(brg, res, nominal_contact_angle=0.0)
+    L10 = (C / radial_load) ** 3
+    return {"C": C, "L10r": r.L10r, "L10": L10, "L10r_over_L10": r.L10r / L10,
+            "L10r_over_LP": r.L10r / life.bearing_life(brg, res).L10}
+
+
+@calculation("life.operating_clearance", requires=(_CLEAR + ":operating_clearance",),
+             inputs={"ball_diameter": Param("[length]"), "pitch_diameter": Param("[length]"),
+                     "initial_clearance": Param("[length]"), "bore": Param("[length]"),
+                     "outside_diameter": Param("[length]"),
+                     "shaft_interference": Param("[length]", 0.0),
+                     "housing_interference": Param("[length]", 0.0),
+                     "shaft_bore": Param("[length]", 0.0),
+                     "inner_temperature": Param("[temperature]", 293.15),
+                     "outer_temperature": Param("[temperature]", 293.15)},
+             outputs={"fit_inner": "[length]", "fit_outer": "[length]", "thermal": "[length]",
+                      "operating": "[length]"})
+def operating_clearance(ball_diameter, pitch_diameter, initial_clearance, bore,
+                        outside_diameter, shaft_interference, housing_interference, shaft_bore,
+                        inner_temperature, outer_temperature):
+    """Operating clearance from fits (Lamé) and ring temperatures (steel throughout)."""
+    import ballrace
+    from ballrace.analytic import clearance as cl
+
+    brg = ballrace.BallBearing(ball_diameter, 7, pitch_diameter, 0.52, 0.53,
+                               diametral_clearance=initial_clearance)
+    oc = cl.operating_clearance(brg, bore=bore, outside_diameter=outside_diameter,
+                                shaft_interference=shaft_interference,
+                                housing_interference=housing_interference,
+                                shaft_bore=shaft_bore, inner_temperature=inner_temperature,
+                                outer_temperature=outer_temperature)
+    return {"fit_inner": oc.fit_inner, "fit_outer": oc.fit_outer, "thermal": oc.thermal,
+            "operating": oc.operating}
