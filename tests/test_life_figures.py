@@ -33,7 +33,7 @@ def test_aiso_family_matches_the_standard_figure(figs):
 def test_clearance_optimum_is_a_slight_preload(figs):
     for s in figs["life-clearance"].panels[0]["series"]:
         best = s["x"][int(np.argmax(s["y"]))]
-        assert -20.0 <= best < 0.0
+        assert -25.0 <= best < 0.0          # interior optimum (the curve starts at -30)
 
 
 def test_misalignment_eventually_shortens_life(figs):

@@ -75,7 +75,7 @@ def clearance_figure(load: float = 2000.0) -> Figure:
     C = float(ratings.dynamic_rating(brg, contact_angle=0.0))
     series = []
     for Fr in (0.5 * load, load, 2.0 * load):
-        pd = np.linspace(-20e-6, 40e-6, 61)
+        pd = np.linspace(-30e-6, 40e-6, 71)
         L = np.array([life.reference_rating_life(brg, brg.radial(Fr, clearance=p),
                                                  nominal_contact_angle=0.0).L10r for p in pd])
         series.append({"x": pd * 1e6, "y": L / (C / Fr) ** 3, "label": f"F_r = {Fr:g} N"})
