@@ -121,3 +121,22 @@ def test_fit_pressure_broadcasts():
     assert math.isfinite(float(clearance.fit_pressure(1e-5, Do, E, math.inf, E_ring=2e11,
                                                       nu_ring=0.3, E_mate=2e11, nu_mate=0.3,
                                                       ring="outer")))
+
+
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+
+@settings(max_examples=40, deadline=None)
+@given(I=st.floats(1e-9, 60e-6), d0=st.floats(0.0, 0.02), Eratio=st.floats(0.3, 3.0))
+def test_fit_reduction_bounded_and_monotone(I, d0, Eratio):
+    """The raceway can never grow more than on a rigid shaft, where the bore takes the whole
+    interference: Delta_F = I 2 d F / (F^2 + d^2 + nu (F^2 - d^2)) (Lamé, internal pressure);
+    a solid shaft pushes it out further than a hollow one."""
+    shaft = ballrace.Material(E=200e9 * Eratio, nu=0.3)
+    oc = life.operating_clearance(BRG, bore=d, outside_diameter=Do, shaft_interference=I,
+                                  shaft_bore=d0, shaft_material=shaft)
+    assert 0.0 <= oc.fit_inner <= I * 2 * d * F / (F**2 + d**2 + 0.3 * (F**2 - d**2)) * (1 + 1e-12)
+    solid = life.operating_clearance(BRG, bore=d, outside_diameter=Do, shaft_interference=I,
+                                     shaft_material=shaft)
+    assert oc.fit_inner <= solid.fit_inner * (1 + 1e-12)
