@@ -188,8 +188,10 @@ def reference_rating_life(bearing, result, *, dynamic_rating=None, rotating: str
     bearing : BallBearing
         Geometry (D, Z, D_pw, f_i, f_o, rows).
     result : object
-        Needs ``ball_loads`` [N] (one per ball, 0 for unloaded ones, a single load case);
-        a high-speed result's ``ball_loads_outer`` is used for the outer raceway.
+        A static solution with ``ball_loads`` [N] (one per ball, 0 for unloaded ones, a
+        single load case; an optional ``ball_loads_outer`` for the outer raceway), or a
+        high-speed solution (:class:`ballrace.analytic.highspeed.HighSpeedResult`) whose
+        ``inner_loads`` and ``outer_loads`` [N] differ by the centrifugal force.
     dynamic_rating : float, optional
         Basic dynamic load rating C [N]; default the bearing's ISO 281:2007 rating at the
         nominal contact angle (:func:`ballrace.analytic.ratings.dynamic_rating`).
@@ -221,11 +223,17 @@ def reference_rating_life(bearing, result, *, dynamic_rating=None, rotating: str
     from .ratings import dynamic_rating as _rating
 
     check_choice(rotating, "rotating", ("inner", "outer"))
-    Qi = check_nonnegative(np.asarray(result.ball_loads, dtype=float), "ball_loads", "N")
+    if hasattr(result, "ball_loads"):
+        Qi, Qo = result.ball_loads, getattr(result, "ball_loads_outer", None)
+    elif hasattr(result, "inner_loads") and hasattr(result, "outer_loads"):
+        Qi, Qo = result.inner_loads, result.outer_loads           # HighSpeedResult
+    else:
+        raise TypeError(f"result must have ball_loads (static solution) or inner_loads and "
+                        f"outer_loads (high-speed solution); got {type(result).__name__}")
+    Qi = check_nonnegative(np.asarray(Qi, dtype=float), "ball_loads", "N")
     if Qi.ndim != 1 or Qi.size < 3:
         raise ValueError(f"result.ball_loads must be one load case, a 1-D array with one load "
                          f"per ball (>= 3); got shape {Qi.shape}")
-    Qo = getattr(result, "ball_loads_outer", None)
     Qo = Qi if Qo is None else check_nonnegative(np.asarray(Qo, dtype=float),
                                                  "ball_loads_outer", "N")
     if Qo.shape != Qi.shape:

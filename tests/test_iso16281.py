@@ -164,3 +164,22 @@ def test_bad_results():
         life.reference_rating_life(brg, brg.radial(100.0), rotating="cage")
     with pytest.raises(ValueError, match="dynamic_rating"):
         life.reference_rating_life(brg, brg.radial(100.0), dynamic_rating=-1.0)
+
+
+def test_high_speed_result():
+    """A HighSpeedResult (inner_loads / outer_loads) is accepted: at zero speed it gives the
+    static thrust life of Ricci's 218 bearing; at 20,000 rpm the centrifugal force loads the
+    outer raceway, whose life becomes the shorter one."""
+    from ballrace.analytic import highspeed
+
+    brg = ballrace.BallBearing(22.225e-3, 16, 125.26e-3, 0.5232, 0.5232,
+                               free_contact_angle=np.radians(40))
+    static = life.reference_rating_life(brg, brg.thrust(17800.0))
+    slow = life.reference_rating_life(brg, highspeed.solve(brg, Fa=17800.0))
+    assert slow.L10r == pytest.approx(static.L10r, rel=1e-6)
+    assert static.L_inner < static.L_outer
+    fast = life.reference_rating_life(
+        brg, highspeed.solve(brg, Fa=17800.0, speed_inner=20000 * np.pi / 30))
+    assert fast.L_outer < fast.L_inner and fast.L_outer < 0.1 * static.L_outer
+    with pytest.raises(TypeError, match="ball_loads"):
+        life.reference_rating_life(brg, object())
