@@ -158,6 +158,7 @@ def rows(iso: dict) -> list[tuple[str, object, str]]:
 
 def render(iso: dict, console) -> None:
     """Print the ISO life table of :func:`iso_life` on a rich ``console``."""
+    from rich.markup import escape
     from rich.table import Table
 
     t = Table(title="Life — ISO 281:2007 modified rating life, ISO/TS 16281 reference life")
@@ -168,4 +169,4 @@ def render(iso: dict, console) -> None:
         t.add_row(name, v if isinstance(v, str) else f"{v:.6g}", u)
     console.print(t)
     for n in iso.get("notes", []):
-        console.print(f"[dim]note: {n}[/dim]")
+        console.print(f"[dim]note: {escape(n)}[/dim]")

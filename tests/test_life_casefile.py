@@ -124,3 +124,19 @@ def test_cli_prints_iso_rows(tmp_path):
     res = CliRunner().invoke(app, ["bearing", str(EXAMPLE), "--json"])
     data = json.loads(res.output)
     assert math.isfinite(data["iso"]["L10mr"])
+
+
+def test_cli_notes_keep_their_brackets(tmp_path):
+    """Rich markup must not swallow "[oil]" in the notes."""
+    from typer.testing import CliRunner
+
+    from ballrace.cli import app
+
+    case = tmp_path / "c.toml"
+    case.write_text('[bearing]\nball_diameter = "11.5 mm"\nn_balls = 7\n'
+                    'pitch_diameter = "43.5 mm"\nf_inner = 0.52\nf_outer = 0.53\n'
+                    'diametral_clearance = "0 mm"\n[loads]\nradial = "1 kN"\n'
+                    '[operation]\nspeed = "3000 rpm"\n')
+    res = CliRunner().invoke(app, ["bearing", str(case)])
+    assert res.exit_code == 0, res.output
+    assert "no [oil]" in res.output
