@@ -48,6 +48,7 @@ lubricant, with unit strings parsed by pint at this boundary only
     nu40 = "68 mm^2/s"            # "cSt" also accepted
     nu100 = "8.7 mm^2/s"
     temperature = "70 degC"       # operating temperature (or viscosity = "20 mm^2/s")
+    ep_additives = false          # effective EP additives (ISO 281: kappa -> 1, a_ISO <= 3)
 
     [fits]                        # optional: operating clearance (thick-ring Lamé)
     bore = "25 mm"
@@ -144,6 +145,7 @@ def _models():
         nu100: Optional[str] = None
         temperature: Optional[str] = None
         viscosity: Optional[str] = None
+        ep_additives: bool = False
 
     class FitsSpec(_Strict):
         bore: str
@@ -202,6 +204,7 @@ class BearingCase:
     fatigue_limit_method : "hertz" or "simplified".
     oil_viscosity : Kinematic viscosity at the operating temperature [m^2/s] or None.
     oil : dict(nu40, nu100 [m^2/s], temperature [K]) or None.
+    ep_additives : Lubricant with effective EP additives (ISO 281 §9.3.3).
     clearance : :class:`~ballrace.analytic.clearance.OperatingClearance` from ``[fits]`` or None.
     """
 
@@ -230,6 +233,7 @@ class BearingCase:
     oil_viscosity: Optional[float] = None
     oil: Optional[dict] = None
     clearance: Optional[object] = None
+    ep_additives: bool = False
 
     @property
     def solver_options(self) -> dict:
@@ -311,6 +315,7 @@ def _iso_inputs(spec, brg, source, q):
         raise CaseFileError(f"{source}: [life].fatigue_limit must be > 0 N")
     oil = spec.oil
     if oil is not None:
+        out["ep_additives"] = oil.ep_additives
         visc_dim = "[length] ** 2 / [time]"
         if oil.viscosity is not None:
             if any(v is not None for v in (oil.nu40, oil.nu100, oil.temperature)):

@@ -142,7 +142,7 @@ class ReferenceRatingLife:
         n = float(check_positive(speed_rpm, "speed_rpm", "rev/min"))
         return self.L10r * 1e6 / (60.0 * n)
 
-    def a_iso(self, *, kappa, contamination, fatigue_limit) -> float:
+    def a_iso(self, *, kappa, contamination, fatigue_limit, ep_additives=False) -> float:
         """a_ISO(κ, e_C C_u / P_ref) (ISO/TS 16281 §5.3; ISO 281:2007 §9.3.3) [-].
 
         Parameters
@@ -153,12 +153,16 @@ class ReferenceRatingLife:
             e_C [-].
         fatigue_limit : float
             C_u [N].
+        ep_additives : bool
+            Lubricant with effective EP additives.
         """
         from .iso281 import life_modification_factor
 
-        return float(life_modification_factor(kappa, contamination, fatigue_limit, self.P_ref))
+        return float(life_modification_factor(kappa, contamination, fatigue_limit, self.P_ref,
+                                              ep_additives=ep_additives))
 
-    def modified(self, *, kappa, contamination, fatigue_limit, reliability=0.9) -> float:
+    def modified(self, *, kappa, contamination, fatigue_limit, reliability=0.9,
+                 ep_additives=False) -> float:
         """Modified reference rating life L_nmr = a1 a_ISO L10r [1e6 rev].
 
         Parameters
@@ -171,12 +175,15 @@ class ReferenceRatingLife:
             C_u [N] (e.g. :func:`ballrace.analytic.iso281.fatigue_load_limit_hertz`).
         reliability : float
             0.90 … 0.9995 [-].
+        ep_additives : bool
+            Lubricant with effective EP additives.
         """
         from .iso281 import reliability_factor
 
         a1 = float(reliability_factor(reliability))
         return a1 * self.a_iso(kappa=kappa, contamination=contamination,
-                                fatigue_limit=fatigue_limit) * self.L10r
+                                fatigue_limit=fatigue_limit,
+                                ep_additives=ep_additives) * self.L10r
 
 
 def reference_rating_life(bearing, result, *, dynamic_rating=None, rotating: str = "inner",

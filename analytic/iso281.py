@@ -450,7 +450,8 @@ def contamination_factor(level: str, pitch_diameter, which: str = "mean"):
 
 # =========================================================================== a_ISO
 def life_modification_factor(kappa, contamination, fatigue_limit, load, *,
-                             bearing_type: str = "radial ball", cap: float = A_ISO_MAX):
+                             bearing_type: str = "radial ball", cap: float = A_ISO_MAX,
+                             ep_additives: bool = False):
     r"""Life modification factor a_ISO of radial ball bearings [-] (ISO 281:2007 §9.3.3).
 
     .. math::
@@ -462,6 +463,9 @@ def life_modification_factor(kappa, contamination, fatigue_limit, load, *,
     limited to 50 (also where the bracket reaches zero, i.e. the load is below the
     fatigue limit).  κ below 0.1 is outside the standard and raises ``ValueError`` (no
     silent extrapolation).
+
+    Lubricants with proven effective EP additives (``ep_additives=True``): where κ < 1 and
+    e_C >= 0.2, κ = 1 is used and a_ISO is limited to 3 (ISO 281:2007 §9.3.3).
 
     Parameters
     ----------
@@ -478,6 +482,8 @@ def life_modification_factor(kappa, contamination, fatigue_limit, load, *,
     cap : float
         Upper limit of a_ISO [-] (50 in ISO 281; lower limits such as 3.8 are used in wind
         turbine guidelines).
+    ep_additives : bool
+        The lubricant contains proven effective EP additives (see above).
 
     Returns
     -------
@@ -496,6 +502,8 @@ def life_modification_factor(kappa, contamination, fatigue_limit, load, *,
     2.4305
     >>> float(life_modification_factor(4.0, 1.0, 1000.0, 1000.0))
     50.0
+    >>> float(life_modification_factor(0.3, 0.5, 500.0, 500.0, ep_additives=True))
+    3.0
     """
     if bearing_type != "radial ball":
         raise ValueError(f"bearing_type must be 'radial ball' (the thrust-bearing constants of "
@@ -512,16 +520,21 @@ def life_modification_factor(kappa, contamination, fatigue_limit, load, *,
     P = check_positive(load, "load", "N")
     cap = float(check_positive(cap, "cap", "-"))
     k = np.minimum(k, KAPPA_MAX)
+    ep = np.zeros(np.broadcast(k, eC).shape, dtype=bool)
+    if ep_additives:
+        ep = (k < 1.0) & (eC >= 0.2)
+        k = np.where(ep, 1.0, k)
     x2 = np.where(k < 0.4, 2.2649, 1.9987)
     e = np.where(k < 0.4, 0.054381, np.where(k < 1.0, 0.19087, 0.071739))
     base = 2.5671 - x2 / k ** e
     bracket = 1.0 - base ** 0.83 * (eC * Cu / P) ** (1.0 / 3.0)
     with np.errstate(divide="ignore", invalid="ignore"):
         a = np.where(bracket > 0.0, 0.1 * np.abs(bracket) ** -9.3, np.inf)
-    return _s(np.minimum(a, cap))
+    return _s(np.minimum(a, np.where(ep, min(cap, 3.0), cap)))
 
 
-def modified_rating_life(C, P, *, kappa, contamination, fatigue_limit, reliability=0.9):
+def modified_rating_life(C, P, *, kappa, contamination, fatigue_limit, reliability=0.9,
+                         ep_additives: bool = False):
     r"""Modified rating life L_nm = a1 a_ISO L10 of a radial ball bearing [1e6 rev].
 
     .. math:: L_{nm} = a_1\, a_{ISO} \left(\frac{C}{P}\right)^3
@@ -540,6 +553,8 @@ def modified_rating_life(C, P, *, kappa, contamination, fatigue_limit, reliabili
         C_u [N], > 0.
     reliability : float or array_like
         Reliability [-], 0.90 … 0.9995.
+    ep_additives : bool
+        Lubricant with effective EP additives (see :func:`life_modification_factor`).
 
     Returns
     -------
@@ -559,12 +574,13 @@ def modified_rating_life(C, P, *, kappa, contamination, fatigue_limit, reliabili
     C = check_positive(C, "C", "N")
     P = check_positive(P, "P", "N")
     a1 = reliability_factor(reliability)
-    a = life_modification_factor(kappa, contamination, fatigue_limit, P)
+    a = life_modification_factor(kappa, contamination, fatigue_limit, P,
+                                 ep_additives=ep_additives)
     return _s(a1 * a * (C / P) ** 3)
 
 
 def modified_rating_life_hours(C, P, *, speed_rpm, kappa, contamination, fatigue_limit,
-                               reliability=0.9):
+                               reliability=0.9, ep_additives: bool = False):
     """Modified rating life in operating hours at a constant speed [h].
 
     ``L_nmh = 1e6 L_nm / (60 n)``; see :func:`modified_rating_life`.
@@ -582,7 +598,8 @@ def modified_rating_life_hours(C, P, *, speed_rpm, kappa, contamination, fatigue
     """
     n = check_positive(speed_rpm, "speed_rpm", "rev/min")
     L = modified_rating_life(C, P, kappa=kappa, contamination=contamination,
-                             fatigue_limit=fatigue_limit, reliability=reliability)
+                             fatigue_limit=fatigue_limit, reliability=reliability,
+                             ep_additives=ep_additives)
     return _s(1e6 * L / (60.0 * n))
 
 

@@ -85,7 +85,8 @@ def iso_life(case, result, P=None) -> dict:
         if out["kappa"] < iso281.KAPPA_MIN:
             notes.append(f"kappa = {out['kappa']:.3g} < 0.1: outside ISO 281:2007, no a_ISO")
         else:
-            kw = dict(kappa=out["kappa"], contamination=case.contamination, fatigue_limit=Cu)
+            kw = dict(kappa=out["kappa"], contamination=case.contamination, fatigue_limit=Cu,
+                      ep_additives=case.ep_additives)
             if P is not None:
                 a = float(iso281.life_modification_factor(load=P, **kw))
                 L = out["a1"] * a * (C / P) ** 3
@@ -93,6 +94,9 @@ def iso_life(case, result, P=None) -> dict:
             aref = ref.a_iso(**kw)
             Lmr = ref.modified(reliability=case.reliability, **kw)
             out.update(a_ISO_ref=aref, L10mr=Lmr, L10mr_h=Lmr * 1e6 / (60.0 * n))
+            if case.ep_additives and out["kappa"] < 1.0 and case.contamination >= 0.2:
+                notes.append("EP additives: kappa = 1 used and a_ISO limited to 3 "
+                             "(ISO 281:2007 §9.3.3)")
             if out["kappa"] > iso281.KAPPA_MAX:
                 notes.append(f"kappa = {out['kappa']:.3g} > 4 taken as 4 (ISO 281:2007)")
     oc = case.clearance

@@ -207,3 +207,19 @@ def test_modified_rating_life():
     h = life.modified_rating_life_hours(22500.0, 2500.0, speed_rpm=3000.0, kappa=1.0,
                                         contamination=0.5, fatigue_limit=500.0)
     assert float(h) == pytest.approx(2.43052 * 729.0 * 1e6 / 180000.0, rel=1e-5)
+
+
+def test_ep_additives_rule():
+    """ISO 281:2007 §9.3.3: with effective EP additives, kappa < 1 and e_C >= 0.2, use
+    kappa = 1 and limit a_ISO to 3."""
+    f = life.life_modification_factor
+    # light effect: a_ISO(kappa = 1) = 2.4305 < 3 (hand value above)
+    assert float(f(0.3, 0.5, 500.0, 2500.0, ep_additives=True)) == pytest.approx(
+        float(f(1.0, 0.5, 500.0, 2500.0)), rel=1e-12)
+    assert float(f(0.3, 0.5, 500.0, 500.0, ep_additives=True)) == 3.0
+    # rule not applicable: e_C < 0.2, or kappa >= 1
+    assert float(f(0.3, 0.1, 500.0, 500.0, ep_additives=True)) == float(f(0.3, 0.1, 500.0, 500.0))
+    assert float(f(2.0, 0.5, 500.0, 500.0, ep_additives=True)) == float(f(2.0, 0.5, 500.0, 500.0))
+    L = life.modified_rating_life(22500.0, 2500.0, kappa=0.3, contamination=0.5,
+                                  fatigue_limit=500.0, ep_additives=True)
+    assert float(L) == pytest.approx(float(f(1.0, 0.5, 500.0, 2500.0)) * 729.0, rel=1e-12)

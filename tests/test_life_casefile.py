@@ -140,3 +140,12 @@ def test_cli_notes_keep_their_brackets(tmp_path):
     res = CliRunner().invoke(app, ["bearing", str(case)])
     assert res.exit_code == 0, res.output
     assert "no [oil]" in res.output
+
+
+def test_ep_additives_in_oil_table():
+    c = _case(oil={"viscosity": "4 cSt", "ep_additives": True},
+              life={"contamination": 0.5})
+    assert c.ep_additives
+    r = cli.analyze(c)["iso"]
+    assert r["kappa"] < 1 and r["a_ISO"] <= 3.0
+    assert any("EP additives" in n for n in r["notes"])
