@@ -183,3 +183,22 @@ def test_high_speed_result():
     assert fast.L_outer < fast.L_inner and fast.L_outer < 0.1 * static.L_outer
     with pytest.raises(TypeError, match="ball_loads"):
         life.reference_rating_life(brg, object())
+
+
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+
+@settings(max_examples=30, deadline=None)
+@given(q=st.lists(st.floats(0.0, 5000.0), min_size=7, max_size=7), s=st.floats(0.1, 10.0))
+def test_life_scales_with_the_inverse_cube_of_the_loads(q, s):
+    """L10r(s Q) = L10r(Q) / s^3 for any ball-load set (all three steps are homogeneous)."""
+    from types import SimpleNamespace
+
+    if max(q) < 1.0:
+        return
+    brg = _brg()
+    a = life.reference_rating_life(brg, SimpleNamespace(ball_loads=np.array(q)))
+    b = life.reference_rating_life(brg, SimpleNamespace(ball_loads=s * np.array(q)))
+    assert b.L10r == pytest.approx(a.L10r / s**3, rel=1e-10)
+    assert b.P_ref == pytest.approx(s * a.P_ref, rel=1e-10)
