@@ -111,9 +111,11 @@ def misalignment_figure(load: float = 2000.0) -> Figure:
                        "label": f"clearance {pd * 1e6:g} um"})
     return Figure("life-misalignment", "life", "Reference rating life against misalignment",
                   caption=f"6305 under F_r = {load:g} N with the inner ring tilted about the "
-                          "axis across the load: the clearance absorbs a few minutes of arc; "
-                          "beyond, the tilt loads the balls against the groove shoulders and "
-                          "L10r falls.",
+                          "axis across the load.  The balls first ride up the groove (their "
+                          "deflection changes only to second order in the tilt) and L10r stays "
+                          "flat; past a knee, 15 arcmin at zero clearance and later with "
+                          "clearance, the opposite side of the ball set is squeezed and L10r "
+                          "falls steeply.",
                   panels=({"kind": "lines", "title": "L10r / L10",
                            "xlabel": "misalignment [arcmin]", "ylabel": "L10r / L10 [-]",
                            "series": series},))
