@@ -921,8 +921,8 @@ def _s(x):
 
 # =========================================================================== ISO re-exports
 from .clearance import OperatingClearance, operating_clearance  # noqa: E402
-from .iso281 import (contamination_factor, fatigue_load_limit, fatigue_load_limit_hertz,  # noqa: E402
-                     life_modification_factor, modified_rating_life,
+from .iso281 import (contamination_factor, fatigue_load_limit,  # noqa: E402
+                     fatigue_load_limit_hertz, life_modification_factor, modified_rating_life,
                      modified_rating_life_hours, operating_viscosity, reference_viscosity,
                      reliability_factor, viscosity_ratio, walther_constants)
 from .iso16281 import ReferenceRatingLife, reference_rating_life  # noqa: E402
