@@ -113,7 +113,8 @@ def raceway_capacities(C, n_balls, ball_diameter, pitch_diameter, f_inner, f_out
 
 @dataclass(frozen=True)
 class ReferenceRatingLife:
-    """ISO/TS 16281 reference rating life of a bearing under one load case (frozen).
+    """ISO/TS 16281 reference rating life (frozen; arrays over the load cases of a
+    vectorized result, floats for one load case).
 
     Attributes
     ----------
@@ -137,12 +138,12 @@ class ReferenceRatingLife:
     C: float
     rotating: str
 
-    def hours(self, speed_rpm: float) -> float:
+    def hours(self, speed_rpm: float):
         """L10r in hours at ``speed_rpm`` [rev/min] [h]."""
-        n = float(check_positive(speed_rpm, "speed_rpm", "rev/min"))
-        return self.L10r * 1e6 / (60.0 * n)
+        n = check_positive(speed_rpm, "speed_rpm", "rev/min")
+        return _s(self.L10r * 1e6 / (60.0 * n))
 
-    def a_iso(self, *, kappa, contamination, fatigue_limit, ep_additives=False) -> float:
+    def a_iso(self, *, kappa, contamination, fatigue_limit, ep_additives=False):
         """a_ISO(κ, e_C C_u / P_ref) (ISO/TS 16281 §5.3; ISO 281:2007 §9.3.3) [-].
 
         Parameters
@@ -158,11 +159,11 @@ class ReferenceRatingLife:
         """
         from .iso281 import life_modification_factor
 
-        return float(life_modification_factor(kappa, contamination, fatigue_limit, self.P_ref,
-                                              ep_additives=ep_additives))
+        return _s(life_modification_factor(kappa, contamination, fatigue_limit, self.P_ref,
+                                           ep_additives=ep_additives))
 
     def modified(self, *, kappa, contamination, fatigue_limit, reliability=0.9,
-                 ep_additives=False) -> float:
+                 ep_additives=False):
         """Modified reference rating life L_nmr = a1 a_ISO L10r [1e6 rev].
 
         Parameters
@@ -180,10 +181,10 @@ class ReferenceRatingLife:
         """
         from .iso281 import reliability_factor
 
-        a1 = float(reliability_factor(reliability))
-        return a1 * self.a_iso(kappa=kappa, contamination=contamination,
-                                fatigue_limit=fatigue_limit,
-                                ep_additives=ep_additives) * self.L10r
+        a1 = reliability_factor(reliability)
+        return _s(a1 * self.a_iso(kappa=kappa, contamination=contamination,
+                                   fatigue_limit=fatigue_limit,
+                                   ep_additives=ep_additives) * self.L10r)
 
 
 def reference_rating_life(bearing, result, *, dynamic_rating=None, rotating: str = "inner",
@@ -238,16 +239,18 @@ def reference_rating_life(bearing, result, *, dynamic_rating=None, rotating: str
         raise TypeError(f"result must have ball_loads (static solution) or inner_loads and "
                         f"outer_loads (high-speed solution); got {type(result).__name__}")
     Qi = check_nonnegative(np.asarray(Qi, dtype=float), "ball_loads", "N")
-    if Qi.ndim != 1 or Qi.size < 3:
-        raise ValueError(f"result.ball_loads must be one load case, a 1-D array with one load "
-                         f"per ball (>= 3); got shape {Qi.shape}")
+    if Qi.ndim < 1 or Qi.shape[-1] < 3:
+        raise ValueError(f"result.ball_loads must have one load per ball (>= 3) on its last "
+                         f"axis (leading axes: load cases); got shape {Qi.shape}")
     Qo = Qi if Qo is None else check_nonnegative(np.asarray(Qo, dtype=float),
                                                  "ball_loads_outer", "N")
     if Qo.shape != Qi.shape:
         raise ValueError(f"ball_loads_outer must have the shape of ball_loads {Qi.shape}; "
                          f"got {Qo.shape}")
-    if not np.any(Qi > 0) and not np.any(Qo > 0):
-        raise ValueError("ball_loads are all zero: the bearing carries no load (infinite life)")
+    dead = ~np.any(Qi > 0, axis=-1) & ~np.any(Qo > 0, axis=-1)
+    if np.any(dead):
+        raise ValueError("ball_loads are all zero: the bearing carries no load (infinite life)"
+                         + ("" if Qi.ndim == 1 else f" in load case {np.argwhere(dead)[0]}"))
     a = (bearing.free_contact_angle if nominal_contact_angle is None
          else float(check_range(nominal_contact_angle, "nominal_contact_angle", -np.pi / 2,
                                 np.pi / 2, unit="rad")))
@@ -256,17 +259,22 @@ def reference_rating_life(bearing, result, *, dynamic_rating=None, rotating: str
     Qci, Qce = raceway_capacities(C, bearing.n_balls, bearing.ball_diameter,
                                   bearing.pitch_diameter, bearing.f_inner, bearing.f_outer, a,
                                   getattr(bearing, "n_rows", 1))
-    Z = Qi.size
+    Z = Qi.shape[-1]
     p_i, p_o = (3.0, 10.0 / 3.0) if rotating == "inner" else (10.0 / 3.0, 3.0)
-    Qei = float(np.mean(Qi ** p_i) ** (1.0 / p_i))
-    Qee = float(np.mean(Qo ** p_o) ** (1.0 / p_o))
+    Qei = np.mean(Qi ** p_i, axis=-1) ** (1.0 / p_i)
+    Qee = np.mean(Qo ** p_o, axis=-1) ** (1.0 / p_o)
     with np.errstate(divide="ignore"):
-        Li = (Qci / Qei) ** 3 if Qei > 0 else np.inf
-        Lo = (Qce / Qee) ** 3 if Qee > 0 else np.inf
+        Li = np.where(Qei > 0, (Qci / np.where(Qei > 0, Qei, 1.0)) ** 3, np.inf)
+        Lo = np.where(Qee > 0, (Qce / np.where(Qee > 0, Qee, 1.0)) ** 3, np.inf)
         L = (Li ** (-10.0 / 9.0) + Lo ** (-10.0 / 9.0)) ** -0.9
     if Z != bearing.n_balls:
         log.warning("reference_rating_life: %d ball loads for a bearing of %d balls", Z,
                     bearing.n_balls)
-    return ReferenceRatingLife(L10r=float(L), L_inner=float(Li), L_outer=float(Lo), Q_ci=Qci,
-                               Q_ce=Qce, Q_ei=Qei, Q_ee=Qee, P_ref=float(C / L ** (1.0 / 3.0)),
-                               C=C, rotating=rotating)
+    return ReferenceRatingLife(L10r=_s(L), L_inner=_s(Li), L_outer=_s(Lo), Q_ci=Qci,
+                               Q_ce=Qce, Q_ei=_s(Qei), Q_ee=_s(Qee),
+                               P_ref=_s(C / L ** (1.0 / 3.0)), C=C, rotating=rotating)
+
+
+def _s(x):
+    x = np.asarray(x, dtype=float)
+    return float(x) if x.ndim == 0 else x

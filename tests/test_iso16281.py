@@ -159,7 +159,10 @@ def test_bad_results():
     with pytest.raises(ValueError, match="all zero"):
         life.reference_rating_life(brg, SimpleNamespace(ball_loads=np.zeros(7)))
     with pytest.raises(ValueError, match="ball_loads"):
-        life.reference_rating_life(brg, SimpleNamespace(ball_loads=np.ones((2, 7))))
+        life.reference_rating_life(brg, SimpleNamespace(ball_loads=np.ones((7, 2))))
+    with pytest.raises(ValueError, match="load case"):
+        life.reference_rating_life(brg, SimpleNamespace(ball_loads=np.vstack([np.ones(7),
+                                                                              np.zeros(7)])))
     with pytest.raises(ValueError, match="rotating"):
         life.reference_rating_life(brg, brg.radial(100.0), rotating="cage")
     with pytest.raises(ValueError, match="dynamic_rating"):
@@ -202,3 +205,19 @@ def test_life_scales_with_the_inverse_cube_of_the_loads(q, s):
     b = life.reference_rating_life(brg, SimpleNamespace(ball_loads=s * np.array(q)))
     assert b.L10r == pytest.approx(a.L10r / s**3, rel=1e-10)
     assert b.P_ref == pytest.approx(s * a.P_ref, rel=1e-10)
+
+
+def test_vectorized_load_cases():
+    """A vectorized load distribution (leading axis = load cases) gives arrays that equal
+    the one-case results."""
+    brg = _brg()
+    Fr = np.array([500.0, 1000.0, 3000.0])
+    res = brg.radial(Fr)
+    r = life.reference_rating_life(brg, res)
+    assert r.L10r.shape == (3,)
+    for k, F in enumerate(Fr):
+        one = life.reference_rating_life(brg, brg.radial(F))
+        assert r.L10r[k] == pytest.approx(one.L10r, rel=1e-10)
+    Cu = life.fatigue_load_limit_hertz(brg).C_u
+    assert r.modified(kappa=1.0, contamination=0.5, fatigue_limit=Cu).shape == (3,)
+    assert r.hours(3000.0).shape == (3,)
