@@ -10,7 +10,7 @@ import functools
 import math
 import re
 
-__all__ = ["parse_quantity", "to_si", "ureg"]
+__all__ = ["parse_quantity", "check_form", "to_si", "ureg"]
 
 
 @functools.cache
@@ -85,7 +85,7 @@ def parse_quantity(text, dimension: str, name: str, *, allow_inf: bool = False) 
         if not allow_inf:
             raise ValueError(f"{name}: 'inf' is not allowed here")
         return -math.inf if s.startswith("-") else math.inf
-    _check_form(s, name)
+    check_form(s, name)
     reg = ureg()
     try:
         q = reg.Quantity(s)
@@ -113,8 +113,12 @@ _NUMBER = re.compile(r"\s*[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
 _EXPONENT = re.compile(r"(?:\^|\*\*)\s*\(?\s*[+-]?\d+(?:\.\d+)?\s*\)?")
 
 
-def _check_form(s: str, name: str) -> None:
-    """Refuse strings that pint parses differently than a person reads them."""
+def check_form(s: str, name: str) -> None:
+    """Refuse strings that pint parses differently than a person reads them [-].
+
+    Raises ``ValueError`` naming ``name`` for a comma (decimal or thousands separator),
+    a string that does not start with a number, or numbers inside the unit.
+    """
     if "," in s:
         raise ValueError(f"{name}: {s!r} contains a comma; write the decimal point as '.' and "
                          "no thousands separator (e.g. '6.35 mm')")

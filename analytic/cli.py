@@ -295,6 +295,8 @@ def register(app) -> None:
             result = analyze(case)
         except CaseFileError as exc:
             fail(_kind_hint(p) or str(exc))
+        except UnicodeDecodeError:
+            fail(f"{case_file}: not a text file; give a bearing case file (TOML)")
         except (OSError, ValueError, RuntimeError) as exc:
             fail(f"{case_file}: {exc}")
         if as_json:

@@ -326,7 +326,7 @@ def _table(r, units: str) -> None:
                      "-" if tol is None else f"{100 * tol:.1f} %", mark])
     total = d.get("timings", {}).get("total")
     title = (f"{d.get('case', '')}, Q = {fmt(convert(d.get('load'), 'force', units))} "
-             f"{unit_label('force', units)}: {d.get('mode')}, {d.get('gap')} gap, "
+             f"{unit_label('force', units)}\n{d.get('mode')}, {d.get('gap')} gap, "
              f"{d.get('level')}, {d.get('n_dofs', 0):,} DOFs"
              + (f", {total:.1f} s" if total is not None else "") + f", {d.get('solver')}")
     con = make_console()

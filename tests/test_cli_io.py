@@ -51,6 +51,19 @@ def test_strings_pint_reads_differently_are_refused(text, why):
     assert res.stdout == "" and "rx1" in res.stderr and why in res.stderr
 
 
+def test_decimal_comma_in_a_bearing_case_file(tmp_path):
+    """Both the pint quantities and the speed of a bearing case file (40005 rpm to pint)."""
+    base = (EXAMPLES / "bearing_209.toml").read_text()
+    for old, new, key in (('"12.7 mm"', '"12,7 mm"', "[bearing].ball_diameter"),
+                          ('"4000 rpm"', '"4000,5 rpm"', "[operation].speed")):
+        assert old in base
+        p = tmp_path / "case.toml"
+        p.write_text(base.replace(old, new, 1))
+        res = runner.invoke(app, ["bearing", str(p)])
+        assert res.exit_code == 2
+        assert key in res.stderr and "comma" in res.stderr
+
+
 @pytest.mark.parametrize("text, dim, si", [
     ("6.35 mm", "[length]", 6.35e-3), ("-.5 in", "[length]", -0.0127),
     ("2.2e-8 1/Pa", "1 / [pressure]", 2.2e-8), ("7800 kg/m^3", "[mass] / [length] ** 3", 7800.0),
@@ -326,6 +339,31 @@ def test_teach_writes_under_the_ignored_output_folder(tmp_path, monkeypatch):
     assert list(tmp_path.iterdir()) == [tmp_path / "ballrace-out"]
     ignored = (ROOT / ".gitignore").read_text().split()
     assert "ballrace-out/" in ignored and "fem-out/" in ignored
+
+
+def test_teach_out_folder_or_bare_name(tmp_path):
+    pytest.importorskip("matplotlib")
+    res = runner.invoke(app, ["teach", "subsurface", "--out", str(tmp_path)])
+    assert res.exit_code == 0 and (tmp_path / "subsurface.png").is_file()
+    res = runner.invoke(app, ["teach", "subsurface", "--out", str(tmp_path / "fig")])
+    assert res.exit_code == 0 and f"wrote {tmp_path / 'fig.png'}" in res.stdout
+    assert (tmp_path / "fig.png").is_file()
+
+
+def test_validate_refuses_a_folder_of_cases_and_a_file_as_report(tmp_path):
+    res = runner.invoke(app, ["validate", "--cases", str(ROOT / "examples")])
+    assert res.exit_code == 2 and "is a directory" in res.stderr and res.stdout == ""
+    f = tmp_path / "file"
+    f.write_text("x")
+    res = runner.invoke(app, ["validate", "--fem", "none", "--report", str(f)])
+    assert res.exit_code == 2 and "exists and is not a folder" in res.stderr
+
+
+def test_bearing_binary_file_is_named(tmp_path):
+    b = tmp_path / "case.toml"
+    b.write_bytes(bytes(range(256)))
+    res = runner.invoke(app, ["bearing", str(b)])
+    assert res.exit_code == 2 and f"{b}: not a text file" in res.stderr
 
 
 def test_fem_default_output_folder_is_ignored():

@@ -71,6 +71,11 @@ def validate(
         _usage(console, "--update-baseline needs --baseline FILE (where to write it)")
     if baseline is not None and not update_baseline:
         _check_baseline(console, baseline)
+    if cases is not None and Path(cases).is_dir():
+        _usage(console, f"--cases {cases}: is a directory; give a file or a glob such as "
+                        f"'{Path(cases) / '*.toml'}'")
+    if report is not None and report.exists() and not report.is_dir():
+        _usage(console, f"--report {report}: exists and is not a folder")
     try:
         selected = load_cases(cases)
     except (CaseFileError, OSError) as exc:
@@ -195,16 +200,16 @@ def _summary(console, run) -> None:
     console.print(t)
     bad = [r for r in run.results if not r.ok]
     if bad:
-        bt = Table(title="Not passing")
-        bt.add_column("status")
-        bt.add_column("case")
-        bt.add_column("why", overflow="fold")
+        # a list, not a table: the reasons are sentences that must not be cut into columns
         from rich.text import Text
 
+        console.print("Not passing", style="bold")
         for r in bad:
-            bt.add_row(Text(_MARK[r.status], style=_STYLE[r.status]), literal(r.id),
-                       literal(r.message))
-        console.print(bt)
+            line = Text(f"{_MARK[r.status]:>7} ", style=_STYLE[r.status])
+            line.append(literal(r.id).plain, style="bold")
+            console.print(line)
+            if r.message:
+                console.print(Text("        ") + literal(r.message))
 
 
 def _baseline_summary(console, drift, path) -> None:
@@ -251,6 +256,10 @@ def teach_subsurface(
     from . import teach
 
     console = Console()
+    if out.is_dir():                      # --out FOLDER: the figure goes inside it
+        out = out / "subsurface.png"
+    elif not out.suffix:                  # matplotlib would add ".png" behind our back
+        out = out.with_suffix(".png")
     try:
         q = parse_quantity(load, "[force]", "load")
         radii = [parse_quantity(v, "[length]", n, allow_inf=True)
