@@ -160,7 +160,8 @@ def contact(
     try:
         o = subsurface.orthogonal_shear(c)
         rows += [("LP tau0 (orthogonal shear)", float(o.tau0), "stress"),
-                 ("LP z0", float(o.z0), "length"), ("LP x0 (rolling offset)", float(o.x0), "length")]
+                 ("LP z0", float(o.z0), "length"),
+                 ("LP x0 (rolling offset)", float(o.x0), "length")]
     except ValueError as exc:  # major axis along the rolling direction: LP does not apply
         note = f"Lundberg-Palmgren shear not reported: {exc}"
     if nu is not None:

@@ -20,8 +20,8 @@ import functools
 import math
 import re
 
-__all__ = ["UNITS_HELP", "SYSTEMS", "convert", "unit_label", "literal", "make_console", "print_columns",
-           "print_sections", "fmt"]
+__all__ = ["UNITS_HELP", "SYSTEMS", "convert", "unit_label", "literal", "make_console",
+           "print_columns", "print_sections", "fmt"]
 
 #: Display unit (label, pint expression) per kind of quantity and unit system.
 SYSTEMS = {
@@ -78,7 +78,9 @@ def unit_label(kind: str | None, system: str = "eng") -> str:
 
 
 # ------------------------------------------------------------------------- literal text
-_CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f]")
+#: C0/C1 control characters (ESC starts colour, cursor and OSC 8 hyperlink sequences) and
+#: the bidirectional overrides that can make a terminal show text in another order.
+_CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069]")
 
 
 def literal(text) -> "rich.text.Text":  # noqa: F821
@@ -89,7 +91,8 @@ def literal(text) -> "rich.text.Text":  # noqa: F821
     """
     from rich.text import Text
 
-    s = _CONTROL.sub(lambda m: f"\\x{ord(m.group()):02x}", str(text))
+    s = _CONTROL.sub(lambda m: f"\\x{ord(m.group()):02x}" if ord(m.group()) < 256
+                     else f"\\u{ord(m.group()):04x}", str(text))
     return Text(s)
 
 

@@ -107,8 +107,8 @@ def parse_quantity(text, dimension: str, name: str, *, allow_inf: bool = False) 
     return _finite(float(q.to_base_units().magnitude), s, name)
 
 
-#: One number, then an optional unit expression.
-_NUMBER = re.compile(r"\s*[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
+#: One number (or a fraction such as "1/4"), then an optional unit expression.
+_NUMBER = re.compile(r"\s*[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?(?:\s*/\s*\d+(?:\.\d*)?)?")
 #: Exponents inside a unit expression ("m^2", "m**-3"): the only digits allowed there.
 _EXPONENT = re.compile(r"(?:\^|\*\*)\s*\(?\s*[+-]?\d+(?:\.\d+)?\s*\)?")
 

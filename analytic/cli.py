@@ -278,7 +278,8 @@ def register(app) -> None:
 
     @app.command("bearing")
     def bearing(
-        case_file: Annotated[str, typer.Argument(help="Bearing case file (TOML; docs/casefiles.md).")],
+        case_file: Annotated[str, typer.Argument(
+            help="Bearing case file (TOML; docs/casefiles.md).")],
         as_json: Annotated[bool, typer.Option("--json", help="Machine-readable JSON (SI units).")] = False,
         units: Annotated[str, typer.Option("--units", help=UNITS_HELP)] = "eng",
     ):

@@ -362,7 +362,8 @@ def register(app: typer.Typer) -> None:
         out: Annotated[Path, typer.Option(
             help="Output folder (result.json, PNGs); ignored by git.")] = DEFAULT_OUT,
         render: Annotated[bool, typer.Option(help="Write PNG renders.")] = True,
-        sizes: Annotated[str, typer.Option(help="Convergence: elements per minor semi-axis.")] = "4,6,8,11",
+        sizes: Annotated[str, typer.Option(
+            help="Convergence: elements per minor semi-axis.")] = "4,6,8,11",
         units: Annotated[str, typer.Option("--units", help=UNITS_HELP)] = "eng",
     ):
         """FE check of a Hertz ball contact (mesh, assemble, solve, compare, render).
@@ -383,6 +384,12 @@ def register(app: typer.Typer) -> None:
         if solver is not None and solver not in available_solvers():
             fail(f"--solver {solver}: not installed here (available: "
                  f"{', '.join(available_solvers())})")
+        n_sizes = ()
+        if case_file == "convergence":
+            try:
+                n_sizes = tuple(int(s) for s in sizes.split(","))
+            except ValueError:
+                fail(f"--sizes must be comma-separated integers, e.g. 4,6,8; got {sizes!r}")
         overrides = dict(contact=case, load=load, level=level, mode=mode, gap=gap, solver=solver)
         try:
             if case_file and case_file != "convergence":
@@ -396,7 +403,7 @@ def register(app: typer.Typer) -> None:
         except OSError as exc:
             fail(f"--out {out}: {exc}")
         if case_file == "convergence":
-            _convergence(fc, sizes, out, units)
+            _convergence(fc, n_sizes, out)
             return
         from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
@@ -423,7 +430,7 @@ def register(app: typer.Typer) -> None:
             raise typer.Exit(code=1)
 
 
-def _convergence(fc, sizes: str, out: Path, units: str) -> None:
+def _convergence(fc, n: tuple, out: Path) -> None:
     from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
     from ballrace.cli import fail
@@ -431,10 +438,6 @@ def _convergence(fc, sizes: str, out: Path, units: str) -> None:
 
     from .convergence import QUANTITIES, convergence_study
 
-    try:
-        n = tuple(int(s) for s in sizes.split(","))
-    except ValueError:
-        fail(f"--sizes must be comma-separated integers, e.g. 4,6,8; got {sizes!r}")
     cols = (SpinnerColumn(), TextColumn("{task.description}"), TimeElapsedColumn())
     try:
         with Progress(*cols, transient=True) as prog:

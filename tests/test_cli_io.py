@@ -68,6 +68,7 @@ def test_decimal_comma_in_a_bearing_case_file(tmp_path):
     ("6.35 mm", "[length]", 6.35e-3), ("-.5 in", "[length]", -0.0127),
     ("2.2e-8 1/Pa", "1 / [pressure]", 2.2e-8), ("7800 kg/m^3", "[mass] / [length] ** 3", 7800.0),
     ("7800 kg*m**-3", "[mass] / [length] ** 3", 7800.0), ("1.5e3 lbf", "[force]", 6672.3324229),
+    ("1/4 in", "[length]", 6.35e-3), ("40°", "[angle]", math.radians(40)),
 ])
 def test_ordinary_unit_strings_still_parse(text, dim, si):
     assert parse_quantity(text, dim, "x") == pytest.approx(si, rel=1e-10)
@@ -150,6 +151,27 @@ def test_flags_beside_a_case_file_take_precedence(tmp_path, monkeypatch):
     assert "take precedence" in " ".join(res.stdout.split())
 
 
+def test_fe_quick_run_from_a_case_file_with_a_flag_override(tmp_path, monkeypatch):
+    """End to end at the quick level: the file's plane case at the flag's load; the table
+    in engineering units within 80 columns; result.json in SI under --out."""
+    pytest.importorskip("skfem")
+    monkeypatch.setenv("COLUMNS", "80")
+    p = tmp_path / "fe.toml"
+    p.write_text('[case]\ncontact = "plane"\nload = "2000 N"\n[fem]\nlevel = "quick"\n')
+    out = tmp_path / "out"
+    res = runner.invoke(app, ["fem", str(p), "--load", "1 kN", "--no-render", "--out", str(out)])
+    assert res.exit_code == 0, res.output
+    data = json.loads((out / "result.json").read_text())
+    assert data["load"] == 1000.0 and data["level"] == "quick" and data["case"] == "ball on plane"
+    assert max(len(ln) for ln in res.stdout.splitlines() if not ln.startswith("wrote")) <= 80
+    rows = {ln.split()[0]: ln.split() for ln in res.stdout.splitlines() if ln.split()}
+    # Hertz a for a 12.7 mm steel ball on a steel flat at 1 kN: (3 F R / 4 E*)^(1/3)
+    a = (3 * 1000 * 6.35e-3 / (4 * 200e9 / (2 * (1 - 0.3**2)))) ** (1 / 3)
+    assert float(rows["a"][2]) == pytest.approx(a * 1e3, rel=1e-4) and rows["a"][3] == "mm"
+    assert rows["p_max"][3] == "MPa"
+    assert data["a"] == pytest.approx(float(rows["a"][1]) * 1e-3, rel=1e-4)   # SI in the JSON
+
+
 def test_fe_case_plane_and_ball(tmp_path):
     from ballrace.analytic import hertz
     from ballrace.fem.cli import parse_fe_case
@@ -185,6 +207,7 @@ def test_ball_in_metres_warns_naming_the_unit():
     (["fem", "--solver", "foo"], "--solver must be one of cholmod, pardiso, amg, superlu"),
     (["fem", "--case", "innr"], "--case must be one of inner, outer, plane, ball; got 'innr'"),
     (["fem", "--mode", "3d"], "--mode must be one of half-space, two-body"),
+    (["fem", "convergence", "--sizes", "4,six"], "--sizes must be comma-separated integers"),
     (["bearing", str(EXAMPLES)], "is a directory"),
     (["fem", str(EXAMPLES)], "is a directory"),
     (["bearing", "nosuch.toml"], "no such file"),
@@ -424,3 +447,10 @@ def test_library_messages_keep_bracketed_units():
     text = con.export_text()
     assert "approach 0.1 [m] at 0.2 [rad] outside [bold]tolerance[/bold] \\x1b[31m" in text
     assert "case-[x]" in text and "\x1b" not in text
+
+
+def test_literal_escapes_controls_and_bidi_overrides_only():
+    from ballrace.console import literal
+
+    assert literal("a\u202eb\x1b[31mc\x07").plain == "a\\u202eb\\x1b[31mc\\x07"
+    assert literal("tab\tnew\nline µm ≤ [m]").plain == "tab\tnew\nline µm ≤ [m]"
