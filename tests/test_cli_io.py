@@ -447,6 +447,8 @@ def test_library_messages_keep_bracketed_units():
     text = con.export_text()
     assert "approach 0.1 [m] at 0.2 [rad] outside [bold]tolerance[/bold] \\x1b[31m" in text
     assert "case-[x]" in text and "\x1b" not in text
+    assert "case time [s]" in text                     # the column header keeps its unit
+    assert "wall-clock 0.1 s" in text
 
 
 def test_literal_escapes_controls_and_bidi_overrides_only():

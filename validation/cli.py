@@ -183,11 +183,12 @@ def _summary(console, run) -> None:
 
     from .runner import STATUSES
 
-    t = Table(title=f"Validation summary (--fem {run.fem}, {run.duration:.1f} s, {run.scheduler})")
+    t = Table(title=literal(f"Validation summary (--fem {run.fem}, {run.scheduler}, "
+                            f"wall-clock {run.duration:.1f} s)"))
     t.add_column("area")
     for s in STATUSES:
         t.add_column(s, justify="right", style=_STYLE[s] if s != "pass" else "green")
-    t.add_column("time [s]", justify="right")
+    t.add_column(literal("case time [s]"), justify="right")
     total = {s: 0 for s in STATUSES}
     for area, rows in run.by_area().items():
         counts = {s: sum(r.status == s for r in rows) for s in STATUSES}
@@ -196,8 +197,11 @@ def _summary(console, run) -> None:
         t.add_row(literal(area), *[str(counts[s]) if counts[s] else "" for s in STATUSES],
                   f"{sum(r.duration for r in rows):.2f}")
     t.add_row("[bold]total[/]", *[f"[bold]{total[s]}[/]" for s in STATUSES],
-              f"{run.duration:.2f}", end_section=True)
+              f"{sum(r.duration for r in run.results):.2f}", end_section=True)
     console.print(t)
+    if not str(run.scheduler).startswith("serial"):
+        console.print("case times are the sum of each case's own run time; run in parallel, "
+                      "they can add up to more than the wall-clock time", style="dim")
     bad = [r for r in run.results if not r.ok]
     if bad:
         # a list, not a table: the reasons are sentences that must not be cut into columns
