@@ -303,11 +303,11 @@ def _check_choice(value, option: str, allowed) -> None:
         fail(f"{option} must be one of {', '.join(allowed)}; got {value!r}")
 
 
-def _table(r, units: str) -> None:
+def _table(r, units: str, heading: str = "") -> None:
     """The FE-versus-analytic table, driven by the result's comparison rows."""
     from rich.text import Text
 
-    from ballrace.console import convert, fmt, make_console, print_columns, unit_label
+    from ballrace.console import convert, fmt, literal, make_console, print_columns, unit_label
 
     d = r.to_dict()
     kinds = {"m": "length", "Pa": "stress", "N": "force"}
@@ -330,6 +330,8 @@ def _table(r, units: str) -> None:
              f"{d.get('level')}, {d.get('n_dofs', 0):,} DOFs"
              + (f", {total:.1f} s" if total is not None else "") + f", {d.get('solver')}")
     con = make_console()
+    if heading:                              # the case file's title, printed literally
+        con.print(literal(heading), style="bold")
     print_columns(con, title, ["quantity", "FE", "analytic", "unit", "error", "tolerance", ""],
                   rows, justify=["left", "right", "right", "left", "right", "right", "left"])
     if d.get("gap") == "exact":
@@ -418,7 +420,7 @@ def register(app: typer.Typer) -> None:
                                  progress=lambda s: prog.update(task, description=s))
         except (ValueError, TypeError, ImportError) as exc:
             fail(str(exc))
-        _table(r, units)
+        _table(r, units, fc.title)
         (out / "result.json").write_text(json.dumps(r.to_dict(), indent=2))
         if render:
             from .render import render as _render

@@ -157,12 +157,14 @@ def test_fe_quick_run_from_a_case_file_with_a_flag_override(tmp_path, monkeypatc
     pytest.importorskip("skfem")
     monkeypatch.setenv("COLUMNS", "80")
     p = tmp_path / "fe.toml"
-    p.write_text('[case]\ncontact = "plane"\nload = "2000 N"\n[fem]\nlevel = "quick"\n')
+    p.write_text('title = "[b]plane\\u001b[31m"\n[case]\ncontact = "plane"\nload = "2000 N"\n'
+                 '[fem]\nlevel = "quick"\n')
     out = tmp_path / "out"
     res = runner.invoke(app, ["fem", str(p), "--load", "1 kN", "--no-render", "--out", str(out)])
     assert res.exit_code == 0, res.output
     data = json.loads((out / "result.json").read_text())
     assert data["load"] == 1000.0 and data["level"] == "quick" and data["case"] == "ball on plane"
+    assert res.stdout.lstrip().startswith("[b]plane\\x1b[31m\n")                  # title, literally
     assert max(len(ln) for ln in res.stdout.splitlines() if not ln.startswith("wrote")) <= 80
     rows = {ln.split()[0]: ln.split() for ln in res.stdout.splitlines() if ln.split()}
     # Hertz a for a 12.7 mm steel ball on a steel flat at 1 kN: (3 F R / 4 E*)^(1/3)
