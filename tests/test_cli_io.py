@@ -458,3 +458,27 @@ def test_literal_escapes_controls_and_bidi_overrides_only():
 
     assert literal("a\u202eb\x1b[31mc\x07").plain == "a\\u202eb\\x1b[31mc\\x07"
     assert literal("tab\tnew\nline µm ≤ [m]").plain == "tab\tnew\nline µm ≤ [m]"
+
+
+def test_a_new_block_of_bearing_rows_is_one_more_section():
+    """How issue 12's ISO life rows join the bearing output: (title, [(name, SI, kind)])."""
+    from rich.console import Console
+
+    from ballrace.analytic.casefile import load_case
+    from ballrace.analytic.cli import analyze, sections
+    from ballrace.console import print_sections
+
+    secs = sections(analyze(load_case(EXAMPLES / "bearing_209.toml")))
+    assert [t for t, _ in secs][1:] == ["Life", "Lubricant film (Hamrock & Dowson 1977)"]
+    secs.append(("ISO 281 life", [("viscosity ratio kappa", 1.5, None),
+                                  ("L_nm", 123.4, "=1e6 rev"),
+                                  ("operating clearance", 10e-6, "small"),
+                                  ("fatigue load limit C_u", 4448.2216152605, "force")]))
+    for units, expect in (("eng", ["10   µm", "4448.22   N"]), ("us", ["393.701   µin",
+                                                                       "1000   lbf"])):
+        con = Console(width=80, record=True)
+        print_sections(con, secs[-1:], units)
+        text = con.export_text()
+        assert "ISO 281 life" in text and "123.4   1e6 rev" in text and "1.5" in text
+        for e in expect:
+            assert e in text, text
