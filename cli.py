@@ -211,7 +211,14 @@ def _register_submodules() -> None:
 _register_submodules()
 
 
+def _one_line_warning(message, category, filename, lineno, line=None) -> str:
+    return f"warning: {message}\n"
+
+
 def main() -> None:  # console-script entry point
+    import warnings
+
+    warnings.formatwarning = _one_line_warning    # "warning: ...", not a source excerpt
     app()
 
 

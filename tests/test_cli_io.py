@@ -203,6 +203,16 @@ def test_ball_in_metres_warns_naming_the_unit():
         ballrace.BallBearing(12.7e-3, 9, 65e-3, 0.52, 0.52, free_contact_angle=0.0)
 
 
+def test_bearing_case_in_metres_warns_in_one_line(tmp_path):
+    p = tmp_path / "m.toml"
+    p.write_text((EXAMPLES / "bearing_209.toml").read_text()
+                 .replace('"12.7 mm"', '"12.7 m"').replace('"65 mm"', '"65 m"'))
+    res = _ballrace("bearing", str(p), "--json")
+    assert res.stderr.startswith("warning: ball_diameter = 12.7 m, pitch_diameter = 65 m: "
+                                 "larger than any rolling bearing"), res.stderr
+    assert "lengths are in metres [m]" in res.stderr.splitlines()[0]
+
+
 # ----------------------------------------------------------------- item 4: one-line errors
 @pytest.mark.parametrize("args, message", [
     (["fem", "--case", "inner", "--level", "quik"], "--level must be one of quick, standard, fine"),
