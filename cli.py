@@ -8,30 +8,112 @@ heavy dependencies only when a command runs:
 * ``bearing``  — :mod:`ballrace.analytic.cli` (when present);
 * ``fem``      — :mod:`ballrace.fem.cli`;
 * ``validate``, ``teach`` — :mod:`ballrace.validation.cli`.
+
+Global options: ``--version``, and ``-v`` / ``-vv`` (ballrace's progress logging /
+everything, including the libraries underneath), accepted before or after the command
+(``ballrace fem -v``).  Errors are one line on stderr with exit code 2.
 """
 from __future__ import annotations
 
 import importlib
 import json
 import logging
+import re
 import sys
 from typing import Annotated, Optional
 
-import numpy as np
 import typer
+from typer.core import TyperGroup
 
+from ballrace.console import UNITS_HELP, literal, make_console, print_sections, unit_label
 from ballrace.units import parse_quantity
 
-app = typer.Typer(add_completion=False, no_args_is_help=True,
-                  help="ballrace: Hertz contact and ball-bearing calculations (SI inside).")
+_VERBOSE = re.compile(r"-v+|--verbose")
+
+
+class _Group(TyperGroup):
+    """The root command group: ``-v`` / ``--verbose`` is accepted after the command too,
+    and ``--help`` shows ``--load LOAD`` instead of typer's ``<str>`` placeholders."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        _name_metavars(self)
+
+    def parse_args(self, ctx, args):
+        args = list(args)
+        end = args.index("--") if "--" in args else len(args)
+        flags = [a for a in args[:end] if _VERBOSE.fullmatch(a)]
+        rest = [a for a in args[:end] if not _VERBOSE.fullmatch(a)] + args[end:]
+        return super().parse_args(ctx, flags + rest)
+
+
+def _name_metavars(cmd) -> None:
+    """Give every value-taking parameter of ``cmd`` and its sub-commands a named metavar."""
+    for p in getattr(cmd, "params", ()):
+        if getattr(p, "metavar", "") is None and not getattr(p, "is_flag", False) \
+                and not getattr(p, "count", False):
+            p.metavar = (p.name or "value").upper()
+        if getattr(p, "param_type_name", "") == "argument":
+            p.display_type_rich = lambda ctx: None      # "CASE_FILE", not "CASE_FILE <str>"
+    for sub in getattr(cmd, "commands", {}).values():
+        _name_metavars(sub)
+
+
+app = typer.Typer(cls=_Group, add_completion=False, no_args_is_help=True,
+                  rich_markup_mode=None, pretty_exceptions_enable=False,
+                  help="ballrace: Hertz contact and ball-bearing calculations (SI inside; "
+                       "tables in engineering units, --units to choose; --json in SI).")
 
 _SUBMODULES = ("ballrace.analytic.cli", "ballrace.fem.cli", "ballrace.validation.cli")
 
+#: Values of the ``--units`` option of the table-printing commands.
+UNIT_SYSTEMS = ("eng", "si", "us")
+
+
+def _version() -> str:
+    try:
+        from importlib.metadata import version
+
+        return version("ballrace")
+    except Exception:  # not installed (run from a checkout)
+        from ballrace import __version__
+
+        return __version__
+
+
+def _show_version(value: bool):
+    if value:
+        typer.echo(f"ballrace {_version()}")
+        raise typer.Exit()
+
 
 @app.callback()
-def _main(verbose: Annotated[bool, typer.Option("--verbose", "-v", help="Log progress details.")] = False):
-    logging.basicConfig(level=logging.DEBUG if verbose else logging.WARNING,
-                        format="%(levelname)s %(name)s: %(message)s")
+def _main(
+    verbose: Annotated[int, typer.Option(
+        "--verbose", "-v", count=True, show_default=False,
+        help="-v: log ballrace's progress; -vv: also the libraries underneath "
+             "(scikit-fem, dask, ...).  Accepted after the command too.")] = 0,
+    version: Annotated[bool, typer.Option(
+        "--version", is_eager=True, callback=_show_version,
+        help="Print the version and exit.")] = False,
+):
+    configure_logging(verbose)
+
+
+def configure_logging(verbose: int) -> None:
+    """WARNING for everything; ballrace at DEBUG with ``-v``; everything at DEBUG with ``-vv``."""
+    root = logging.getLogger()
+    if not root.handlers:
+        logging.basicConfig(format="%(levelname)s %(name)s: %(message)s")
+    root.setLevel(logging.DEBUG if verbose >= 2 else logging.WARNING)
+    logging.getLogger("ballrace").setLevel(logging.DEBUG if verbose >= 1 else logging.NOTSET)
+
+
+def check_units(units: str) -> str:
+    """Validate a ``--units`` value (exit 2 with a one-line error)."""
+    if units not in UNIT_SYSTEMS:
+        fail(f"--units must be one of {', '.join(UNIT_SYSTEMS)}; got {units!r}")
+    return units
 
 
 @app.command()
@@ -47,11 +129,13 @@ def contact(
     nu2: Annotated[Optional[float], typer.Option("--nu2", help="Poisson's ratio of body 2 (default: nu1).")] = None,
     method: Annotated[str, typer.Option(help="exact | brewe-hamrock-1977 | hamrock-brewe-1983")] = "exact",
     as_json: Annotated[bool, typer.Option("--json", help="Machine-readable JSON (SI units).")] = False,
+    units: Annotated[str, typer.Option("--units", help=UNITS_HELP)] = "eng",
 ):
     """Elliptical Hertz contact of two bodies, with the subsurface shear stresses."""
     from ballrace import Material
     from ballrace.analytic import hertz
 
+    check_units(units)
     try:
         q = parse_quantity(load, "[force]", "load")
         radii = [parse_quantity(v, "[length]", n, allow_inf=True)
@@ -61,29 +145,32 @@ def contact(
                       nu=nu1 if nu2 is None else nu2)
         c = hertz.point_contact(q, *radii, m1, m2, method=method)
     except (ValueError, TypeError) as exc:
-        _fail(str(exc))
-    rows = [("load Q", float(c.load), "N"), ("Rx", float(c.Rx), "m"), ("Ry", float(c.Ry), "m"),
-            ("E' (= 2 E*)", float(c.E_prime), "Pa"), ("k = a/b", float(c.k), "-"),
-            ("a (semi-major)", float(c.a), "m"), ("b (semi-minor)", float(c.b), "m"),
-            ("approach delta", float(c.approach), "m"), ("p_max", float(c.p_max), "Pa"),
-            ("p_mean", float(c.p_mean), "Pa"), ("stiffness K", float(c.stiffness), "N/m^1.5")]
+        fail(str(exc))
+    # (name, SI value, kind of quantity for the display units; None: dimensionless)
+    rows = [("load Q", float(c.load), "force"), ("Rx", float(c.Rx), "length"),
+            ("Ry", float(c.Ry), "length"),
+            ("E' (= 2 E*)", float(c.E_prime), "modulus"), ("k = a/b", float(c.k), None),
+            ("a (semi-major)", float(c.a), "length"), ("b (semi-minor)", float(c.b), "length"),
+            ("approach delta", float(c.approach), "small"), ("p_max", float(c.p_max), "stress"),
+            ("p_mean", float(c.p_mean), "stress"), ("stiffness K", float(c.stiffness), "stiffness")]
     from ballrace.analytic import subsurface
 
     nu = m1.nu if m1.nu == m2.nu else None
     note = None
     try:
         o = subsurface.orthogonal_shear(c)
-        rows += [("LP tau0 (orthogonal shear)", float(o.tau0), "Pa"), ("LP z0", float(o.z0), "m"),
-                 ("LP x0 (rolling offset)", float(o.x0), "m")]
+        rows += [("LP tau0 (orthogonal shear)", float(o.tau0), "stress"),
+                 ("LP z0", float(o.z0), "length"),
+                 ("LP x0 (rolling offset)", float(o.x0), "length")]
     except ValueError as exc:  # major axis along the rolling direction: LP does not apply
         note = f"Lundberg-Palmgren shear not reported: {exc}"
     if nu is not None:
         mx = subsurface.max_shear(c, nu=nu)
         vm = subsurface.von_mises(c, nu=nu)
-        rows += [("max shear (Tresca) on axis", float(mx.tau_max), "Pa"),
-                 ("depth of max shear", float(mx.depth), "m"),
-                 ("max von Mises on axis", float(vm.sigma_vm), "Pa"),
-                 ("depth of max von Mises", float(vm.depth), "m")]
+        rows += [("max shear (Tresca) on axis", float(mx.tau_max), "stress"),
+                 ("depth of max shear", float(mx.depth), "length"),
+                 ("max von Mises on axis", float(vm.sigma_vm), "stress"),
+                 ("depth of max von Mises", float(vm.depth), "length")]
     else:
         note = (note + "; " if note else "") + \
             "subsurface stresses need one Poisson's ratio (nu1 != nu2): not reported"
@@ -92,29 +179,22 @@ def contact(
         out["method"] = method
         if note:
             out["note"] = note
-        typer.echo(json.dumps({"units": {n: u for n, _, u in rows}, "values": out}, indent=2))
+        typer.echo(json.dumps({"units": {n: unit_label(k, "si") or "-" for n, _, k in rows},
+                               "values": out}, indent=2))
         return
-    _table(f"Hertz contact ({method})", rows)
+    con = make_console()
+    print_sections(con, [(f"Hertz contact ({method})", rows)], units)
     if note:
-        typer.echo(note)
+        con.print(literal(f"note: {note}"))
 
 
-def _table(title: str, rows) -> None:
-    from rich.console import Console
-    from rich.table import Table
-
-    t = Table(title=title)
-    t.add_column("quantity")
-    t.add_column("value", justify="right")
-    t.add_column("unit")
-    for name, val, unit in rows:
-        t.add_row(name, f"{val:.6g}", unit)
-    Console().print(t)
-
-
-def _fail(message: str) -> None:
+def fail(message: str) -> None:
+    """One-line error on stderr, exit code 2 (printed literally)."""
     typer.echo(f"error: {message}", err=True)
     raise typer.Exit(code=2)
+
+
+_fail = fail
 
 
 def _register_submodules() -> None:
@@ -131,7 +211,14 @@ def _register_submodules() -> None:
 _register_submodules()
 
 
+def _one_line_warning(message, category, filename, lineno, line=None) -> str:
+    return f"warning: {message}\n"
+
+
 def main() -> None:  # console-script entry point
+    import warnings
+
+    warnings.formatwarning = _one_line_warning    # "warning: ...", not a source excerpt
     app()
 
 

@@ -8,8 +8,9 @@ from __future__ import annotations
 
 import functools
 import math
+import re
 
-__all__ = ["parse_quantity", "to_si", "ureg"]
+__all__ = ["parse_quantity", "check_form", "to_si", "ureg"]
 
 
 @functools.cache
@@ -65,6 +66,15 @@ def parse_quantity(text, dimension: str, name: str, *, allow_inf: bool = False) 
     Traceback (most recent call last):
     ...
     ValueError: load: expected a quantity of dimension [force] (e.g. N), got '3 kg' ([mass])
+
+    A string that pint would read differently from a person is refused rather than
+    guessed: a decimal comma (pint reads ``"6,35 mm"`` as 635 mm), a thousands separator,
+    or numbers inside the unit (``"6 35 mm"`` is 210 mm to pint):
+
+    >>> parse_quantity("6,35 mm", "[length]", "rx1")
+    Traceback (most recent call last):
+    ...
+    ValueError: rx1: '6,35 mm' contains a comma; write the decimal point as '.' and no thousands separator (e.g. '6.35 mm')
     """
     if isinstance(text, (int, float)) and not isinstance(text, bool):
         if dimension in ("", "dimensionless"):
@@ -75,6 +85,7 @@ def parse_quantity(text, dimension: str, name: str, *, allow_inf: bool = False) 
         if not allow_inf:
             raise ValueError(f"{name}: 'inf' is not allowed here")
         return -math.inf if s.startswith("-") else math.inf
+    check_form(s, name)
     reg = ureg()
     try:
         q = reg.Quantity(s)
@@ -83,17 +94,50 @@ def parse_quantity(text, dimension: str, name: str, *, allow_inf: bool = False) 
     if dimension in ("", "dimensionless"):
         if not q.dimensionless:
             raise ValueError(f"{name}: expected a dimensionless number, got {s!r}")
-        return float(q.to("dimensionless").magnitude)
+        return _finite(float(q.to("dimensionless").magnitude), s, name)
     if dimension == "[angle]":
         if str(q.units) == "dimensionless":
             raise ValueError(f"{name}: give the angle's unit ('deg' or 'rad'), got {s!r}")
-        return float(q.to("radian").magnitude)
+        return _finite(float(q.to("radian").magnitude), s, name)
     if not q.check(dimension):
         raise ValueError(f"{name}: expected a quantity of dimension {dimension} "
                          f"(e.g. {_SI.get(dimension, '')}), got {s!r} ({q.dimensionality})")
     if dimension in _SI:
-        return float(q.to(_SI[dimension]).magnitude)
-    return float(q.to_base_units().magnitude)
+        return _finite(float(q.to(_SI[dimension]).magnitude), s, name)
+    return _finite(float(q.to_base_units().magnitude), s, name)
+
+
+#: One number (or a fraction such as "1/4"), then an optional unit expression.
+_NUMBER = re.compile(r"\s*[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?(?:\s*/\s*\d+(?:\.\d*)?)?")
+#: Exponents inside a unit expression ("m^2", "m**-3"): the only digits allowed there.
+_EXPONENT = re.compile(r"(?:\^|\*\*)\s*\(?\s*[+-]?\d+(?:\.\d+)?\s*\)?")
+
+
+def check_form(s: str, name: str) -> None:
+    """Refuse strings that pint parses differently than a person reads them [-].
+
+    Raises ``ValueError`` naming ``name`` for a comma (decimal or thousands separator),
+    a string that does not start with a number, or numbers inside the unit.
+    """
+    if "," in s:
+        raise ValueError(f"{name}: {s!r} contains a comma; write the decimal point as '.' and "
+                         "no thousands separator (e.g. '6.35 mm')")
+    m = _NUMBER.match(s)
+    if m is None:
+        raise ValueError(f"{name}: cannot parse {s!r} as a quantity: it does not start with a "
+                         "number (e.g. '6.35 mm')")
+    unit = s[m.end():].strip()
+    if unit.startswith("1/"):                  # "2.2e-8 1/Pa"
+        unit = unit[2:]
+    if re.search(r"\d", _EXPONENT.sub("", unit)):
+        raise ValueError(f"{name}: {s!r}: write one number followed by its unit (pint would "
+                         "multiply the numbers in it, e.g. '6 35 mm' = 210 mm)")
+
+
+def _finite(value: float, s: str, name: str) -> float:
+    if not math.isfinite(value):
+        raise ValueError(f"{name}: {s!r} is not a finite quantity")
+    return value
 
 
 def to_si(text, dimension: str, name: str, *, allow_inf: bool = False) -> float:

@@ -145,6 +145,12 @@ class BallBearing:
         if not D < dm:
             raise ValueError(f"ball_diameter must be in (0, pitch_diameter) = (0, {dm:g}) [m]; "
                              f"got {D:g}")
+        if D > 0.25 or dm > 20.0:  # issue 11: mm typed as m gives C = 677 MN without a word
+            import warnings
+
+            warnings.warn(f"ball_diameter = {D:g} m, pitch_diameter = {dm:g} m: larger than any "
+                          "rolling bearing (balls up to ~0.2 m); lengths are in metres [m] - "
+                          "were millimetres given?", UserWarning, stacklevel=3)
         Z = _integer(self.n_balls, "n_balls", 3)
         z_max = int(np.floor(np.pi / np.arcsin(D / dm) * (1 + 1e-12)))
         if Z > z_max:

@@ -255,9 +255,13 @@ class BearingCase:
 
 
 def _speed(text: str, where: str) -> float:
-    from ballrace.units import ureg
+    from ballrace.units import check_form, ureg
 
     s = str(text).strip()
+    try:
+        check_form(s, where)          # "4000,5 rpm" is 40005 rpm to pint
+    except ValueError as exc:
+        raise CaseFileError(str(exc)) from None
     low = s.lower()
     if not any(u in low for u in ("rpm", "rev", "rad", "deg")):
         raise CaseFileError(f"{where}: give the speed in rpm, rev/min, rev/s or rad/s "

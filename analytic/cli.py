@@ -10,12 +10,15 @@ from __future__ import annotations
 import json
 import logging
 import math
+from pathlib import Path
 from typing import Annotated
 
 import numpy as np
 import typer
 
-__all__ = ["register", "analyze"]
+from ballrace.console import UNITS_HELP
+
+__all__ = ["register", "analyze", "sections", "ball_columns"]
 
 log = logging.getLogger(__name__)
 
@@ -172,93 +175,101 @@ def _list(x):
     return [float(v) for v in np.atleast_1d(np.asarray(x, dtype=float))]
 
 
-def _render(r: dict) -> None:
-    from rich.console import Console
-    from rich.table import Table
+def sections(r: dict) -> list:
+    """The summary blocks of :func:`analyze`'s result, as ``(title, rows)`` pairs.
 
-    con = Console()
-    b, rt, lf = r["bearing"], r["ratings"], r["life"]
-    t = Table(title=r["title"] or "bearing")
-    for col in ("quantity", "value", "unit"):
-        t.add_column(col, justify="right" if col == "value" else "left")
-    rows = [
-        ("type", b["kind"], ""), ("ball diameter D", b["ball_diameter"] * 1e3, "mm"),
-        ("balls Z", b["n_balls"], ""), ("pitch diameter d_m", b["pitch_diameter"] * 1e3, "mm"),
-        ("f_i / f_o", f"{b['f_inner']:.4g} / {b['f_outer']:.4g}", ""),
-        ("diametral clearance", b["diametral_clearance"] * 1e6, "um"),
-        ("free contact angle", math.degrees(b["free_contact_angle"]), "deg"),
-        ("E'", b["E_prime"] / 1e9, "GPa"),
-        ("radial / axial load", f"{b['radial_load']:.6g} / {b['axial_load']:.6g}", "N"),
-        ("speed", b["speed_rpm"], f"rpm ({b['rotating_ring']} ring)"),
-        (f"C ({rt['standard']})", rt["C"] / 1e3, "kN"), ("C0 (ISO 76)", rt["C0"] / 1e3, "kN"),
-    ]
-    for name, v, u in rows:
-        t.add_row(name, v if isinstance(v, str) else f"{v:.6g}", u)
-    con.print(t)
-
-    d = r["distribution"]
-    f = r["film"]
-    t = Table(title=f"Load distribution — {d['method']}")
-    cols = ["ball", "psi [deg]", "Q [N]", "beta [deg]", "p_i [MPa]", "p_o [MPa]",
-            "a_i x b_i [mm]"]
-    if f:
-        cols += ["h_min,i [um]", "h_min,o [um]"]
-    for c in cols:
-        t.add_column(c, justify="right")
-    for j in range(len(d["ball_load"])):
-        row = [str(j + 1), f"{math.degrees(d['azimuth'][j]):.1f}", f"{d['ball_load'][j]:.1f}",
-               f"{math.degrees(d['contact_angle'][j]):.3f}",
-               f"{d['p_max_inner'][j] / 1e6:.0f}", f"{d['p_max_outer'][j] / 1e6:.0f}",
-               f"{d['a_inner'][j] * 1e3:.3f} x {d['b_inner'][j] * 1e3:.3f}"]
-        if f:
-            row += [_um(f["h_min_inner"][j]), _um(f["h_min_outer"][j])]
-        t.add_row(*row)
-    con.print(t)
-
-    t = Table(title="Life")
-    t.add_column("quantity")
-    t.add_column("value", justify="right")
-    t.add_column("unit")
+    Each row is ``(name, SI value, kind)``; ``kind`` selects the display unit
+    (:data:`ballrace.console.SYSTEMS`: "length", "small", "force", "stress", "modulus",
+    "angle", ...), ``None`` for a dimensionless number, or ``"=unit"`` for a value printed
+    as is.  A new block of results is one more entry in this list.
+    """
+    b, rt, lf, f = r["bearing"], r["ratings"], r["life"], r["film"]
+    out = [(r["title"] or "bearing", [
+        ("type", b["kind"], None), ("ball diameter D", b["ball_diameter"], "length"),
+        ("balls Z", b["n_balls"], None), ("pitch diameter d_m", b["pitch_diameter"], "length"),
+        ("conformity f_i", b["f_inner"], None), ("conformity f_o", b["f_outer"], None),
+        ("diametral clearance P_d", b["diametral_clearance"], "small"),
+        ("free contact angle", b["free_contact_angle"], "angle"),
+        ("E'", b["E_prime"], "modulus"),
+        ("radial load Fr", b["radial_load"], "force"), ("axial load Fa", b["axial_load"], "force"),
+        *([("thrust eccentricity e", b["eccentricity"], "length")]
+          if b["eccentricity"] is not None else []),
+        (f"speed ({b['rotating_ring']} ring)", b["speed_rpm"], "=rpm"),
+        (f"C ({rt['standard']})", rt["C"], "force"), ("C0 (ISO 76)", rt["C0"], "force"),
+    ])]
     rows = []
     if "P" in lf:
-        rows += [("equivalent load P = X Fr + Y Fa", lf["P"], f"N (X={lf['X']:.3g}, "
-                  f"Y={lf['Y']:.3g}, e={lf['e']:.3g})"),
-                 (f"L10 ({lf['standard']})", lf["L10"], "1e6 rev"),
-                 (f"L10h ({lf['standard']})", lf["L10h"], "h")]
-    rows += [("static equivalent load P0", lf["P0"], "N"), ("static safety s0 = C0/P0", lf["s0"], ""),
-             ("LP inner-ring life", lf["LP_inner"], "1e6 rev"),
-             ("LP outer-ring life", lf["LP_outer"], "1e6 rev"),
-             ("LP bearing L10 (e = 10/9)", lf["LP_L10"], "1e6 rev"),
-             ("LP bearing L10h", lf["LP_L10h"], "h"),
-             ("factors D, E, F, G", f"{lf['material_factor']:.3g}, {lf['processing_factor']:.3g},"
-              f" {lf['lubrication_factor']:.3g}, {lf['hardness_factor']:.3g}", ""),
-             ("adjusted LP life", lf["adjusted_LP_L10h"], "h")]
-    for name, v, u in rows:
-        t.add_row(name, v if isinstance(v, str) else f"{v:.6g}", u)
-    con.print(t)
-
+        rows += [("equivalent load P = X Fr + Y Fa", lf["P"], "force"),
+                 ("X / Y / e", f"{lf['X']:.3g} / {lf['Y']:.3g} / {lf['e']:.3g}", None),
+                 (f"L10 ({lf['standard']})", lf["L10"], "=1e6 rev"),
+                 (f"L10h ({lf['standard']})", lf["L10h"], "=h")]
+    rows += [("static equivalent load P0", lf["P0"], "force"),
+             ("static safety s0 = C0/P0", lf["s0"], None),
+             ("LP inner-ring life", lf["LP_inner"], "=1e6 rev"),
+             ("LP outer-ring life", lf["LP_outer"], "=1e6 rev"),
+             ("LP bearing L10 (e = 10/9)", lf["LP_L10"], "=1e6 rev"),
+             ("LP bearing L10h", lf["LP_L10h"], "=h"),
+             ("life factors D, E, F, G", f"{lf['material_factor']:.3g}, "
+              f"{lf['processing_factor']:.3g}, {lf['lubrication_factor']:.3g}, "
+              f"{lf['hardness_factor']:.3g}", None),
+             ("adjusted LP life", lf["adjusted_LP_L10h"], "=h")]
+    out.append(("Life", rows))
     if f:
-        t = Table(title="Lubricant film (Hamrock & Dowson 1977)")
-        t.add_column("quantity")
-        t.add_column("value", justify="right")
-        t.add_column("unit")
-        t.add_row("entrainment speed u (ball 1)", f"{f['entrainment_speed'][0]:.4g}", "m/s")
-        t.add_row("G = xi E'", f"{f['G']:.4g}", "")
-        t.add_row("k inner / outer", f"{f['k_inner']:.3f} / {f['k_outer']:.3f}", "")
-        t.add_row("smallest h_min", _um(f["h_min"]), "um")
+        rows = [("entrainment speed u (ball 1)", f["entrainment_speed"][0], "speed"),
+                ("G = xi E'", f["G"], None),
+                ("k inner / outer", f"{f['k_inner']:.3f} / {f['k_outer']:.3f}", None),
+                ("smallest h_min", f["h_min"], "small")]
         if "Lambda" in f:
-            t.add_row("film parameter Lambda", f"{f['Lambda']:.3g}", "")
-        con.print(t)
-    for n in r["notes"]:
-        con.print(f"[dim]note: {n}[/dim]")
-    if r.get("iso"):                      # ISO 281 / ISO/TS 16281 block (issue 12)
-        from ballrace.analytic.isocase import render as _render_iso
+            rows.append(("film parameter Lambda", f["Lambda"], None))
+        out.append(("Lubricant film (Hamrock & Dowson 1977)", rows))
+    if r.get("iso"):                      # ISO 281 / ISO/TS 16281 block
+        from ballrace.analytic import isocase
 
-        _render_iso(r["iso"], con)
+        out.append((isocase.TITLE, isocase.rows(r["iso"])))
+    return out
 
 
-def _um(x: float) -> str:
-    return "-" if x is None or not np.isfinite(x) else f"{x * 1e6:.4f}"
+def ball_columns(r: dict, units: str = "eng") -> tuple[list, list]:
+    """Headers (each with its unit) and rows of the per-ball table in ``units``."""
+    from ballrace.console import convert as cv
+    from ballrace.console import fmt
+    from ballrace.console import unit_label as ul
+
+    d, f = r["distribution"], r["film"]
+    L, S, A = ul("length", units), ul("small", units), ul("angle", units)
+    headers = ["ball", f"psi [{A}]", f"Q [{ul('force', units)}]", f"beta [{A}]",
+               f"p_i [{ul('stress', units)}]", f"p_o [{ul('stress', units)}]",
+               f"a_i x b_i [{L}]", f"a_o x b_o [{L}]"]
+    if f:
+        headers += [f"h_min,i [{S}]", f"h_min,o [{S}]"]
+
+    def g(x, kind, digits=5):
+        return fmt(cv(x, kind, units), digits)
+
+    rows = []
+    for j in range(len(d["ball_load"])):
+        row = [str(j + 1), g(d["azimuth"][j], "angle", 4), g(d["ball_load"][j], "force"),
+               g(d["contact_angle"][j], "angle"), g(d["p_max_inner"][j], "stress", 4),
+               g(d["p_max_outer"][j], "stress", 4),
+               f"{g(d['a_inner'][j], 'length', 4)} x {g(d['b_inner'][j], 'length', 4)}",
+               f"{g(d['a_outer'][j], 'length', 4)} x {g(d['b_outer'][j], 'length', 4)}"]
+        if f:
+            row += [g(f["h_min_inner"][j], "small", 4), g(f["h_min_outer"][j], "small", 4)]
+        rows.append(row)
+    return headers, rows
+
+
+def _render(r: dict, units: str = "eng") -> None:
+    from ballrace.console import literal, make_console, print_columns, print_sections
+
+    con = make_console()
+    secs = sections(r)
+    print_sections(con, secs[:1], units)
+    headers, rows = ball_columns(r, units)
+    print_columns(con, f"Load distribution: {r['distribution']['method']}", headers, rows)
+    print_sections(con, secs[1:], units)
+    for n in [*r["notes"], *(r.get("iso") or {}).get("notes", [])]:
+        con.print(literal(f"note: {n}"), style="dim")
 
 
 def _clean(obj):
@@ -277,22 +288,45 @@ def register(app) -> None:
 
     @app.command("bearing")
     def bearing(
-        case_file: Annotated[str, typer.Argument(help="TOML case file (see ballrace.analytic.casefile).")],
+        case_file: Annotated[str, typer.Argument(
+            help="Bearing case file (TOML; docs/casefiles.md).")],
         as_json: Annotated[bool, typer.Option("--json", help="Machine-readable JSON (SI units).")] = False,
+        units: Annotated[str, typer.Option("--units", help=UNITS_HELP)] = "eng",
     ):
         """Load distribution, Hertz contacts, ratings, life and EHL film of a bearing case."""
         from ballrace.analytic.casefile import CaseFileError, load_case
+        from ballrace.cli import check_units, fail
 
+        check_units(units)
+        p = Path(case_file)
+        if p.is_dir():
+            fail(f"{case_file}: is a directory; give a bearing case file (.toml)")
         try:
             case = load_case(case_file)
             result = analyze(case)
         except CaseFileError as exc:
-            typer.echo(f"error: {exc}", err=True)
-            raise typer.Exit(code=2)
-        except (ValueError, RuntimeError) as exc:
-            typer.echo(f"error: {case_file}: {exc}", err=True)
-            raise typer.Exit(code=2)
+            fail(_kind_hint(p) or str(exc))
+        except UnicodeDecodeError:
+            fail(f"{case_file}: not a text file; give a bearing case file (TOML)")
+        except (OSError, ValueError, RuntimeError) as exc:
+            fail(f"{case_file}: {exc}")
         if as_json:
             typer.echo(json.dumps(_clean(result), indent=2))
             return
-        _render(result)
+        _render(result, units)
+
+
+def _kind_hint(path) -> str | None:
+    """A message when ``path`` is an FE or validation case file rather than a bearing case."""
+    import tomllib
+
+    try:
+        data = tomllib.loads(Path(path).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+    if "fem" in data or isinstance(data.get("case"), dict):
+        return f"{path}: this is an FE case file; run it with `ballrace fem {path}`"
+    if isinstance(data.get("case"), list):
+        return (f"{path}: this is a validation case file; run it with "
+                f"`ballrace validate --cases {path}`")
+    return None

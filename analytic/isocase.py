@@ -107,70 +107,61 @@ def iso_life(case, result, P=None) -> dict:
                             "pressure_outer": oc.pressure_outer}
         if oc.operating < 0:
             notes.append(f"operating clearance {oc.operating * 1e6:.3g} um: preload")
-    notes.append(f"C_u: simplified C0/22 = {Cu_simple:.4g} N, 1.5 GPa Hertz method = "
+    notes.append(f"C_u from {Cu_src}; simplified C0/22 = {Cu_simple:.4g} N, 1.5 GPa Hertz method = "
                  f"{Cu_hertz:.4g} N (ratio {Cu_hertz / Cu_simple:.3f})")
     out["notes"] = notes
     return out
 
 
-def rows(iso: dict) -> list[tuple[str, object, str]]:
-    """(quantity, value, unit) rows of :func:`iso_life` for the report (SI -> display units).
+def rows(iso: dict) -> list[tuple[str, object, object]]:
+    """``(quantity, SI value, kind)`` rows of :func:`iso_life` for the ``bearing`` tables.
+
+    ``kind`` follows :func:`ballrace.console.print_sections`: a unit kind converted to the
+    display system (``"force"``, ``"small"``), ``None`` for a number, ``"=unit"`` printed as is.
 
     Examples
     --------
     >>> rows({"C": 22381.0, "C_u": 660.0, "C_u_source": "given", "a1": 1.0,
     ...       "reliability": 0.9, "L10r": 11518.0, "L10r_h": 63989.0,
     ...       "P_ref": 991.0})[0]
-    ('C (ISO 281:2007)', 22.381, 'kN')
+    ('C (ISO 281:2007)', 22381.0, 'force')
     """
-    r: list[tuple[str, object, str]] = [
-        ("C (ISO 281:2007)", iso["C"] / 1e3, "kN"),
-        ("fatigue load limit C_u", iso["C_u"] / 1e3, f"kN ({iso['C_u_source']})"),
+    r: list[tuple[str, object, object]] = [
+        ("C (ISO 281:2007)", iso["C"], "force"),
+        ("fatigue load limit C_u", iso["C_u"], "force"),
     ]
     if "viscosity" in iso:
         if "oil_temperature" in iso:
-            r.append(("oil temperature", iso["oil_temperature"] - 273.15, "degC"))
-        r += [("operating viscosity nu", iso["viscosity"] * 1e6, "mm^2/s"),
-              ("reference viscosity nu1", iso["nu1"] * 1e6, "mm^2/s"),
-              ("viscosity ratio kappa", iso["kappa"], "")]
+            r.append(("oil temperature", iso["oil_temperature"] - 273.15, "=degC"))
+        r += [("operating viscosity nu", iso["viscosity"] * 1e6, "=mm^2/s"),
+              ("reference viscosity nu1", iso["nu1"] * 1e6, "=mm^2/s"),
+              ("viscosity ratio kappa", iso["kappa"], None)]
     if iso.get("contamination") is not None:
         lvl = f" ({iso['cleanliness']})" if iso.get("cleanliness") else ""
-        r.append(("contamination factor e_C", iso["contamination"], lvl.strip()))
-    r.append((f"reliability {iso['reliability'] * 100:g} %: a1", iso["a1"], ""))
+        r.append((f"contamination factor e_C{lvl}", iso["contamination"], None))
+    r.append((f"reliability {iso['reliability'] * 100:g} %: a1", iso["a1"], None))
     if "a_ISO" in iso:
-        r += [("a_ISO (e_C C_u / P)", iso["a_ISO"], ""),
-              ("modified rating life L_nm", iso["L_nm"], "1e6 rev"),
-              ("modified rating life L_nmh", iso["L_nm_h"], "h")]
-    r += [("reference rating life L10r (ISO/TS 16281)", iso["L10r"], "1e6 rev"),
-          ("L10r", iso["L10r_h"], "h"),
-          ("equivalent reference load P_ref", iso["P_ref"], "N")]
+        r += [("a_ISO (e_C C_u / P)", iso["a_ISO"], None),
+              ("modified rating life L_nm", iso["L_nm"], "=1e6 rev"),
+              ("modified rating life L_nmh", iso["L_nm_h"], "=h")]
+    r += [("reference rating life L10r (ISO/TS 16281)", iso["L10r"], "=1e6 rev"),
+          ("reference rating life L10rh", iso["L10r_h"], "=h"),
+          ("equivalent reference load P_ref", iso["P_ref"], "force")]
     if "L10mr" in iso:
-        r += [("a_ISO (e_C C_u / P_ref)", iso["a_ISO_ref"], ""),
-              ("modified reference life L10mr", iso["L10mr"], "1e6 rev"),
-              ("L10mr", iso["L10mr_h"], "h")]
+        r += [("a_ISO (e_C C_u / P_ref)", iso["a_ISO_ref"], None),
+              ("modified reference life L10mr", iso["L10mr"], "=1e6 rev"),
+              ("modified reference life L10mrh", iso["L10mr_h"], "=h")]
     c = iso.get("clearance")
     if c:
-        r += [("unmounted clearance", c["initial"] * 1e6, "um"),
-              ("- inner fit / outer fit", f"{c['fit_inner'] * 1e6:.3g} / "
-               f"{c['fit_outer'] * 1e6:.3g}", "um"),
-              ("+ temperatures", c["thermal"] * 1e6, "um"),
-              ("operating clearance", c["operating"] * 1e6,
-               "um (preload)" if c["operating"] < 0 else "um")]
+        r += [("unmounted clearance", c["initial"], "small"),
+              ("- inner-ring fit", c["fit_inner"], "small"),
+              ("- outer-ring fit", c["fit_outer"], "small"),
+              ("+ temperatures", c["thermal"], "small"),
+              ("operating clearance" + (" (preload)" if c["operating"] < 0 else ""),
+               c["operating"], "small")]
     return [(q, v if isinstance(v, str) or not math.isfinite(v) else float(v), u)
             for q, v, u in r]
 
 
-def render(iso: dict, console) -> None:
-    """Print the ISO life table of :func:`iso_life` on a rich ``console``."""
-    from rich.markup import escape
-    from rich.table import Table
-
-    t = Table(title="Life — ISO 281:2007 modified rating life, ISO/TS 16281 reference life")
-    t.add_column("quantity")
-    t.add_column("value", justify="right")
-    t.add_column("unit")
-    for name, v, u in rows(iso):
-        t.add_row(name, v if isinstance(v, str) else f"{v:.6g}", u)
-    console.print(t)
-    for n in iso.get("notes", []):
-        console.print(f"[dim]note: {escape(n)}[/dim]")
+#: Title of the ISO block in the ``bearing`` output.
+TITLE = "Life: ISO 281:2007 modified rating life, ISO/TS 16281 reference life"

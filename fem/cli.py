@@ -2,86 +2,341 @@
 
 ``ballrace fem CASE.toml`` or ``ballrace fem --case inner --load "4450 N"`` meshes,
 assembles and solves with a progress display, prints the FE-versus-analytic table,
-writes ``result.json`` and PNG renders to ``--out``.  ``ballrace fem convergence``
-runs a mesh-convergence study instead.  A case file (units parsed with pint)::
+writes ``result.json`` and PNG renders to ``--out`` (default ``ballrace-out/fem``).
+``ballrace fem convergence`` runs a mesh-convergence study instead.
 
+An FE case file (TOML, units parsed with pint; docs/casefiles.md)::
+
+    title = "209 inner race, 1000 lbf"   # optional
     [case]
-    kind = "race"            # race | plane | ball
-    race = "inner"
+    contact = "inner"        # inner | outer (ball on a race) | plane | ball
     load = "4450 N"
-    contact_angle = "0 deg"
-    [bearing]                # for kind = "race": the 209 bearing
+    contact_angle = "0 deg"  # inner | outer only
+    # ball_diameter = "12.7 mm"   # plane | ball only (a race case takes the bearing's)
+    [bearing]                # inner | outer only; default: the 209 bearing below
     ball_diameter = "12.7 mm"
     n_balls = 9
     pitch_diameter = "65 mm"
     f_inner = 0.52
     f_outer = 0.52
-    free_contact_angle = "0 deg"
-    [fem]
+    [materials]              # optional; default bearing steel (200 GPa, 0.3)
+    ball = { E = "200 GPa", nu = 0.3 }
+    ring = { E = "200 GPa", nu = 0.3 }   # the race, plane or second ball
+    [fem]                    # optional
     level = "standard"       # quick | standard | fine
     mode = "half-space"      # half-space | two-body
     gap = "hertz"            # hertz | exact
+    # solver = "cholmod"     # cholmod | pardiso | amg | superlu
+
+Like bearing case files, unknown keys are errors (a typo never runs a default case) and
+every message names the file and the ``[table].key``.  A bearing or validation case
+file given here is refused with a pointer to the right command.  Options given on the
+command line beside a case file take precedence over the file.
 """
 from __future__ import annotations
 
 import json
+import tomllib
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Annotated, Optional
 
 import typer
 
-__all__ = ["register"]
+from ballrace.console import UNITS_HELP
+
+__all__ = ["register", "FECaseFile", "load_fe_case", "parse_fe_case", "CONTACTS"]
+
+#: Contacts an FE case describes: a ball on the inner or outer race of a bearing, on a
+#: flat, or on another ball.
+CONTACTS = ("inner", "outer", "plane", "ball")
+LEVELS = ("quick", "standard", "fine")
+MODES = ("half-space", "two-body")
+GAPS = ("hertz", "exact")
+DEFAULT_OUT = Path("ballrace-out") / "fem"
 
 _BEARING_209 = {"ball_diameter": "12.7 mm", "n_balls": 9, "pitch_diameter": "65 mm",
-                "f_inner": 0.52, "f_outer": 0.52, "free_contact_angle": "0 deg"}
+                "f_inner": 0.52, "f_outer": 0.52}
 
 
-def _case_from(spec: dict):
+@dataclass(frozen=True)
+class FECaseFile:
+    """A validated FE case (SI), ready for :func:`ballrace.fem.run_case`.
+
+    Attributes
+    ----------
+    title : str
+    case : ballrace.fem.ContactCase
+    contact : "inner", "outer", "plane" or "ball".
+    level, mode, gap : run settings.
+    solver : sparse solver or None (automatic).
+    """
+
+    title: str
+    case: object
+    contact: str
+    level: str
+    mode: str
+    gap: str
+    solver: Optional[str]
+
+
+def _models():
+    from typing import Literal
+
+    from pydantic import BaseModel, ConfigDict, Field
+
+    class _Strict(BaseModel):
+        model_config = ConfigDict(extra="forbid", frozen=True)
+
+    class CaseSpec(_Strict):
+        contact: Literal["inner", "outer", "plane", "ball"] = "inner"
+        load: str = "4450 N"
+        contact_angle: Optional[str] = None
+        ball_diameter: Optional[str] = None
+
+    class BearingSpec(_Strict):
+        name: str = ""
+        ball_diameter: str
+        n_balls: int = Field(ge=3)
+        pitch_diameter: str
+        f_inner: float = Field(gt=0.5)
+        f_outer: float = Field(gt=0.5)
+        free_contact_angle: Optional[str] = None
+        diametral_clearance: Optional[str] = None
+
+    class MaterialSpec(_Strict):
+        E: str
+        nu: float = Field(gt=-1.0, lt=0.5)
+        name: str = ""
+
+    class MaterialsSpec(_Strict):
+        ball: Optional[MaterialSpec] = None
+        ring: Optional[MaterialSpec] = None
+
+    class FemSpec(_Strict):
+        level: Literal["quick", "standard", "fine"] = "standard"
+        mode: Literal["half-space", "two-body"] = "half-space"
+        gap: Literal["hertz", "exact"] = "hertz"
+        solver: Optional[Literal["cholmod", "pardiso", "amg", "superlu"]] = None
+
+    class Spec(_Strict):
+        title: str = ""
+        case: CaseSpec = CaseSpec()
+        bearing: Optional[BearingSpec] = None
+        materials: MaterialsSpec = MaterialsSpec()
+        fem: FemSpec = FemSpec()
+
+    return Spec
+
+
+def _kind_error(data: dict, source: str) -> str | None:
+    """Refuse a bearing or validation case file with a pointer to the right command."""
+    if isinstance(data.get("case"), list):
+        return (f"{source}: this is a validation case file ([[case]] tables); run it with "
+                f"`ballrace validate --cases {source}`")
+    if any(k in data for k in ("loads", "operation", "lubricant", "life")) \
+            or ("bearing" in data and "case" not in data and "fem" not in data):
+        return (f"{source}: this is a bearing case file, not an FE case file (it has no [case] "
+                f"table); run it with `ballrace bearing {source}`")
+    return None
+
+
+def parse_fe_case(data: dict, source: str = "<case>", **overrides) -> FECaseFile:
+    """Validate an FE case dictionary (parsed TOML) and build the contact case.
+
+    Parameters
+    ----------
+    data : dict
+        The TOML document (``{}``: the default case, 209 inner race at 4450 N).
+    source : str
+        Name used in error messages (the file name).
+    **overrides
+        ``contact``, ``load`` (unit string), ``level``, ``mode``, ``gap``, ``solver``:
+        values given on the command line; ``None`` keeps the file's value.
+
+    Raises
+    ------
+    ballrace.analytic.casefile.CaseFileError
+        Naming ``source`` and the offending ``[table].key``.
+
+    Examples
+    --------
+    >>> c = parse_fe_case({"case": {"contact": "plane", "load": "2 kN"}}, level="quick")
+    >>> c.case.name, c.case.load, c.level
+    ('ball on plane', 2000.0, 'quick')
+    >>> parse_fe_case({"case": {"lod": "2 kN"}}, "x.toml")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    ballrace.analytic.casefile.CaseFileError: x.toml: [case].lod: Extra inputs are not permitted
+    """
+    from pydantic import ValidationError
+
     import ballrace
-    from ballrace.units import parse_quantity as q
+    from ballrace.analytic.casefile import CaseFileError
+    from ballrace.units import parse_quantity
 
     from . import api
 
-    c = spec.get("case", {})
-    kind = c.get("kind", "race")
-    load = q(c.get("load", "4450 N"), "[force]", "load")
-    if kind == "race":
-        b = {**_BEARING_209, **spec.get("bearing", {})}
-        brg = ballrace.BallBearing(
-            q(b["ball_diameter"], "[length]", "ball_diameter"), int(b["n_balls"]),
-            q(b["pitch_diameter"], "[length]", "pitch_diameter"), float(b["f_inner"]),
-            float(b["f_outer"]),
-            free_contact_angle=q(b.get("free_contact_angle", "0 deg"), "[angle]",
-                                 "free_contact_angle"))
-        return api.race_case(brg, load, c.get("race", "inner"),
-                             q(c.get("contact_angle", "0 deg"), "[angle]", "contact_angle"))
-    D = q(c.get("ball_diameter", "12.7 mm"), "[length]", "ball_diameter")
-    if kind == "plane":
-        return api.plane_case(D, load)
-    if kind == "ball":
-        return api.ball_case(D, load)
-    raise ValueError(f"case.kind must be 'race', 'plane' or 'ball'; got {kind!r}")
+    msg = _kind_error(data, source)
+    if msg:
+        raise CaseFileError(msg)
+    data = _merge(data, overrides)
+    try:
+        spec = _models().model_validate(data)
+    except ValidationError as exc:
+        lines = []
+        for err in exc.errors():
+            loc = [str(p) for p in err["loc"]]
+            key = f"[{loc[0]}]." + ".".join(loc[1:]) if len(loc) > 1 else (loc[0] if loc else "")
+            lines.append(f"{source}: {key}: {err['msg']}")
+        raise CaseFileError("\n".join(lines)) from None
+
+    def q(value, dim, where):
+        if value is None:
+            return None
+        try:
+            return parse_quantity(value, dim, where)
+        except ValueError as exc:
+            raise CaseFileError(f"{source}: {exc}") from None
+
+    c = spec.case
+    mats = {}
+    for which in ("ball", "ring"):
+        m = getattr(spec.materials, which)
+        if m is not None:
+            try:
+                mats[which] = ballrace.Material(
+                    E=q(m.E, "[pressure]", f"[materials.{which}].E"), nu=m.nu,
+                    name=m.name or which)
+            except (ValueError, TypeError) as exc:
+                raise CaseFileError(f"{source}: [materials.{which}]: {exc}") from None
+    load = q(c.load, "[force]", "[case].load")
+    race = c.contact in ("inner", "outer")
+    if race and c.ball_diameter is not None:
+        raise CaseFileError(f"{source}: [case].ball_diameter: a {c.contact}-race case takes "
+                            "the ball diameter from [bearing]")
+    if not race:
+        for key, val in (("[bearing]", spec.bearing), ("[case].contact_angle", c.contact_angle)):
+            if val is not None:
+                raise CaseFileError(f"{source}: {key} applies to inner | outer race contacts "
+                                    f"only (this case is contact = {c.contact!r})")
+    try:
+        if race:
+            b = spec.bearing
+            geo = dict(_BEARING_209) if b is None else b.model_dump(exclude_none=True)
+            kw = {}
+            if geo.get("diametral_clearance") is not None:
+                kw["diametral_clearance"] = q(geo["diametral_clearance"], "[length]",
+                                              "[bearing].diametral_clearance")
+            else:
+                kw["free_contact_angle"] = q(geo.get("free_contact_angle", "0 deg"), "[angle]",
+                                             "[bearing].free_contact_angle")
+            if "ball" in mats:
+                kw["ball_material"] = mats["ball"]
+            if "ring" in mats:
+                kw["ring_material"] = mats["ring"]
+            brg = ballrace.BallBearing(
+                q(geo["ball_diameter"], "[length]", "[bearing].ball_diameter"),
+                int(geo["n_balls"]), q(geo["pitch_diameter"], "[length]",
+                                       "[bearing].pitch_diameter"),
+                float(geo["f_inner"]), float(geo["f_outer"]), **kw)
+            cse = api.race_case(brg, load, c.contact,
+                                q(c.contact_angle or "0 deg", "[angle]", "[case].contact_angle"))
+        else:
+            D = q(c.ball_diameter or "12.7 mm", "[length]", "[case].ball_diameter")
+            m1 = mats.get("ball", ballrace.BEARING_STEEL)
+            if c.contact == "plane":
+                cse = api.plane_case(D, load, material=m1, plane_material=mats.get("ring"))
+            else:
+                cse = api.ball_case(D, load, material=m1, other_material=mats.get("ring"))
+    except CaseFileError:
+        raise
+    except (ValueError, TypeError) as exc:
+        raise CaseFileError(f"{source}: {exc}") from None
+    f = spec.fem
+    return FECaseFile(title=spec.title, case=cse, contact=c.contact, level=f.level,
+                      mode=f.mode, gap=f.gap, solver=f.solver)
 
 
-def _table(r) -> None:
-    from rich.console import Console
-    from rich.table import Table
+def _merge(data: dict, overrides: dict) -> dict:
+    """The document with command-line values (not None) put in place of the file's."""
+    out = {k: (dict(v) if isinstance(v, dict) else v) for k, v in data.items()}
+    for key, table in (("contact", "case"), ("load", "case"), ("level", "fem"),
+                       ("mode", "fem"), ("gap", "fem"), ("solver", "fem")):
+        if overrides.get(key) is not None:
+            t = out.setdefault(table, {})
+            if not isinstance(t, dict):
+                continue                 # reported by the validation
+            t[key] = overrides[key]
+    return out
 
-    scale = {"m": (1e3, "mm"), "Pa": (1e-6, "MPa")}
-    t = Table(title=f"{r.case.name}, Q = {r.case.load:g} N — {r.mode}, {r.gap} gap, {r.level} "
-                    f"({r.n_dofs:,} DOFs, {r.timings['total']:.1f} s, {r.solver})")
-    for col in ("quantity", "FE", "analytic", "unit", "error", "tolerance", ""):
-        t.add_column(col, justify="right" if col not in ("quantity", "unit") else "left")
-    for row in r.comparison:
-        f, u = scale.get(row["unit"], (1.0, row["unit"]))
-        tol = "—" if row["tol"] is None else f"{100 * row['tol']:.1f} %"
-        mark = "" if row["tol"] is None else ("[green]ok" if row["ok"] else "[red]FAIL")
-        t.add_row(row["quantity"], f"{row['fe'] * f:.5g}", f"{row['analytic'] * f:.5g}", u,
-                  f"{100 * row['error']:+.2f} %", tol, mark)
-    Console().print(t)
-    if r.gap == "exact":
-        Console().print("exact sphere–torus gap: differences from Hertz are 'beyond Hertz' "
-                        "results, not errors (no tolerances applied).")
+
+def load_fe_case(path, **overrides) -> FECaseFile:
+    """Read and validate an FE case file (format: module docstring, docs/casefiles.md).
+
+    Raises
+    ------
+    ballrace.analytic.casefile.CaseFileError
+        File missing, a directory, not TOML, of another kind, or with invalid contents.
+    """
+    from ballrace.analytic.casefile import CaseFileError
+
+    p = Path(path)
+    if p.is_dir():
+        raise CaseFileError(f"{p}: is a directory; give an FE case file (.toml)")
+    try:
+        data = tomllib.loads(p.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise CaseFileError(f"{p}: no such file") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise CaseFileError(f"{p}: cannot read ({exc})") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise CaseFileError(f"{p}: not valid TOML ({exc})") from None
+    return parse_fe_case(data, str(p), **overrides)
+
+
+def _check_choice(value, option: str, allowed) -> None:
+    from ballrace.cli import fail
+
+    if value is not None and value not in allowed:
+        fail(f"{option} must be one of {', '.join(allowed)}; got {value!r}")
+
+
+def _table(r, units: str, heading: str = "") -> None:
+    """The FE-versus-analytic table, driven by the result's comparison rows."""
+    from rich.text import Text
+
+    from ballrace.console import convert, fmt, literal, make_console, print_columns, unit_label
+
+    d = r.to_dict()
+    kinds = {"m": "length", "Pa": "stress", "N": "force"}
+    rows = []
+    for row in d.get("comparison", []):
+        kind = kinds.get(row.get("unit"))
+        unit = unit_label(kind, units) if kind else (row.get("unit") or "")
+        tol = row.get("tol")
+        mark = Text("") if tol is None else (Text("ok", style="green") if row.get("ok")
+                                             else Text("FAIL", style="bold red"))
+        err = row.get("error")
+        rows.append([str(row.get("quantity", "")),
+                     fmt(convert(row.get("fe"), kind, units), 5),
+                     fmt(convert(row.get("analytic"), kind, units), 5), unit,
+                     "-" if err is None else f"{100 * err:+.2f} %",
+                     "-" if tol is None else f"{100 * tol:.1f} %", mark])
+    total = d.get("timings", {}).get("total")
+    title = (f"{d.get('case', '')}, Q = {fmt(convert(d.get('load'), 'force', units))} "
+             f"{unit_label('force', units)}\n{d.get('mode')}, {d.get('gap')} gap, "
+             f"{d.get('level')}, {d.get('n_dofs', 0):,} DOFs"
+             + (f", {total:.1f} s" if total is not None else "") + f", {d.get('solver')}")
+    con = make_console()
+    if heading:                              # the case file's title, printed literally
+        con.print(literal(heading), style="bold")
+    print_columns(con, title, ["quantity", "FE", "analytic", "unit", "error", "tolerance", ""],
+                  rows, justify=["left", "right", "right", "left", "right", "right", "left"])
+    if d.get("gap") == "exact":
+        con.print("exact sphere-torus gap: differences from Hertz are 'beyond Hertz' "
+                  "results, not errors (no tolerances applied).")
 
 
 def register(app: typer.Typer) -> None:
@@ -90,72 +345,82 @@ def register(app: typer.Typer) -> None:
     @app.command("fem")
     def fem_cmd(
         case_file: Annotated[Optional[str], typer.Argument(
-            help="CASE.toml, or the word 'convergence' for a mesh-convergence study.")] = None,
-        case: Annotated[str, typer.Option(
-            help="race | plane | ball, or inner | outer for a race case (without a case "
-                 "file)")] = "race",
-        race: Annotated[str, typer.Option(help="inner | outer")] = "inner",
-        load: Annotated[str, typer.Option(help='Ball load, e.g. "4450 N".')] = "4450 N",
-        level: Annotated[str, typer.Option(help="quick | standard | fine")] = "standard",
-        mode: Annotated[str, typer.Option(help="half-space | two-body")] = "half-space",
-        gap: Annotated[str, typer.Option(help="hertz | exact")] = "hertz",
-        out: Annotated[Path, typer.Option(help="Output folder (result.json, PNGs).")] = Path("fem-out"),
+            help="FE case file (docs/casefiles.md), or the word 'convergence' for a "
+                 "mesh-convergence study.")] = None,
+        case: Annotated[Optional[str], typer.Option(
+            "--case", "--contact",
+            help="inner | outer (ball on the 209 bearing's race) | plane | ball "
+                 "[default: inner]")] = None,
+        load: Annotated[Optional[str], typer.Option(
+            help='Ball load, e.g. "4450 N", "1000 lbf" [default: 4450 N].')] = None,
+        level: Annotated[Optional[str], typer.Option(
+            help="quick | standard | fine [default: standard]")] = None,
+        mode: Annotated[Optional[str], typer.Option(
+            help="half-space | two-body [default: half-space]")] = None,
+        gap: Annotated[Optional[str], typer.Option(help="hertz | exact [default: hertz]")] = None,
+        solver: Annotated[Optional[str], typer.Option(
+            help="Force a sparse solver: cholmod | pardiso | amg | superlu "
+                 "[default: the best available].")] = None,
+        out: Annotated[Path, typer.Option(
+            help="Output folder (result.json, PNGs); ignored by git.")] = DEFAULT_OUT,
         render: Annotated[bool, typer.Option(help="Write PNG renders.")] = True,
-        sizes: Annotated[str, typer.Option(help="Convergence: elements per minor semi-axis.")] = "4,6,8,11",
-        solver: Annotated[Optional[str], typer.Option(help="Force a sparse solver.")] = None,
+        sizes: Annotated[str, typer.Option(
+            help="Convergence: elements per minor semi-axis.")] = "4,6,8,11",
+        units: Annotated[str, typer.Option("--units", help=UNITS_HELP)] = "eng",
     ):
-        """FE check of a Hertz ball contact (mesh, assemble, solve, compare, render)."""
+        """FE check of a Hertz ball contact (mesh, assemble, solve, compare, render).
+
+        Options given beside a case file take precedence over the file's values.
+        """
+        from ballrace.analytic.casefile import CaseFileError
+        from ballrace.cli import check_units, fail
+
+        check_units(units)
+        _check_choice(case, "--case", CONTACTS)
+        _check_choice(level, "--level", LEVELS)
+        _check_choice(mode, "--mode", MODES)
+        _check_choice(gap, "--gap", GAPS)
+        from .solvers import SOLVERS, available_solvers
+
+        _check_choice(solver, "--solver", SOLVERS)
+        if solver is not None and solver not in available_solvers():
+            fail(f"--solver {solver}: not installed here (available: "
+                 f"{', '.join(available_solvers())})")
+        n_sizes = ()
+        if case_file == "convergence":
+            try:
+                n_sizes = tuple(int(s) for s in sizes.split(","))
+            except ValueError:
+                fail(f"--sizes must be comma-separated integers, e.g. 4,6,8; got {sizes!r}")
+        overrides = dict(contact=case, load=load, level=level, mode=mode, gap=gap, solver=solver)
+        try:
+            if case_file and case_file != "convergence":
+                fc = load_fe_case(case_file, **overrides)
+            else:
+                fc = parse_fe_case({}, "command line", **overrides)
+        except CaseFileError as exc:
+            fail(str(exc))
+        try:
+            out.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            fail(f"--out {out}: {exc}")
+        if case_file == "convergence":
+            _convergence(fc, n_sizes, out)
+            return
         from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
         from . import api
 
-        try:
-            if case_file and case_file != "convergence":
-                import tomllib
-
-                spec = tomllib.loads(Path(case_file).read_text())
-                f = spec.get("fem", {})
-                level_, mode_, gap_ = f.get("level", level), f.get("mode", mode), f.get("gap", gap)
-            else:
-                if case in ("inner", "outer"):          # shorthand: --case inner
-                    case, race = "race", case
-                spec = {"case": {"kind": case, "race": race, "load": load}}
-                level_, mode_, gap_ = level, mode, gap
-            cse = _case_from(spec)
-        except (ValueError, TypeError, OSError) as exc:
-            typer.echo(f"error: {exc}", err=True)
-            raise typer.Exit(code=2)
-        out.mkdir(parents=True, exist_ok=True)
         cols = (SpinnerColumn(), TextColumn("{task.description}"), TimeElapsedColumn())
-        if case_file == "convergence":
-            from .convergence import QUANTITIES, convergence_study
-
+        try:
             with Progress(*cols, transient=True) as prog:
-                task = prog.add_task("convergence", total=None)
-                st = convergence_study(cse, tuple(int(s) for s in sizes.split(",")), mode=mode_,
-                                       gap=gap_, solver=solver,
-                                       progress=lambda s: prog.update(task, description=s))
-            from rich.console import Console
-            from rich.table import Table
-
-            t = Table(title=f"mesh convergence: {cse.name}, {mode_} (errors vs analytic; "
-                            "rate = slope of log|error| vs log DOFs, x3 for h)")
-            for col in ("n/minor", "DOFs", "s", *QUANTITIES):
-                t.add_column(col, justify="right")
-            for row in st.rows():
-                t.add_row(str(row[0]), f"{row[1]:,}", f"{row[2]:.1f}",
-                          *[f"{100 * e:+.2f} %" for e in row[3:]])
-            t.add_row("rate", "per DOF", "", *[f"{st.rates[q]:.2f}" for q in QUANTITIES])
-            Console(width=max(Console().width, 140)).print(t)
-            (out / "convergence.json").write_text(json.dumps(
-                {"n": st.n, "dofs": st.dofs, "seconds": st.seconds, "errors": st.errors,
-                 "rates": st.rates}, indent=2))
-            return
-        with Progress(*cols, transient=True) as prog:
-            task = prog.add_task("starting", total=None)
-            r = api.run_case(cse, level=level_, mode=mode_, gap=gap_, solver=solver,
-                             progress=lambda s: prog.update(task, description=s))
-        _table(r)
+                task = prog.add_task("starting", total=None)
+                r = api.run_case(fc.case, level=fc.level, mode=fc.mode, gap=fc.gap,
+                                 solver=fc.solver,
+                                 progress=lambda s: prog.update(task, description=s))
+        except (ValueError, TypeError, ImportError) as exc:
+            fail(str(exc))
+        _table(r, units, fc.title)
         (out / "result.json").write_text(json.dumps(r.to_dict(), indent=2))
         if render:
             from .render import render as _render
@@ -165,3 +430,31 @@ def register(app: typer.Typer) -> None:
         typer.echo(f"wrote {out / 'result.json'}" + (" and renders" if render else ""))
         if not r.passed:
             raise typer.Exit(code=1)
+
+
+def _convergence(fc, n: tuple, out: Path) -> None:
+    from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
+
+    from ballrace.cli import fail
+    from ballrace.console import make_console, print_columns
+
+    from .convergence import QUANTITIES, convergence_study
+
+    cols = (SpinnerColumn(), TextColumn("{task.description}"), TimeElapsedColumn())
+    try:
+        with Progress(*cols, transient=True) as prog:
+            task = prog.add_task("convergence", total=None)
+            st = convergence_study(fc.case, n, mode=fc.mode, gap=fc.gap, solver=fc.solver,
+                                   progress=lambda s: prog.update(task, description=s))
+    except (ValueError, TypeError, ImportError) as exc:
+        fail(str(exc))
+    rows = [[str(row[0]), f"{row[1]:,}", f"{row[2]:.1f}", *[f"{100 * e:+.2f} %" for e in row[3:]]]
+            for row in st.rows()]
+    rows.append(["rate", "per DOF", "", *[f"{st.rates[q]:.2f}" for q in QUANTITIES]])
+    print_columns(make_console(),
+                  f"mesh convergence: {fc.case.name}, {fc.mode} (errors vs analytic; "
+                  "rate = slope of log|error| vs log DOFs, x3 for h)",
+                  ["n/minor", "DOFs", "s", *QUANTITIES], rows)
+    (out / "convergence.json").write_text(json.dumps(
+        {"n": st.n, "dofs": st.dofs, "seconds": st.seconds, "errors": st.errors,
+         "rates": st.rates}, indent=2))

@@ -78,7 +78,7 @@ def test_cli_rejects_bad_input_before_meshing(tmp_path):
     res = run(app, ["fem", "--case", "outer", "--load", "3 m", "--out", str(tmp_path)])
     assert res.exit_code == 2 and "load" in res.output
     res = run(app, ["fem", "--case", "cylinder", "--out", str(tmp_path)])
-    assert res.exit_code == 2 and "case.kind must be" in res.output
+    assert res.exit_code == 2 and "--case must be one of" in res.output
 
 
 def test_groove_case_from_plain_radii_equals_bearing_case(brg209):

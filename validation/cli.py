@@ -11,6 +11,8 @@ from typing import Annotated, Optional
 
 import typer
 
+from ballrace.console import literal
+
 __all__ = ["register"]
 
 log = logging.getLogger(__name__)
@@ -20,8 +22,11 @@ _STYLE = {"pass": "green", "fail": "bold red", "error": "bold magenta", "missing
 _MARK = {"pass": "PASS", "fail": "FAIL", "error": "ERROR", "missing": "MISSING",
          "skipped": "SKIP"}
 
-teach_app = typer.Typer(add_completion=False, no_args_is_help=True,
+teach_app = typer.Typer(add_completion=False, no_args_is_help=True, rich_markup_mode=None,
                         help="Teaching figures drawn from the library.")
+
+#: Where ``teach`` writes its figures unless ``--out`` says otherwise (ignored by git).
+TEACH_OUT = Path("ballrace-out") / "teach"
 
 
 def validate(
@@ -64,14 +69,37 @@ def validate(
         _usage(console, f"--fem must be one of {', '.join(FEM_LEVELS)}; got {fem!r}")
     if update_baseline and baseline is None:
         _usage(console, "--update-baseline needs --baseline FILE (where to write it)")
+    if baseline is not None and not update_baseline:
+        _check_baseline(console, baseline)
+    if cases is not None and Path(cases).is_dir():
+        _usage(console, f"--cases {cases}: is a directory; give a file or a glob such as "
+                        f"'{Path(cases) / '*.toml'}'")
+    if report is not None and report.exists() and not report.is_dir():
+        _usage(console, f"--report {report}: exists and is not a folder")
     try:
         selected = load_cases(cases)
-    except CaseFileError as exc:
+    except (CaseFileError, OSError) as exc:
         _usage(console, str(exc))
     code = run_and_report(selected, console=console, fem=fem, scheduler=scheduler,
                           workers=workers, serial=serial, report=report, baseline=baseline,
                           update_baseline=update_baseline, plots=not no_plots)
     raise typer.Exit(code=code)
+
+
+def _check_baseline(console, path: Path) -> None:
+    """Refuse a missing or unreadable --baseline before any case runs."""
+    from . import baseline as bl
+
+    if not path.exists():
+        _usage(console, f"--baseline {path}: no such file (write one with --update-baseline)")
+    if path.is_dir():
+        _usage(console, f"--baseline {path}: is a directory; give a baseline or results.json file")
+    try:
+        bl.load_baseline(path)
+    except UnicodeDecodeError:
+        _usage(console, f"--baseline {path}: not a baseline or results JSON (not text)")
+    except (OSError, ValueError, AttributeError) as exc:
+        _usage(console, f"--baseline {path}: not a baseline or results JSON ({exc})")
 
 
 def _quiet_dask() -> None:
@@ -99,9 +127,9 @@ def run_and_report(selected, *, console, fem="quick", scheduler=None, workers=No
         report.mkdir(parents=True, exist_ok=True)
         artifact_dir = report / "renders"
         artifact_dir.mkdir(exist_ok=True)
-    console.print(f"[bold]ballrace validate[/]: {len(selected)} case(s), --fem {fem}"
-                  + (f", scheduler {scheduler}" if scheduler else "") + ("" if not serial
-                                                                         else ", serial"))
+    head = f"{len(selected)} case(s), --fem {fem}"
+    head += (f", scheduler {scheduler}" if scheduler else "") + (", serial" if serial else "")
+    console.print("[bold]ballrace validate[/]:", literal(head))
     with Progress(SpinnerColumn(), TextColumn("[progress.description]{task.description}"),
                   BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
                   console=console, transient=True) as progress:
@@ -111,10 +139,13 @@ def run_and_report(selected, *, console, fem="quick", scheduler=None, workers=No
             progress.update(task, description=f"running {case.id}")
 
         def on_result(r):
-            style = _STYLE[r.status]
-            msg = f" [dim]{r.message}[/]" if r.message else ""
-            progress.console.print(f"[{style}]{_MARK[r.status]:>7}[/] {r.id:<40} "
-                                   f"{r.duration:8.3f} s{msg}", highlight=False)
+            from rich.text import Text
+
+            line = Text(f"{_MARK[r.status]:>7}", style=_STYLE[r.status])
+            line.append(f" {literal(r.id).plain:<40} {r.duration:8.3f} s")
+            if r.message:
+                line.append(" " + literal(r.message).plain, style="dim")
+            progress.console.print(line, highlight=False)
             progress.advance(task)
 
         run = run_cases(selected, fem=fem, serial=serial, client=client, scheduler=scheduler,
@@ -125,8 +156,8 @@ def run_and_report(selected, *, console, fem="quick", scheduler=None, workers=No
     drift = None
     if baseline is not None and update_baseline:
         path = bl.write_baseline(run, baseline)
-        console.print(f"baseline written: {path} ({sum(len(v) for v in bl.snapshot(run).values())}"
-                      " values)")
+        console.print(literal(f"baseline written: {path} "
+                              f"({sum(len(v) for v in bl.snapshot(run).values())} values)"))
     elif baseline is not None:
         try:
             drift = bl.compare_baseline(run, baseline)
@@ -138,7 +169,7 @@ def run_and_report(selected, *, console, fem="quick", scheduler=None, workers=No
         from ballrace.reports import html
 
         path = html.write_report(run, report, baseline=drift, plots=plots)
-        console.print(f"report: {path}  (results: {report / 'results.json'})")
+        console.print(literal(f"report: {path}  (results: {report / 'results.json'})"))
     code = 0 if run.ok and (drift is None or drift.ok) else 1
     if code:
         console.print("[bold red]validation FAILED[/] (see the rows above)")
@@ -152,49 +183,60 @@ def _summary(console, run) -> None:
 
     from .runner import STATUSES
 
-    t = Table(title=f"Validation summary (--fem {run.fem}, {run.duration:.1f} s, {run.scheduler})")
+    t = Table(title=literal(f"Validation summary (--fem {run.fem}, {run.scheduler}, "
+                            f"wall-clock {run.duration:.1f} s)"))
     t.add_column("area")
     for s in STATUSES:
         t.add_column(s, justify="right", style=_STYLE[s] if s != "pass" else "green")
-    t.add_column("time [s]", justify="right")
+    t.add_column(literal("case time [s]"), justify="right")
     total = {s: 0 for s in STATUSES}
     for area, rows in run.by_area().items():
         counts = {s: sum(r.status == s for r in rows) for s in STATUSES}
         for s in STATUSES:
             total[s] += counts[s]
-        t.add_row(area, *[str(counts[s]) if counts[s] else "" for s in STATUSES],
+        t.add_row(literal(area), *[str(counts[s]) if counts[s] else "" for s in STATUSES],
                   f"{sum(r.duration for r in rows):.2f}")
     t.add_row("[bold]total[/]", *[f"[bold]{total[s]}[/]" for s in STATUSES],
-              f"{run.duration:.2f}", end_section=True)
+              f"{sum(r.duration for r in run.results):.2f}", end_section=True)
     console.print(t)
+    if not str(run.scheduler).startswith("serial"):
+        console.print("case times are the sum of each case's own run time; run in parallel, "
+                      "they can add up to more than the wall-clock time", style="dim")
     bad = [r for r in run.results if not r.ok]
     if bad:
-        bt = Table(title="Not passing")
-        bt.add_column("status")
-        bt.add_column("case")
-        bt.add_column("why", overflow="fold")
+        # a list, not a table: the reasons are sentences that must not be cut into columns
+        from rich.text import Text
+
+        console.print("Not passing", style="bold")
         for r in bad:
-            bt.add_row(f"[{_STYLE[r.status]}]{_MARK[r.status]}[/]", r.id, r.message)
-        console.print(bt)
+            line = Text(f"{_MARK[r.status]:>7} ", style=_STYLE[r.status])
+            line.append(literal(r.id).plain, style="bold")
+            console.print(line)
+            if r.message:
+                console.print(Text("        ") + literal(r.message))
 
 
 def _baseline_summary(console, drift, path) -> None:
     from rich.table import Table
 
     if drift.ok:
-        console.print(f"baseline {path}: {drift.n_checked} value(s) unchanged within tolerance")
+        console.print(literal(f"baseline {path}: {drift.n_checked} value(s) unchanged within "
+                              "tolerance"))
         return
-    t = Table(title=f"Moved against baseline {path}")
+    t = Table(title=literal(f"Moved against baseline {path}"))
     for c in ("case", "output", "baseline", "now", "change", "tolerance"):
         t.add_column(c)
     for d in drift.moved:
-        t.add_row(d.case, d.output, f"{d.old:.6g}" if d.old is not None else "-",
-                  f"{d.new:.6g}" if d.new is not None else "-", d.change, d.tolerance)
+        t.add_row(literal(d.case), literal(d.output),
+                  f"{d.old:.6g}" if d.old is not None else "-",
+                  f"{d.new:.6g}" if d.new is not None else "-", literal(d.change),
+                  literal(d.tolerance))
     console.print(t)
 
 
 def _usage(console, msg: str) -> None:
-    console.print(f"[bold red]error:[/] {msg}", highlight=False)
+    """One-line error on stderr (printed literally), exit code 2."""
+    typer.echo(f"error: {msg}", err=True)
     raise typer.Exit(code=2)
 
 
@@ -207,7 +249,8 @@ def teach_subsurface(
     ry2: Annotated[str, typer.Option(help="Body 2 radius in y.")] = "inf",
     e1: Annotated[str, typer.Option("--E1", help="Young's modulus (both bodies).")] = "200 GPa",
     nu1: Annotated[float, typer.Option("--nu1", help="Poisson's ratio (both bodies).")] = 0.3,
-    out: Annotated[Path, typer.Option("--out", help="PNG to write.")] = Path("subsurface.png"),
+    out: Annotated[Path, typer.Option("--out", help="PNG to write (its folder is created).")]
+        = TEACH_OUT / "subsurface.png",
 ):
     """Draw max shear, von Mises and orthogonal shear under a contact, depths marked."""
     from rich.console import Console
@@ -217,6 +260,10 @@ def teach_subsurface(
     from . import teach
 
     console = Console()
+    if out.is_dir():                      # --out FOLDER: the figure goes inside it
+        out = out / "subsurface.png"
+    elif not out.suffix:                  # matplotlib would add ".png" behind our back
+        out = out.with_suffix(".png")
     try:
         q = parse_quantity(load, "[force]", "load")
         radii = [parse_quantity(v, "[length]", n, allow_inf=True)
@@ -227,15 +274,13 @@ def teach_subsurface(
     try:
         info = teach.subsurface_figure(q, *radii, E=e, nu=nu1, path=out)
     except ImportError as exc:
-        console.print(f"[bold red]error:[/] the subsurface module is not available ({exc})")
+        typer.echo(f"error: the subsurface module is not available ({exc})", err=True)
         raise typer.Exit(code=1)
-    except ValueError as exc:
+    except (ValueError, TypeError, OSError) as exc:
         _usage(console, str(exc))
-    from rich.markup import escape
-
-    console.print(f"wrote {escape(str(out))}")
+    console.print(literal(f"wrote {out}"))
     for k, v in info.items():
-        console.print(escape(f"  {k}: {v}"))
+        console.print(literal(f"  {k}: {v}"))
 
 
 def register(app: typer.Typer) -> None:
