@@ -6,7 +6,7 @@ STAMP  := $(VENV)/.installed
 export PYVISTA_OFF_SCREEN := true
 export MPLBACKEND := Agg
 
-.PHONY: all venv validate test test-fem test-all bench clean
+.PHONY: all venv validate test test-fem test-all bench docs test-docs clean
 
 all: test
 
@@ -52,6 +52,15 @@ test-all: $(STAMP)
 ## Benchmarks (by hand): throughput and accuracy figures
 bench: $(STAMP)
 	$(BIN)/python -m pytest benchmarks -q --benchmark-only --benchmark-columns=min,mean,max,rounds
+
+## Documentation site -> docs/_build/html/index.html (runs the gallery; warnings are errors)
+docs: $(STAMP)
+	$(BIN)/python -m sphinx -b html -W --keep-going docs docs/_build/html
+
+## The site's own checks (CI): build it, then its links/API/case tests and the slow gallery script
+test-docs: docs
+	BALLRACE_DOCS_HTML=docs/_build/html $(BIN)/python -m pytest -q tests/test_docs.py \
+	  tests/test_gallery.py
 
 clean:
 	rm -rf $(VENV) build *.egg-info .pytest_cache .hypothesis .benchmarks reports/latest
