@@ -55,7 +55,7 @@ bench: $(STAMP)
 
 ## Documentation site -> docs/_build/html/index.html (runs the gallery; warnings are errors)
 docs: $(STAMP)
-	$(BIN)/python -m sphinx -b html -W --keep-going docs docs/_build/html
+	$(BIN)/python -m sphinx -b html -E -W --keep-going docs docs/_build/html
 
 ## The site's own checks (CI): build it, then its links/API/case tests and the slow gallery script
 test-docs: docs

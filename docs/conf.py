@@ -17,7 +17,9 @@ import sys
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
-ROOT = HERE.parent
+# The repository (gallery/, validation/cases/).  tests/test_docs.py builds a copy of docs/
+# elsewhere, so that a test build never touches the generated files of docs/ itself.
+ROOT = Path(os.environ.get("BALLRACE_DOCS_ROOT", HERE.parent)).resolve()
 sys.path.insert(0, str(HERE / "_ext"))
 os.environ.setdefault("MPLBACKEND", "Agg")
 os.environ.setdefault("PYVISTA_OFF_SCREEN", "true")
@@ -39,11 +41,13 @@ extensions = [
     "sphinx.ext.mathjax",
     "sphinx-mathjax-offline",   # bundled MathJax 3: the built site works without network
     "sphinx.ext.viewcode",
+    "viewcode_fallback",        # source pages also for modules Sphinx cannot parse
     "myst_parser",
     "sphinx_gallery.gen_gallery",
     "matplotlib.sphinxext.plot_directive",
     "casepages",
 ]
+casepages_dir = str(ROOT / "validation" / "cases")
 
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 root_doc = "index"

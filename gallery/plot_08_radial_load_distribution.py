@@ -38,7 +38,6 @@ ax_polar.set_theta_zero_location("N")
 ax_polar.set_title("ball loads [N] around the bearing", pad=18)
 ax_polar.legend(loc="lower left", fontsize=8, bbox_to_anchor=(-0.25, -0.2))
 
-# %%
 # Z Q_max / F_r against clearance: the exact solver and Jones's fit.
 Pd = np.linspace(0.0, 0.08e-3, 17)
 exact, jones = [], []

@@ -95,7 +95,8 @@ def _tolerance(spec: dict) -> str:
     parts = []
     for key in ("rtol", "atol"):
         if key in spec:
-            parts.append(f"{key} = {_plain(spec[key])}")
+            val = spec[key]
+            parts.append(f"{key} = {val}" if isinstance(val, str) else f"{key} = {_plain(val)}")
     return ", ".join(parts) or "—"
 
 
@@ -212,9 +213,10 @@ def write_pages(srcdir: Path, cases_dir: Path = CASES_DIR) -> list[Path]:
 
 
 def _generate(app):
-    write_pages(Path(app.srcdir))
+    write_pages(Path(app.srcdir), Path(app.config.casepages_dir or CASES_DIR))
 
 
 def setup(app):
+    app.add_config_value("casepages_dir", "", "env")
     app.connect("builder-inited", _generate)
     return {"version": "1.0", "parallel_read_safe": True, "parallel_write_safe": True}
