@@ -60,6 +60,8 @@ html_css_files = ["ballrace.css"]
 html_show_sourcelink = False
 
 # --- MyST (the Markdown pages) -----------------------------------------------------------
+# A Markdown page that skips a heading level is cosmetic, not an error of the site.
+suppress_warnings = ["myst.header"]
 myst_enable_extensions = ["dollarmath", "amsmath", "deflist", "colon_fence"]
 myst_heading_anchors = 3
 
