@@ -113,7 +113,7 @@ sphinx_gallery_conf = {
 
 # --- matplotlib plot directive (figures of the teaching pages) ---------------------------
 plot_include_source = False
-plot_html_show_source_link = False
+plot_html_show_source_link = True     # the script behind each teaching figure
 plot_html_show_formats = False
 plot_formats = [("png", 110)]
 plot_rcparams = {"figure.dpi": 110, "savefig.bbox": "tight"}
