@@ -6,7 +6,7 @@ STAMP  := $(VENV)/.installed
 export PYVISTA_OFF_SCREEN := true
 export MPLBACKEND := Agg
 
-.PHONY: all venv validate test test-fem test-all bench clean
+.PHONY: all venv validate test test-fem test-all bench docs test-docs clean
 
 all: test
 
@@ -53,5 +53,15 @@ test-all: $(STAMP)
 bench: $(STAMP)
 	$(BIN)/python -m pytest benchmarks -q --benchmark-only --benchmark-columns=min,mean,max,rounds
 
+## Documentation site -> docs/_build/html/index.html (runs the gallery; warnings are errors)
+docs: $(STAMP)
+	$(BIN)/python -m sphinx -b html -E -W --keep-going docs docs/_build/html
+
+## The site's own checks (CI): build it, then its links/API/case tests and the slow gallery script
+test-docs: docs
+	BALLRACE_DOCS_HTML=docs/_build/html $(BIN)/python -m pytest -q tests/test_docs.py \
+	  tests/test_gallery.py
+
 clean:
 	rm -rf $(VENV) build *.egg-info .pytest_cache .hypothesis .benchmarks reports/latest
+	rm -rf docs/_build docs/auto_gallery docs/api/generated docs/cases docs/sg_execution_times.rst

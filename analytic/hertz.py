@@ -32,16 +32,16 @@ solution over 1 <= alpha_r <= alpha_max (4001 log-spaced ratios; regenerate with
 ``python -m ballrace.analytic.hertz``).  Both fits were made for ball bearings
 (alpha_r up to ~100); beyond that they drift badly, so use ``method="exact"``.
 
-=====================  =========  ======  ======  ======  ======  ======  ========  ======
+=====================  =========  ======= ======= ======= ======= ======= ========  =======
 method                 alpha_max  k       E       K       a       b       approach  p_max
-=====================  =========  ======  ======  ======  ======  ======  ========  ======
+=====================  =========  ======= ======= ======= ======= ======= ========  =======
 brewe-hamrock-1977     10          3.39 %  1.67 %  2.74 %  2.81 %  0.58 %   5.41 %   2.19 %
 brewe-hamrock-1977     100         6.34 %  1.67 %  2.74 %  4.20 %  2.01 %   5.41 %   2.19 %
 brewe-hamrock-1977     1e4        49.24 %  1.67 %  2.88 % 30.61 % 12.49 %  21.23 %  12.51 %
 hamrock-brewe-1983     10          3.81 %  0.91 %  1.00 %  2.68 %  1.19 %   2.70 %   1.62 %
 hamrock-brewe-1983     100         3.81 %  0.91 %  2.10 %  2.68 %  1.19 %   4.10 %   1.62 %
 hamrock-brewe-1983     1e4        45.17 %  0.91 %  2.10 % 28.21 % 11.68 %  22.56 %  11.68 %
-=====================  =========  ======  ======  ======  ======  ======  ========  ======
+=====================  =========  ======= ======= ======= ======= ======= ========  =======
 
 The documented bounds are :data:`APPROXIMATION_ERROR` (the table rounded up to
 0.1 %) and are asserted by the test suite.

@@ -66,9 +66,9 @@ at once.  On the z-axis the integrals are elementary and the closed form
 
 Accuracy (measured; asserted by ``tests/test_subsurface.py``; stresses in units of p_max)
 ------------------------------------------------------------------------------------------
-==============================================================  ==================
+=============================================================== ==================
 check                                                           max abs. error
-==============================================================  ==================
+=============================================================== ==================
 field on the axis vs the axis closed form, k = 1 … 2900          8e-16
 field vs Hamilton (1983) circle in 40-digit arithmetic, ν = 0,    1.4e-15
 0.3, 0.5, interior and surface (60 points each)
@@ -78,7 +78,7 @@ field at y = 0 vs McEwen line contact, k = 1e4: σ_z, τ_xz        1.4e-8, 7e-9
 trace/(1+ν) independent of ν (checks H_xx + H_yy = -V_z)          3e-15
 trapezoid step 0.5 vs 0.2 (quadrature converged)                  < 3e-15
 LP τ0 vs the maximum of the field's τ_xz(x, 0, z), k = 1 … 10    4e-16 relative
-==============================================================  ==================
+=============================================================== ==================
 
 Near the contact edge on the surface the field is only as well conditioned as
 sqrt(1 - x²/a_x² - y²/a_y²) is to rounding of the coordinates.  The domain is

@@ -226,6 +226,8 @@ def groove_case(ball_diameter: float, load: float, race_radius: float, groove_ra
     material, race_material : Material
         Ball and race materials (the race defaults to the ball's).
 
+    Notes
+    -----
     The groove is the torus of an equivalent bearing with d_m = 2 race_radius + D
     (inner) or 2 race_radius - D (outer) and f = r/D (Ricci 2009 eqs. 8-11), so this is
     :func:`race_case` without the rest of the bearing.

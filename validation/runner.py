@@ -8,6 +8,7 @@ same numbers as a serial one, bit for bit.
 
 Outcomes (:data:`STATUSES`):
 
+===========  ======================================================================
 ``pass``     every expectation met;
 ``fail``     at least one expectation missed (or an expected output is NaN/absent);
 ``error``    the calculation raised;
@@ -15,6 +16,7 @@ Outcomes (:data:`STATUSES`):
              failure of the run, never as a pass or a silent skip;
 ``skipped``  an FE case under ``--fem none`` ("skipped by request"), or an FE case
              whose ``fem_levels`` exclude the requested level.
+===========  ======================================================================
 
 Examples
 --------
