@@ -96,9 +96,11 @@ def run_and_report(selected, *, console, fem="quick", scheduler=None, workers=No
 
     artifact_dir = None
     if report is not None:
+        import tempfile
+
         report.mkdir(parents=True, exist_ok=True)
-        artifact_dir = report / "renders"
-        artifact_dir.mkdir(exist_ok=True)
+        # FE pictures go to a scratch folder: the report embeds them, so none is left beside it
+        artifact_dir = Path(tempfile.mkdtemp(prefix="ballrace-fe-pictures-"))
     console.print(f"[bold]ballrace validate[/]: {len(selected)} case(s), --fem {fem}"
                   + (f", scheduler {scheduler}" if scheduler else "") + ("" if not serial
                                                                          else ", serial"))
@@ -138,6 +140,9 @@ def run_and_report(selected, *, console, fem="quick", scheduler=None, workers=No
         from ballrace.reports import html
 
         path = html.write_report(run, report, baseline=drift, plots=plots)
+        import shutil
+
+        shutil.rmtree(artifact_dir, ignore_errors=True)
         console.print(f"report: {path}  (results: {report / 'results.json'})")
     code = 0 if run.ok and (drift is None or drift.ok) else 1
     if code:
