@@ -37,9 +37,8 @@ def _lines(ax, p) -> None:
         else:
             ax.plot(s["x"], s["y"], "--" if style == "dashed" else "-", lw=1.4,
                     label=s.get("label"))
-    for h in p.get("hlines", ()):
-        ax.axhline(h["y"], ls="--", lw=0.8, color="k", alpha=0.6)
-        ax.annotate(h["label"], (ax.get_xlim()[1], h["y"]), ha="right", va="bottom", fontsize=7)
+    for h, ls in zip(p.get("hlines", ()), ("--", ":", "-.", (0, (5, 1, 1, 1)))):
+        ax.axhline(h["y"], ls=ls, lw=0.9, color="k", alpha=0.7, label=h["label"])
     for v in p.get("vlines", ()):
         ax.axvline(v["x"], ls=":", lw=0.8, color="k")
     if "hband" in p:

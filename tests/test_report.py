@@ -43,7 +43,7 @@ def _parse(html: str) -> _Collect:
 
 
 _BEARING = ("bearing-tata-8-balls-570lb", "bearing-ricci-218-eccentric",
-            "bearing-209-radial-jones")
+            "bearing-209-radial-jones", "bearing-harris-218-thrust")
 
 
 @pytest.fixture(scope="module")
@@ -282,6 +282,12 @@ def test_bearing_figures_plot_the_published_values(run):
     beta = next(p for p in ricci.panels if p["title"] == "contact angles")
     bpub = next(s for s in beta["series"] if s["style"] == "published")
     assert pytest.approx(44.317) in list(bpub["y"]) and 0.0 in list(bpub["x"])
+    balls = next(s for s in beta["series"] if s["style"] == "markers")
+    assert balls["x"][0] == -180.0 and balls["x"][-1] == 180.0      # psi = 180 at both ends
+    assert balls["y"][0] == balls["y"][-1]
+    harris = _by_id(figs, "bearing-bearing-harris-218-thrust")      # 41.6 deg at every ball
+    level = next(s for p in harris.panels for s in p["series"] if s["style"] == "published-level")
+    assert list(level["y"]) == [pytest.approx(41.6), pytest.approx(41.6)]
     jones = _by_id(figs, "bearing-bearing-209-radial-jones")
     curve = next(s for s in jones.panels[0]["series"] if s["style"] == "dashed")
     balls = next(s for s in jones.panels[0]["series"] if s["style"] == "markers")
@@ -303,9 +309,10 @@ def test_a_figure_module_plugs_in_with_one_line(run, monkeypatch):
         panels=({"kind": "lines", "title": "t", "series": [{"x": [0, 1], "y": [1, 2],
                                                              "label": "a"}]},))]
     monkeypatch.setitem(sys.modules, "fake_figures_life", mod)
+    # one line in FIGURE_SOURCES (the standard sources are left out to keep the test fast)
     monkeypatch.setattr(figures, "FIGURE_SOURCES",
-                        [*figures.FIGURE_SOURCES, "fake_figures_life:life_figures",
-                         "no_such_module_x:figs"])
+                        ["ballrace.validation.figures:overview_figure",
+                         "fake_figures_life:life_figures", "no_such_module_x:figs"])
     html = render_html(run)
     p = _parse(html)
     assert 'id="fig-life-aiso"' in html and "plugged in" in html
