@@ -157,11 +157,14 @@ def _summary(console, run) -> None:
 
     from .runner import STATUSES
 
-    t = Table(title=f"Validation summary (--fem {run.fem}, {run.duration:.1f} s, {run.scheduler})")
+    t = Table(title=f"Validation summary (--fem {run.fem}, wall time {run.duration:.1f} s, "
+                    f"{run.scheduler})",
+              caption="case time: each case's own computing time, summed; FE cases and sweeps "
+                      "run in parallel, so the sum can exceed the wall time")
     t.add_column("area")
     for s in STATUSES:
         t.add_column(s, justify="right", style=_STYLE[s] if s != "pass" else "green")
-    t.add_column("time [s]", justify="right")
+    t.add_column("case time \\[s]", justify="right")
     total = {s: 0 for s in STATUSES}
     for area, rows in run.by_area().items():
         counts = {s: sum(r.status == s for r in rows) for s in STATUSES}
@@ -170,7 +173,7 @@ def _summary(console, run) -> None:
         t.add_row(area, *[str(counts[s]) if counts[s] else "" for s in STATUSES],
                   f"{sum(r.duration for r in rows):.2f}")
     t.add_row("[bold]total[/]", *[f"[bold]{total[s]}[/]" for s in STATUSES],
-              f"{run.duration:.2f}", end_section=True)
+              f"{sum(r.duration for r in run.results):.2f}", end_section=True)
     console.print(t)
     bad = [r for r in run.results if not r.ok]
     if bad:
