@@ -351,10 +351,18 @@ def test_fem_picture_compares_fe_and_analytic_on_one_section(tmp_path):
         x, z, fe, an = section_comparison(r, field)
         assert x[0] == pytest.approx(-x[-1]) and fe.shape == (2 * xs.size - 1, zs.size)
         assert np.max(np.abs(fe - an)) <= 1e-9 * np.max(np.abs(an)), field
+    # contact pressure: tents carrying Hertz's pressure at their nodes
+    from ballrace.fem.model import PressureGrid
+
+    g = PressureGrid(1.5 * bx, 1.5 * float(c.semi_axis_y), 12, 12)
+    nx_, ny_ = g.nodes()
+    fields.update(grid=g, lam=np.asarray(c.pressure(nx_, ny_)))
     had_vtk = "vtkmodules" in sys.modules
-    out = render(r, "tau_xz", str(tmp_path / "t.png"))
-    png = (tmp_path / "t.png").read_bytes()
-    assert out.endswith("t.png") and png[:8] == b"\x89PNG\r\n\x1a\n" and len(png) > 20_000
+    for field in ("tau_xz", "von_mises", "max_shear", "pressure"):
+        out = render(r, field, str(tmp_path / f"{field}.png"))
+        png = (tmp_path / f"{field}.png").read_bytes()
+        assert out.endswith(f"{field}.png") and png[:8] == b"\x89PNG\r\n\x1a\n"
+        assert len(png) > 20_000, field                   # a picture, not an empty canvas
     assert had_vtk or "vtkmodules" not in sys.modules
 
 
