@@ -222,7 +222,8 @@ def _pressure(fig, r) -> None:
     cb = fig.colorbar(im, ax=axes[0], shrink=0.9, pad=0.01)
     cb.ax.set_title("MPa", fontsize=7)
     cb.ax.tick_params(labelsize=7)
-    for ax, u, lab, along in ((axes[1], x, "x (rolling)", "x"), (axes[2], y, "y (transverse)", "y")):
+    for ax, u, lab, along in ((axes[1], x, "x (rolling)", "x"),
+                              (axes[2], y, "y (transverse)", "y")):
         fe = (np.asarray(g.evaluate(f["lam"], np.abs(u), 0.0 * u)) if along == "x" else
               np.asarray(g.evaluate(f["lam"], 0.0 * u, np.abs(u)))) / 1e6
         hz = (np.asarray(c.pressure(u, 0.0)) if along == "x" else

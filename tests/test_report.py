@@ -344,7 +344,8 @@ def test_fem_picture_compares_fe_and_analytic_on_one_section(tmp_path):
               "axis_von_mises": ax_.von_mises}
     case = types.SimpleNamespace(name="synthetic", load=2000.0, analytic=c, material2=steel)
     r = types.SimpleNamespace(fields=fields, case=case, analytic=c, mode="half-space",
-                              gap="hertz", level="quick", z0=float(subsurface.orthogonal_shear(c).z0),
+                              gap="hertz", level="quick",
+                              z0=float(subsurface.orthogonal_shear(c).z0),
                               max_shear_depth=float(subsurface.max_shear(c).depth),
                               von_mises_depth=float(subsurface.von_mises(c).depth))
     for field in ("tau_xz", "von_mises", "max_shear"):

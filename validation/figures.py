@@ -278,8 +278,10 @@ def _jones_curve(r, psi_sorted, Q_sorted):
     """Jones's closed-form distribution at the case's clearance, or None.
 
     Stribeck-Jones load zone: Q(psi) = Q_max [(cos psi - c)/(1 - c)]^1.5 for
-    cos psi > c, with c = P_d / (2 delta_r) and Q_max = Z_w F_r / Z (Hamrock & Dowson
-    1981, eqs. 3.41-3.45); Z_w F_r / Z is taken as Q_max Z_w / (Z Q_max / F_r).
+    cos psi > c, with c = P_d / (2 delta_r) (the load zone 1 - (1 - cos psi)/(2 eps),
+    2 eps = 1 - P_d / (2 delta_r)) and Q_max = Z_w F_r / Z (Hamrock & Dowson 1981, ch. 3:
+    load zone eqs. (3.39)-(3.44), Z_w eq. (3.45)); Z_w F_r / Z is computed as
+    Q_max Z_w / (Z Q_max / F_r) from the case's outputs.
     """
     o = getattr(r, "outputs", {}) or {}
     zw, ratio, dr = o.get("jones_zw"), o.get("zq_ratio"), o.get("radial_deflection")
