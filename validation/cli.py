@@ -124,9 +124,11 @@ def run_and_report(selected, *, console, fem="quick", scheduler=None, workers=No
 
     artifact_dir = None
     if report is not None:
+        import tempfile
+
         report.mkdir(parents=True, exist_ok=True)
-        artifact_dir = report / "renders"
-        artifact_dir.mkdir(exist_ok=True)
+        # FE pictures go to a scratch folder: the report embeds them, so none is left beside it
+        artifact_dir = Path(tempfile.mkdtemp(prefix="ballrace-fe-pictures-"))
     head = f"{len(selected)} case(s), --fem {fem}"
     head += (f", scheduler {scheduler}" if scheduler else "") + (", serial" if serial else "")
     console.print("[bold]ballrace validate[/]:", literal(head))
@@ -169,6 +171,9 @@ def run_and_report(selected, *, console, fem="quick", scheduler=None, workers=No
         from ballrace.reports import html
 
         path = html.write_report(run, report, baseline=drift, plots=plots)
+        import shutil
+
+        shutil.rmtree(artifact_dir, ignore_errors=True)
         console.print(literal(f"report: {path}  (results: {report / 'results.json'})"))
     code = 0 if run.ok and (drift is None or drift.ok) else 1
     if code:
@@ -184,7 +189,9 @@ def _summary(console, run) -> None:
     from .runner import STATUSES
 
     t = Table(title=literal(f"Validation summary (--fem {run.fem}, {run.scheduler}, "
-                            f"wall-clock {run.duration:.1f} s)"))
+                            f"wall-clock {run.duration:.1f} s)"),
+              caption=literal("case time: each case's own computing time, summed; FE cases "
+                              "and sweeps run in parallel, so the sum can exceed the wall time"))
     t.add_column("area")
     for s in STATUSES:
         t.add_column(s, justify="right", style=_STYLE[s] if s != "pass" else "green")

@@ -20,8 +20,11 @@ PACKAGES = ("ballrace", "numpy", "scipy", "pint", "typer", "rich", "jinja2", "ma
             "mpmath")
 
 
+_ROOT = Path(__file__).resolve().parent.parent      # the package folder = the repo root
+
+
 def _git(*args: str) -> str:
-    root = Path(__file__).resolve().parent.parent
+    root = _ROOT
     try:
         return subprocess.run(["git", *args], cwd=root, capture_output=True, text=True,
                               timeout=10, check=True).stdout.strip()
@@ -29,19 +32,31 @@ def _git(*args: str) -> str:
         return ""
 
 
+def _in_checkout() -> bool:
+    """True when the package runs from its own git checkout (not from a wheel that merely
+    sits inside some other repository, e.g. a virtualenv in a project folder)."""
+    top = _git("rev-parse", "--show-toplevel")
+    return bool(top) and Path(top).resolve() == _ROOT
+
+
 def environment() -> dict:
-    """Versions, git commit (and whether the tree had changes), machine and Python."""
+    """Versions, git commit (and whether the tree had changes), machine and Python.
+
+    ``git_commit`` is None when ballrace is not run from its git checkout (installed
+    from a wheel); the report then names the package version (``packages["ballrace"]``).
+    """
     versions = {}
     for p in PACKAGES:
         try:
             versions[p] = metadata.version(p)
         except metadata.PackageNotFoundError:
             versions[p] = None
-    status = _git("status", "--porcelain")
+    git = _in_checkout()
+    status = _git("status", "--porcelain") if git else ""
     return {
         "python": sys.version.split()[0],
         "packages": versions,
-        "git_commit": _git("rev-parse", "HEAD") or None,
+        "git_commit": (_git("rev-parse", "HEAD") or None) if git else None,
         "git_dirty": bool(status),
         "machine": platform.machine(),
         "platform": platform.platform(),

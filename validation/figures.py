@@ -18,8 +18,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["Figure", "all_figures", "hertz_figures", "subsurface_figures", "bearing_figures",
-           "overview_figure", "subsurface_fields"]
+__all__ = ["Figure", "FIGURE_SOURCES", "all_figures", "hertz_figures", "subsurface_figures",
+           "bearing_figures", "fem_figures", "overview_figure", "subsurface_fields"]
 
 log = logging.getLogger(__name__)
 
@@ -28,7 +28,13 @@ _STEEL = dict(E=200e9, nu=0.3)
 
 @dataclass(frozen=True)
 class Figure:
-    """One report figure (frozen): ``panels`` to draw, or a ``note`` saying why not."""
+    """One report figure (frozen): ``panels`` to draw, or a ``note`` saying why not.
+
+    ``section`` is the report section it appears in: an area id ("hertz", "fem", ...,
+    or a new one) or ``"summary"`` for the top of the report.  Panels are plain dicts
+    drawn by :func:`ballrace.reports.plots.render_png`: ``kind`` "lines", "contour",
+    "bars" or "strip", with an optional ``width`` ratio.
+    """
 
     id: str
     section: str
@@ -36,7 +42,8 @@ class Figure:
     caption: str = ""
     panels: tuple = ()
     note: str = ""
-    images: tuple = ()          # (label, path) of ready-made PNGs (FE renders)
+    images: tuple = ()          # (label, path) of ready-made PNGs (FE pictures)
+    size: tuple = ()            # (width, height) [in] to draw the panels at; () = automatic
 
 
 def _missing(fid, section, title, exc) -> Figure:
@@ -224,8 +231,81 @@ def subsurface_figures() -> list[Figure]:
 
 
 # --------------------------------------------------------------------------- bearing
+#: Where a bearing case's expected values sit in its plots: output name -> (panel,
+#: azimuth rule).  Ball numbering follows ``validation.calc_bearing``: ball 1 on the load
+#: line (psi[0]), ball 2 next (psi[1]), ball 3 its mirror (psi[-1]).
+_PUBLISHED_AT = {"Q_1": ("Q", "first"), "Q_2": ("Q", "second"), "Q_3": ("Q", "last"),
+                 "Q_max": ("Q", "max"), "Q": ("Q", "all"), "beta_0": ("beta", 0.0),
+                 "beta_180": ("beta", 180.0), "contact_angle": ("beta", "all")}
+
+
+def _published_points(r, psi, Q) -> dict:
+    """Expected (published) values of a case placed at their azimuths [deg], per panel."""
+    out = {"Q": ([], []), "beta": ([], [])}
+    idx = {"first": 0, "second": 1 % len(psi), "last": -1, "max": int(np.argmax(Q))}
+    for c in getattr(r, "comparisons", ()):
+        where = _PUBLISHED_AT.get(c.name)
+        if where is None or c.expected is None:
+            continue
+        panel, rule = where
+        v = math.degrees(c.expected) if panel == "beta" else c.expected
+        if rule == "all":
+            out[panel + "_level"] = v         # the same value at every ball: drawn as a line
+            continue
+        elif isinstance(rule, float):
+            xs = [rule]
+        else:
+            xs = [psi[idx[rule]]]
+        out[panel][0].extend(xs)
+        out[panel][1].extend([v] * len(xs))
+    return out
+
+
+def _published_series(pub: dict, panel: str, kind: str = "published") -> list:
+    out = []
+    what = "published (case file)" if kind == "published" else f"expected ({kind})"
+    if pub[panel][0]:
+        out.append({"x": np.array(pub[panel][0]), "y": np.array(pub[panel][1]),
+                    "label": what, "style": "published"})
+    if panel + "_level" in pub:
+        v = pub[panel + "_level"]
+        out.append({"x": np.array([-180.0, 180.0]), "y": np.array([v, v]),
+                    "label": f"{what}: {v:.4g} at every ball", "style": "published-level"})
+    return out
+
+
+def _jones_curve(r, psi_sorted, Q_sorted):
+    """Jones's closed-form distribution at the case's clearance, or None.
+
+    Stribeck-Jones load zone: Q(psi) = Q_max [(cos psi - c)/(1 - c)]^1.5 for
+    cos psi > c, with c = P_d / (2 delta_r) (the load zone 1 - (1 - cos psi)/(2 eps),
+    2 eps = 1 - P_d / (2 delta_r)) and Q_max = Z_w F_r / Z (Hamrock & Dowson 1981, ch. 3:
+    load zone eqs. (3.39)-(3.44), Z_w eq. (3.45)); Z_w F_r / Z is computed as
+    Q_max Z_w / (Z Q_max / F_r) from the case's outputs.
+    """
+    o = getattr(r, "outputs", {}) or {}
+    zw, ratio, dr = o.get("jones_zw"), o.get("zq_ratio"), o.get("radial_deflection")
+    if not zw or not ratio or not dr or not (math.isfinite(zw) and dr > 0):
+        return None
+    raw = (r.inputs or {}).get("clearance", (r.inputs or {}).get("diametral_clearance", 0.0))
+    try:
+        from ballrace.units import to_si
+
+        pd = to_si(raw, "[length]", "clearance") if isinstance(raw, str) else float(raw)
+    except Exception:  # noqa: BLE001 - the overlay is optional
+        return None
+    c = pd / (2.0 * dr)
+    q_max = float(np.max(Q_sorted)) * zw / ratio
+    psi = np.linspace(-180.0, 180.0, 721)
+    base = np.clip((np.cos(np.radians(psi)) - c) / (1.0 - c), 0.0, None)
+    return {"x": psi, "y": q_max * base ** 1.5,
+            "label": f"Jones's Z_w = {zw:.3f}: Q_max = Z_w F_r / Z, Stribeck load zone",
+            "style": "dashed"}
+
+
 def bearing_figures(run) -> list[Figure]:
-    """Ball loads and contact angles around the bearing from the cases that returned series."""
+    """Ball loads (and contact angles, when they vary) around the bearing, with the published
+    values the case checks plotted at their balls."""
     figs = []
     if run is None:
         return figs
@@ -235,19 +315,44 @@ def bearing_figures(run) -> list[Figure]:
             continue
         psi = np.degrees(np.asarray(s["psi"], dtype=float))
         psi = (psi + 180.0) % 360.0 - 180.0
+        Q = np.asarray(s["Q"], dtype=float)
+        pub = _published_points(r, psi, Q)
+        if np.any(np.isclose(psi, -180.0)):       # the ball at psi = 180 deg shows at both ends
+            k = int(np.argmin(np.abs(psi + 180.0)))
+            psi, Q = np.append(psi, 180.0), np.append(Q, Q[k])
+            if "beta" in s:
+                s = {**s, "beta": np.append(np.asarray(s["beta"], dtype=float), s["beta"][k])}
         order = np.argsort(psi)
+        q_series = [{"x": psi[order], "y": Q[order], "label": "ballrace (per ball)",
+                     "style": "markers"}]
+        jones = _jones_curve(r, psi[order], Q[order])
+        if jones is not None:
+            q_series.append(jones)
+        q_series += _published_series(pub, "Q", r.kind)
         panels = [{"kind": "lines", "title": "ball loads", "xlabel": "azimuth psi [deg]",
-                   "ylabel": "Q [N]", "markers_only": True,
-                   "series": [{"x": psi[order], "y": np.asarray(s["Q"])[order], "label": "Q"}]}]
+                   "ylabel": "Q [N]", "series": q_series, "xticks": [-180, -90, 0, 90, 180],
+                   "legend": "below"}]
+        caption = f"Case {r.id} ({r.status}); psi = 0 on the load line."
         if "beta" in s:
-            panels.append({"kind": "lines", "title": "contact angles",
-                           "xlabel": "azimuth psi [deg]", "ylabel": "beta [deg]",
-                           "markers_only": True,
-                           "series": [{"x": psi[order],
-                                       "y": np.degrees(np.asarray(s["beta"]))[order],
-                                       "label": "beta"}]})
+            beta = np.degrees(np.asarray(s["beta"], dtype=float))
+            if np.ptp(beta) > 1e-6 or pub["beta"][0] or "beta_level" in pub:
+                b_series = [{"x": psi[order], "y": beta[order], "label": "ballrace (per ball)",
+                             "style": "markers"}, *_published_series(pub, "beta", r.kind)]
+                panels.append({"kind": "lines", "title": "contact angles",
+                               "xlabel": "azimuth psi [deg]", "ylabel": "beta [deg]",
+                               "series": b_series, "xticks": [-180, -90, 0, 90, 180],
+                               "legend": "below"})
+            else:
+                caption += f" Contact angle {beta[0]:.3g} deg at every ball (not plotted)."
+        if pub["Q"][0] or pub["beta"][0] or "Q_level" in pub or "beta_level" in pub:
+            caption += (f" Red: the {'published ' if r.kind == 'published' else ''}values "
+                        "the case checks (open markers at their balls; a dotted line when "
+                        "the value holds at every ball).")
+        if jones is not None:
+            caption += (" Dashed: Jones's closed-form distribution at the same clearance "
+                        "ratio.")
         figs.append(Figure(f"bearing-{r.id}", "bearing", f"Load distribution: {r.title}",
-                           caption=f"Case {r.id} ({r.status}).", panels=tuple(panels)))
+                           caption=caption, panels=tuple(panels), size=(5.0 * len(panels), 3.6)))
     if not figs:
         figs.append(Figure("bearing", "bearing", "Load distribution",
                            note="omitted: no bearing case produced a load distribution in this "
@@ -255,48 +360,106 @@ def bearing_figures(run) -> list[Figure]:
     return figs
 
 
+# --------------------------------------------------------------------------- fem
+_FEM_CAPTION = ("Section y = 0 through the contact (x rolling, depth z down; the FE quarter "
+                "model mirrored).  Left to right: the FE field, the analytic Hertz field "
+                "(ballrace.analytic.subsurface.stress) on the same points and colour scale, "
+                "their difference FE - analytic, and both along depth.  Open circles mark the "
+                "analytic maxima (for tau_xz the Lundberg-Palmgren points +-x0, z0), crosses "
+                "the FE maxima.")
+
+
 def fem_figures(run) -> list[Figure]:
-    """FE renders written by the FE cases (PNG paths)."""
+    """One figure per FE case: the pictures its calculation drew (``fem.render``)."""
     if run is None:
         return []
-    imgs = tuple((f"{r.id}: {label}", path) for r in run.results for label, path in r.artifacts)
-    fem_ran = any(r.area == "fem" and r.status in ("pass", "fail") for r in run.results)
-    if not imgs:
-        why = ("the FE cases wrote no renders" if fem_ran else
+    figs = []
+    for r in run.results:
+        if not r.artifacts:
+            continue
+        figs.append(Figure(f"fem-{r.id}", "fem", f"FE against analytic: {r.title}",
+                           caption=_FEM_CAPTION, images=tuple(tuple(a) for a in r.artifacts)))
+    if not figs:
+        fem_ran = any(r.area == "fem" and r.status in ("pass", "fail") for r in run.results)
+        why = ("the FE cases wrote no pictures" if fem_ran else
                "no FE case ran (--fem none, module missing or not selected)")
-        return [Figure("fem-renders", "fem", "FE renders", note=f"omitted: {why}")]
-    return [Figure("fem-renders", "fem", "FE renders", images=imgs,
-                   caption="pyvista renders of the FE solutions (fem.render).")]
+        return [Figure("fem-renders", "fem", "FE against analytic", note=f"omitted: {why}")]
+    return figs
 
 
-def overview_figure(run) -> Figure:
-    """|error| / allowed for every value check of the run (log scale; < 1 passes)."""
-    labels, ratio, ok = [], [], []
+# --------------------------------------------------------------------------- overview
+#: Floor of |error|/allowed on the log axis (exact matches are drawn here).
+RATIO_FLOOR = 1e-6
+
+
+def _checks(run):
+    """(area, case id, quantity, |error|/allowed, passed) of every value check."""
     for r in run.results:
         for c in r.comparisons:
             if c.allowed and c.error is not None:
-                labels.append(f"{r.id}:{c.name}")
-                ratio.append(max(abs(c.error) / c.allowed, 1e-6))
-                ok.append(c.passed)
-    if not labels:
+                yield r.area, r.id, c.name, max(abs(c.error) / c.allowed, RATIO_FLOOR), c.passed
+
+
+def overview_figure(run, *, worst: int = 20) -> Figure:
+    """|error| / allowed of every value check: one row of dots per area, and the ``worst``
+    checks by name (log scale; below 1 passes)."""
+    rows = list(_checks(run))
+    if not rows:
         return Figure("overview", "summary", "Error against tolerance", note="no value checks ran")
+    areas = list(dict.fromkeys(a for a, *_ in rows))
+    strip = {"kind": "strip", "title": f"all {len(rows)} value checks, by area",
+             "rows": [f"{a} ({sum(x[0] == a for x in rows)})" for a in areas],
+             "values": [np.array([x[3] for x in rows if x[0] == a]) for a in areas],
+             "ok": [np.array([x[4] for x in rows if x[0] == a]) for a in areas],
+             "logx": True, "xlabel": "|error| / allowed", "line": 1.0, "width": 1.15}
+    top = sorted(rows, key=lambda x: -x[3])[:worst]
+    bars = {"kind": "bars", "title": f"the {len(top)} checks closest to their tolerance",
+            "labels": [f"{cid}: {q}" for _, cid, q, _, _ in top],
+            "values": np.array([x[3] for x in top]), "ok": np.array([x[4] for x in top]),
+            "logx": True, "xlabel": "|error| / allowed", "line": 1.0, "width": 1.0}
+    n_bad = sum(not x[4] for x in rows)
     return Figure("overview", "summary", "Error against tolerance",
-                  caption="Each bar is one expected value: |got - expected| / allowed.  Below 1 "
-                          "passes; bars far below 1 mean a generous tolerance or an exact match.",
-                  panels=({"kind": "bars", "labels": labels, "values": np.array(ratio),
-                           "ok": np.array(ok), "logx": True, "xlabel": "|error| / allowed",
-                           "line": 1.0},))
+                  caption="Each mark is one expected value: |got - expected| / allowed, where "
+                          "allowed is the case's tolerance.  Below 1 passes (green), above 1 "
+                          f"fails (red; {n_bad} here).  Marks far below 1 mean an exact match "
+                          f"or a generous tolerance; exact matches sit at {RATIO_FLOOR:g}.",
+                  panels=(strip, bars), size=(13.0, max(3.2, 0.36 * max(len(areas), 11))))
 
 
-def all_figures(run) -> list[Figure]:
-    """Every report figure for ``run`` (sections: summary, hertz, subsurface, bearing, fem)."""
-    figs = [overview_figure(run)]
-    for fn in (lambda: hertz_figures(run), subsurface_figures, lambda: bearing_figures(run),
-               lambda: fem_figures(run)):
+# --------------------------------------------------------------------------- registry
+#: Figure sources, in report order: ``"module:function"``, each ``function(run)`` returning
+#: a Figure or a list of Figures.  A figure module of another area plugs in with one line;
+#: a source whose module is missing shows as a note in the report instead of failing it.
+FIGURE_SOURCES = [
+    "ballrace.validation.figures:overview_figure",
+    "ballrace.validation.figures:hertz_figures",
+    "ballrace.validation.figures:subsurface_figures",
+    "ballrace.validation.figures:bearing_figures",
+    "ballrace.validation.figures:fem_figures",
+    "ballrace.validation.figures_life:life_figures",
+]
+
+
+def _call(source: str, run) -> list[Figure]:
+    import importlib
+    import inspect
+
+    mod, _, name = source.partition(":")
+    fn = getattr(importlib.import_module(mod), name)
+    out = fn(run) if inspect.signature(fn).parameters else fn()
+    return [out] if isinstance(out, Figure) else list(out)
+
+
+def all_figures(run, sources=None) -> list[Figure]:
+    """Every report figure for ``run``: the figures of each of ``sources`` (default
+    :data:`FIGURE_SOURCES`); a source that fails adds a note instead."""
+    figs = []
+    for src in FIGURE_SOURCES if sources is None else sources:
         try:
-            figs.extend(fn())
+            figs.extend(_call(src, run))
         except Exception as exc:  # noqa: BLE001 - never let a figure break the report
-            log.warning("figure generation failed: %s", exc, exc_info=True)
-            figs.append(Figure("figure-error", "summary", "A figure failed",
+            log.warning("figure source %s failed: %s", src, exc, exc_info=True)
+            figs.append(Figure(f"figure-error-{src.rpartition(':')[2]}", "summary",
+                               f"Figures of {src} failed",
                                note=f"omitted: {type(exc).__name__}: {exc}"))
     return figs
