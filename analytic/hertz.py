@@ -477,14 +477,19 @@ class HertzContact:
         return self.p_max * np.sqrt(np.clip(s, 0.0, None))
 
 
-def _contact_from_parts(Q, Rx, Ry, Ep, method) -> HertzContact:
-    """Internal: contact for validated, broadcast arrays."""
-    R = Rx * Ry / (Rx + Ry)
+def _radius_ratio(Rx, Ry) -> np.ndarray:
+    """Larger over smaller effective radius, checked against the ellipticity solver's range."""
     alpha = np.where(Ry >= Rx, Ry / Rx, Rx / Ry)
     if np.any(alpha > _ALPHA_MAX):
         raise ValueError(f"radius ratio Ry/Rx must be in [1e-8, 1e8] [-]; got "
                          f"{float(np.max(alpha)):g} (close to line contact: use line_contact)")
-    k, K, E = _ellipticity(alpha, method)
+    return alpha
+
+
+def _contact_from_parts(Q, Rx, Ry, Ep, method) -> HertzContact:
+    """Internal: contact for validated, broadcast arrays."""
+    R = Rx * Ry / (Rx + Ry)
+    k, K, E = _ellipticity(_radius_ratio(Rx, Ry), method)
     # Hamrock & Dowson (1981) eqs. 3.8-3.16; Ricci (2009) eqs. 12-13
     c = (6.0 / np.pi) * E * Q * R / Ep
     a = np.cbrt(c * k * k)
@@ -598,9 +603,12 @@ def point_contact(load, rx1, ry1, rx2, ry2, material1: Material,
     Q = check_nonnegative(load, "load", "N", bounded=True)
     radii = {name: _radius(r, name) for name, r in
              (("rx1", rx1), ("ry1", ry1), ("rx2", rx2), ("ry2", ry2))}
-    broadcast(load=Q, **radii)
-    geo = curvature(**radii)
-    return elliptical_contact(Q, geo.Rx, geo.Ry, Ep, method=method)
+    Q, *radii_b = broadcast(load=Q, **radii)
+    geo = curvature(*radii_b)
+    # derived radii and modulus may pass 1e30 a little (cancelling curvatures, nu near -1):
+    # the formulas stay finite, so they are not checked against the input limits again
+    Q, Rx, Ry, Ep = np.broadcast_arrays(Q, geo.Rx, geo.Ry, Ep)
+    return _contact_from_parts(Q, Rx, Ry, Ep, method)
 
 
 def contact_stiffness(Rx, Ry, E_prime, method: str = "exact"):
@@ -634,8 +642,7 @@ def contact_stiffness(Rx, Ry, E_prime, method: str = "exact"):
     Ep = check_positive(E_prime, "E_prime", "Pa", bounded=True)
     Rx, Ry, Ep = broadcast(Rx=Rx, Ry=Ry, E_prime=Ep)
     R = Rx * Ry / (Rx + Ry)
-    alpha = np.where(Ry >= Rx, Ry / Rx, Rx / Ry)
-    k, K, E = _ellipticity(alpha, method)
+    k, K, E = _ellipticity(_radius_ratio(Rx, Ry), method)
     return _scalar(np.pi * k * Ep * np.sqrt(2.0 * E * R / (9.0 * K**3)))
 
 

@@ -505,3 +505,105 @@ def test_shapes_that_do_not_broadcast_name_both_arguments(key, a, b):
         _func(key)(**args)
     msg = str(info.value)
     assert a in msg and b in msg and "broadcast" in msg, msg
+
+
+# ------------------------------------------------------------------ regressions (issue 14)
+def test_material_refuses_text_booleans_and_arrays():
+    """Issue 14 item 7: these were accepted (numpy turns "1.0" and True into 1.0)."""
+    for bad in ("1.0", True, np.array([200e9, 210e9]), [200e9]):
+        with pytest.raises(TypeError, match=r"^E must be"):
+            Material(E=bad, nu=0.3)
+    with pytest.raises(TypeError, match=r"^density must be"):
+        Material(E=200e9, nu=0.3, density=np.array([7850.0, 3200.0]))
+    with pytest.raises(TypeError, match=r"^nu must be"):
+        Material(E=200e9, nu=False)
+    assert Material(E=np.float64(200e9), nu=0.3).E == 200e9   # numpy scalars are numbers
+
+
+def test_radii_refuse_text_and_booleans():
+    with pytest.raises(TypeError, match="rx1"):
+        hertz.curvature("0.006", 0.006, np.inf, -0.0066)
+    with pytest.raises(TypeError, match="ry2"):
+        hertz.curvature(0.006, 0.006, np.inf, True)
+    with pytest.raises(TypeError, match="alpha_r"):
+        hertz.ellipticity(True)
+
+
+def test_life_refuses_ball_at_or_above_pitch_diameter():
+    """Issue 14 item 6: contact_capacity and lundberg_palmgren_life returned NaN."""
+    from ballrace.analytic import life
+    for D in (0.065, 0.07):
+        with pytest.raises(ValueError, match="ball_diameter must be < pitch_diameter"):
+            life.contact_capacity(D, 9, 0.065, 0.0, 0.52, "inner")
+        with pytest.raises(ValueError, match="ball_diameter must be < pitch_diameter"):
+            life.lundberg_palmgren_life(np.full(9, 100.0), 0.0, ball_diameter=D,
+                                        pitch_diameter=0.065, f_inner=0.52, f_outer=0.52)
+
+
+@pytest.mark.parametrize("speed, error", [(math.nan, ValueError), (math.inf, ValueError),
+                                          (-math.inf, ValueError), (None, TypeError)])
+def test_entrainment_speed_refuses_nan_inf_none(speed, error):
+    """Issue 14 item 6: entrainment_speed returned NaN for these speeds."""
+    from ballrace.analytic import ehl
+    with pytest.raises(error, match="inner_speed"):
+        ehl.entrainment_speed(0.0127, 0.065, inner_speed=speed)
+    with pytest.raises(error, match="outer_speed"):
+        ehl.entrainment_speed(0.0127, 0.065, inner_speed=100.0, outer_speed=speed)
+
+
+def test_shapes_2_and_3_are_named():
+    """Issue 14 item 8: numpy's 'shape mismatch ... arg 0 ... arg 1' named no argument."""
+    from ballrace.analytic import subsurface
+    with pytest.raises(ValueError, match=r"Fa \(shape \(2,\)\) and e \(shape \(3,\)\)"):
+        ANGULAR.eccentric_thrust(np.array([17800.0, 100.0]), np.array([0.0, 0.01, 0.02]))
+    with pytest.raises(ValueError, match=r"ball_loads \(shape \(2,\)\) and contact_angles"):
+        ANGULAR.contacts(np.ones(2), np.full(3, 0.3), "inner")
+    with pytest.raises(ValueError, match=r"x \(shape \(2,\)\) and y \(shape \(3,\)\)"):
+        subsurface.stress(CONTACT, np.zeros(2), np.zeros(3), 1e-4)
+
+
+@pytest.mark.parametrize("call", [
+    lambda v: hertz.point_contact(v, 6.35e-3, 6.35e-3, 30e-3, -6.6e-3, STEEL),
+    lambda v: hertz.point_contact(100.0, v, 6.35e-3, np.inf, -6.6e-3, STEEL),
+    lambda v: hertz.point_contact(100.0, 6.35e-3, 6.35e-3, 30e-3, -6.6e-3, Material(E=v, nu=0.3)),
+    lambda v: hertz.line_contact(v, 0.01, np.inf, STEEL),
+    lambda v: hertz.line_contact(1e6, v, np.inf, STEEL),
+    lambda v: hertz.contact_stiffness(v, 0.1, 2.2e11),
+    lambda v: hertz.contact_stiffness(5e-3, 0.1, v),
+    lambda v: ballrace.analytic.kinematics.cage_speed(0.0127, 0.065, 0.0, v),
+    lambda v: ballrace.analytic.highspeed.centrifugal_force(0.0127, 7850.0, 0.065, v),
+], ids=["load", "radius", "modulus", "line load", "line radius", "Rx", "E_prime", "speed",
+        "orbital speed"])
+def test_magnitudes_near_the_float_range_are_refused(call):
+    """Issue 14 item 9: 1e308 gave inf/NaN; 1e30 (the documented limit) still computes."""
+    with pytest.raises(ValueError, match="physical magnitude"):
+        call(1e308)
+    try:
+        out = call(1e30)
+    except ValueError as exc:     # e.g. a radius ratio beyond 1e8: a different, stated limit
+        assert "physical magnitude" not in str(exc)
+        return
+    values = [getattr(out, f) for f in ("a", "b", "p_max", "approach", "stiffness")
+              if hasattr(out, f)] or [out]
+    assert all(np.all(np.isfinite(np.asarray(v, float))) for v in values)
+
+
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+_mag = st.floats(-30.0, 30.0).map(lambda e: 10.0 ** e)
+
+
+@settings(max_examples=300, deadline=None)
+@given(Q=st.one_of(st.just(0.0), _mag), Rx=_mag, ratio=st.floats(-8.0, 8.0), Ep=_mag)
+def test_inside_the_magnitude_limits_contacts_are_finite(Q, Rx, ratio, Ep):
+    """Any load, radii and modulus inside [1e-30, 1e30] (radius ratio within 1e8) give
+    finite a, b, approach, p_max and stiffness: the limits leave room for the products."""
+    Ry = Rx * 10.0 ** ratio
+    if not 1e-30 <= Ry <= 1e30:
+        return
+    c = hertz.elliptical_contact(Q, Rx, Ry, Ep)
+    for f in ("a", "b", "approach", "p_max", "stiffness", "k"):
+        v = float(getattr(c, f))
+        assert math.isfinite(v), f
+        assert v > 0 or (Q == 0 and f in ("a", "b", "approach", "p_max")), f
