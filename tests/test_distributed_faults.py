@@ -219,6 +219,33 @@ def test_killing_the_only_worker_reports_lost_cases_as_errors(tmp_path):
     assert waited < 60                      # bounded: timeout + polling + shutdown
 
 
+@pytest.mark.slow
+def test_killing_the_scheduler_reports_cases_as_errors(tmp_path):
+    """A scheduler that dies mid-run: the outstanding cases are errors; the run ends."""
+    cases = tmp_path / "one.toml"
+    cases.write_text(SLOW_SWEEP)
+    cluster = Cluster(tmp_path, 1)
+    try:
+        run = _validate(cases, tmp_path / "dist", "--scheduler", cluster.address,
+                        env={"BALLRACE_DASK_TIMEOUT": "5"})
+        addr = cluster.worker_address("w0")
+        deadline = time.monotonic() + 120
+        while not cluster.client.processing(workers=[addr]).get(addr):
+            assert time.monotonic() < deadline and run.poll() is None
+            time.sleep(0.05)
+        scheduler = cluster.procs[0]
+        os.killpg(scheduler.pid, signal.SIGKILL)
+        scheduler.wait(timeout=30)
+        code, out = _finish(run, timeout=120)
+    finally:
+        cluster.close()
+    # (dask's own client logger reports the lost connection with a traceback on stderr; the
+    # run itself completes: summary, report and exit code 1)
+    assert code == 1 and "validation FAILED" in out, out
+    (case,) = _results(tmp_path / "dist").values()
+    assert case["status"] == "error" and "lost" in case["message"], case["message"]
+
+
 # ------------------------------------------------------------------ fast: bounded waits
 def _sweep_cases():
     return [c for c in load_cases("hertz_approximations.toml") if c.distributed]

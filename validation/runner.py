@@ -364,6 +364,7 @@ def _collect(client, futures: dict, done: Callable, poll: float = 1.0) -> None:
     up on (``KilledWorker``) or that raised is an ``error``.  When the cluster has had no
     worker at all for :func:`distributed.timeout` seconds, the cases still outstanding are
     reported as errors ("lost") and their futures cancelled: never a pass, never a hang.
+    Futures that dask cancels (the scheduler connection was lost) are errors too.
     """
     from dask.distributed import wait
 
@@ -377,6 +378,14 @@ def _collect(client, futures: dict, done: Callable, poll: float = 1.0) -> None:
             finished, pending = wait(pending, timeout=poll, return_when="FIRST_COMPLETED")
         except TimeoutError:
             finished = set()
+        except Exception as exc:  # noqa: BLE001 - futures cancelled (scheduler connection lost)
+            finished = {f for f in pending if f.done()}
+            pending = pending - finished
+            if not finished:
+                msg = f"lost: {type(exc).__name__}: {' '.join(str(exc).split())}"
+                for fut in sorted(pending, key=lambda f: futures[f][0].id):
+                    done(_result(futures[fut][0], "error", msg))
+                return
         for fut in finished:
             case, pts = futures[fut]
             try:
