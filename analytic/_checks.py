@@ -5,19 +5,46 @@ argument's public ``name`` so the error says which argument is wrong and what
 range is allowed.  ``TypeError`` for values that are not numbers, ``ValueError``
 for numbers outside their allowed range.  Checks run once, at the public entry
 point; internal kernels trust their inputs.
+
+What counts as a number: Python and numpy integers and floats, and arrays (or nested
+lists) of them.  Strings (even ``"1.0"``), booleans, ``None``, complex numbers and
+arrays of those are a ``TypeError``: numpy would silently turn ``"1.0"`` and ``True``
+into 1.0.
+
+Physical magnitude: with ``bounded=True`` a dimensional input must be zero (where zero
+is allowed) or have a magnitude in [``MIN_MAGNITUDE``, ``MAX_MAGNITUDE``] =
+[1e-30, 1e30] in SI units.  No bearing quantity comes near those limits (a 10 m ring is
+1e1 m, a diamond's modulus 1.2e12 Pa), and inside them the contact formulas, which
+multiply up to a few such numbers, cannot overflow or underflow to inf, NaN or zero.
+
+Broadcasting: :func:`broadcast` is ``np.broadcast_arrays`` with an error that names the
+arguments whose shapes do not fit together.
 """
 from __future__ import annotations
 
 import numpy as np
 
 __all__ = [
+    "MAX_MAGNITUDE",
+    "MIN_MAGNITUDE",
     "as_array",
+    "broadcast",
     "check_finite",
     "check_positive",
     "check_nonnegative",
     "check_range",
     "check_choice",
+    "check_instance",
+    "check_integer",
 ]
+
+#: Largest magnitude of a dimensional input accepted with ``bounded=True`` (SI units).
+MAX_MAGNITUDE = 1e30
+#: Smallest non-zero magnitude of a dimensional input accepted with ``bounded=True``.
+MIN_MAGNITUDE = 1e-30
+
+_BAD_KINDS = {"b": "boolean", "U": "text", "S": "bytes", "c": "complex", "O": "object",
+              "M": "datetime", "m": "timedelta", "V": "void"}
 
 
 def _where(mask: np.ndarray) -> str:
@@ -32,42 +59,138 @@ def _first(value: np.ndarray, mask: np.ndarray) -> float:
     return float(value[mask].ravel()[0]) if value.ndim else float(value)
 
 
-def as_array(value, name: str, *, allow_inf: bool = False) -> np.ndarray:
-    """Convert ``value`` to a float array; reject non-numbers and NaN (and inf unless allowed)."""
+def _type_error(value, name: str) -> TypeError:
+    text = repr(value)
+    if len(text) > 60:
+        text = text[:57] + "..."
+    return TypeError(f"{name} must be a real number or an array of real numbers; "
+                     f"got {type(value).__name__} {text}")
+
+
+def _has_non_number(value) -> bool:
+    """True when a (nested) list or tuple holds a bool, str, bytes or None."""
+    if isinstance(value, (bool, np.bool_, str, bytes, type(None))):
+        return True
+    if isinstance(value, (list, tuple)):
+        return any(_has_non_number(v) for v in value)
+    return False
+
+
+def as_array(value, name: str, *, allow_inf: bool = False, bounded: bool = False,
+             tiny_ok: bool = False, unit: str = "") -> np.ndarray:
+    """Convert ``value`` to a float array; reject non-numbers and NaN (and inf unless allowed).
+
+    ``TypeError`` for strings, booleans, ``None``, complex or object values and ragged
+    lists; ``ValueError`` for NaN or inf.  With ``bounded``, also ``ValueError`` for a
+    non-zero finite magnitude outside [MIN_MAGNITUDE, MAX_MAGNITUDE] (only above
+    MAX_MAGNITUDE with ``tiny_ok``, for coordinates, where any small value is meaningful).
+
+    Examples
+    --------
+    >>> as_array([1, 2.5], "x")
+    array([1. , 2.5])
+    >>> as_array("1.0", "E")
+    Traceback (most recent call last):
+    ...
+    TypeError: E must be a real number or an array of real numbers; got str '1.0'
+    >>> as_array(1e308, "load", bounded=True, unit="N")
+    Traceback (most recent call last):
+    ...
+    ValueError: load must have a physical magnitude, 0 or in [1e-30, 1e+30] [N]; got 1e+308
+    """
+    if _has_non_number(value):
+        raise _type_error(value, name)
     try:
-        arr = np.asarray(value, dtype=float)
+        raw = np.asarray(value)
     except (TypeError, ValueError):
-        raise TypeError(f"{name} must be a real number or an array of real numbers; "
-                        f"got {type(value).__name__} {value!r}") from None
+        raise _type_error(value, name) from None
+    if raw.dtype.kind in _BAD_KINDS:
+        if raw.dtype.kind != "O":
+            raise _type_error(value, name)
+        try:   # object arrays of plain numbers (e.g. Fraction, Decimal) are fine
+            flat = [v for v in raw.ravel()]
+            if any(_has_non_number(v) or isinstance(v, complex) for v in flat):
+                raise TypeError
+            raw = np.array([float(v) for v in flat]).reshape(raw.shape)
+        except (TypeError, ValueError):
+            raise _type_error(value, name) from None
+    arr = raw.astype(float, copy=False)
     bad = np.isnan(arr) if allow_inf else ~np.isfinite(arr)
     if bad.any():
         kind = "not NaN" if allow_inf else "finite"
         raise ValueError(f"{name} must be {kind}; got {_first(arr, bad)!r}{_where(bad)}")
+    if bounded:
+        mag = np.abs(arr)
+        low = 0.0 if tiny_ok else MIN_MAGNITUDE
+        bad = np.isfinite(mag) & (mag != 0) & ((mag < low) | (mag > MAX_MAGNITUDE))
+        if bad.any():
+            u = f" [{unit}]" if unit else ""
+            rng = (f"within ±{MAX_MAGNITUDE:g}" if tiny_ok else
+                   f"0 or in [{MIN_MAGNITUDE:g}, {MAX_MAGNITUDE:g}]")
+            raise ValueError(f"{name} must have a physical magnitude, {rng}{u}; "
+                             f"got {_first(arr, bad)!r}{_where(bad)}")
     return arr
 
 
-def check_finite(value, name: str) -> np.ndarray:
+def broadcast(**arrays) -> list:
+    """``np.broadcast_arrays`` of the named arrays; ``ValueError`` naming those that clash.
+
+    Examples
+    --------
+    >>> Fa, e = broadcast(Fa=np.ones(2), e=np.ones(3))
+    Traceback (most recent call last):
+    ...
+    ValueError: Fa (shape (2,)) and e (shape (3,)) do not broadcast together
+    """
+    arrs = [np.asarray(a) for a in arrays.values()]
+    try:
+        return list(np.broadcast_arrays(*arrs))
+    except ValueError:
+        pass
+    names = list(arrays)
+    shape = ()
+    so_far = []
+    for n, a in zip(names, arrs):
+        try:
+            shape = np.broadcast_shapes(shape, a.shape)
+            so_far.append(n)
+        except ValueError:
+            clash = [m for m, b in zip(so_far, arrs) if b.ndim]
+            others = " and ".join(f"{m} (shape {np.shape(arrays[m])})" for m in clash) \
+                or "the other arguments"
+            raise ValueError(f"{others} and {n} (shape {a.shape}) do not broadcast "
+                             "together") from None
+    raise AssertionError("unreachable")  # pragma: no cover
+
+
+def check_finite(value, name: str, unit: str = "", *, bounded: bool = False) -> np.ndarray:
     """Array of finite floats, else ``ValueError`` naming ``name``."""
-    return as_array(value, name)
+    return as_array(value, name, bounded=bounded, unit=unit)
 
 
-def check_positive(value, name: str, unit: str = "", *, allow_inf: bool = False) -> np.ndarray:
+def check_positive(value, name: str, unit: str = "", *, allow_inf: bool = False,
+                   bounded: bool = False) -> np.ndarray:
     """Array of floats > 0, else ``ValueError`` naming ``name`` and the allowed range."""
     arr = as_array(value, name, allow_inf=allow_inf)
     bad = ~(arr > 0)
     if bad.any():
         u = f" [{unit}]" if unit else ""
         raise ValueError(f"{name} must be > 0{u}; got {_first(arr, bad)!r}{_where(bad)}")
+    if bounded:
+        as_array(arr, name, allow_inf=allow_inf, bounded=True, unit=unit)
     return arr
 
 
-def check_nonnegative(value, name: str, unit: str = "") -> np.ndarray:
+def check_nonnegative(value, name: str, unit: str = "", *, bounded: bool = False,
+                      tiny_ok: bool = False) -> np.ndarray:
     """Array of finite floats >= 0, else ``ValueError`` naming ``name``."""
     arr = as_array(value, name)
     bad = arr < 0
     if bad.any():
         u = f" [{unit}]" if unit else ""
         raise ValueError(f"{name} must be >= 0{u}; got {_first(arr, bad)!r}{_where(bad)}")
+    if bounded:
+        as_array(arr, name, bounded=True, tiny_ok=tiny_ok, unit=unit)
     return arr
 
 
@@ -90,7 +213,41 @@ def check_range(value, name: str, low: float | None = None, high: float | None =
 
 
 def check_choice(value: str, name: str, choices) -> str:
-    """``value`` must be one of ``choices`` (strings)."""
+    """``value`` must be one of ``choices`` (strings); ``TypeError`` when it is not a string."""
+    if not isinstance(value, str):
+        raise TypeError(f"{name} must be a string, one of {', '.join(repr(c) for c in choices)}; "
+                        f"got {type(value).__name__} {value!r}")
     if value not in choices:
         raise ValueError(f"{name} must be one of {', '.join(repr(c) for c in choices)}; got {value!r}")
     return value
+
+
+def check_instance(value, name: str, cls, what: str | None = None):
+    """``value`` must be an instance of ``cls``, else ``TypeError`` naming ``name``."""
+    if not isinstance(value, cls):
+        what = what or cls.__name__
+        raise TypeError(f"{name} must be a {what}; got {type(value).__name__}")
+    return value
+
+
+def check_integer(value, name: str, low: int | None = None) -> np.ndarray:
+    """Array of whole numbers (>= ``low``), else ``ValueError`` naming ``name``.
+
+    Whole-valued floats (``9.0``) are accepted; booleans and strings are a ``TypeError``.
+
+    Examples
+    --------
+    >>> check_integer(2.5, "n_balls", 1)
+    Traceback (most recent call last):
+    ...
+    ValueError: n_balls must be a whole number >= 1; got 2.5
+    """
+    arr = as_array(value, name)
+    bad = arr != np.round(arr)
+    if low is not None:
+        bad |= arr < low
+    if bad.any():
+        lo = f" >= {low}" if low is not None else ""
+        raise ValueError(f"{name} must be a whole number{lo}; "
+                         f"got {_first(arr, bad)!r}{_where(bad)}")
+    return arr

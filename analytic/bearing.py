@@ -27,7 +27,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import hertz
-from ._checks import as_array, check_choice, check_positive, check_range
+from ._checks import (as_array, broadcast, check_choice, check_nonnegative, check_positive,
+                      check_range)
 from .materials import BEARING_STEEL, Material, effective_modulus
 
 __all__ = ["BallBearing", "RACES"]
@@ -392,6 +393,8 @@ class BallBearing:
         >>> round(float(c.p_max) / 1e6)
         2640
         """
+        broadcast(ball_loads=check_nonnegative(ball_loads, "ball_loads", "N", bounded=True),
+                  contact_angles=as_array(contact_angles, "contact_angles"))
         c = self.curvature(race, contact_angles)
         return hertz.elliptical_contact(ball_loads, c.Rx, c.Ry, self.E_prime, method)
 
@@ -440,6 +443,7 @@ class BallBearing:
     def eccentric_thrust(self, Fa, e, **kwargs):
         """Eccentric thrust (Ricci 2009); see :func:`ballrace.analytic.loaddist.eccentric_thrust`."""
         from .loaddist import eccentric_thrust
+        broadcast(Fa=as_array(Fa, "Fa", bounded=True), e=as_array(e, "e", bounded=True))
         return eccentric_thrust(self, Fa, e, **kwargs)
 
     def solve(self, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, **kwargs):

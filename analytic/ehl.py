@@ -28,7 +28,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._checks import check_nonnegative, check_positive, check_range
+from ._checks import (as_array, broadcast, check_instance, check_nonnegative, check_positive,
+                      check_range)
+from .hertz import HertzContact
 
 __all__ = [
     "FilmThickness",
@@ -96,8 +98,9 @@ def ellipticity_parameter(Rx, Ry):
     >>> round(float(ellipticity_parameter(0.005, 0.05)), 4)
     4.4961
     """
-    Rx = check_positive(Rx, "Rx", "m")
-    Ry = check_positive(Ry, "Ry", "m")
+    Rx = check_positive(Rx, "Rx", "m", bounded=True)
+    Ry = check_positive(Ry, "Ry", "m", bounded=True)
+    Rx, Ry = broadcast(Rx=Rx, Ry=Ry)
     return _s(1.03 * (Ry / Rx) ** 0.64)
 
 
@@ -138,13 +141,15 @@ def film_thickness_parts(load, Rx, Ry, E_prime, *, entrainment_speed, viscosity,
     >>> round(float(f.h_min) * 1e6, 3), round(float(f.h_central) * 1e6, 3)
     (0.756, 0.937)
     """
-    Q = check_positive(load, "load", "N")
-    Rx = check_positive(Rx, "Rx", "m")
-    Ry = check_positive(Ry, "Ry", "m")
-    Ep = check_positive(E_prime, "E_prime", "Pa")
-    u = check_positive(entrainment_speed, "entrainment_speed", "m/s")
-    eta = check_positive(viscosity, "viscosity", "Pa*s")
-    xi = check_positive(pressure_viscosity, "pressure_viscosity", "1/Pa")
+    Q = check_positive(load, "load", "N", bounded=True)
+    Rx = check_positive(Rx, "Rx", "m", bounded=True)
+    Ry = check_positive(Ry, "Ry", "m", bounded=True)
+    Ep = check_positive(E_prime, "E_prime", "Pa", bounded=True)
+    u = check_positive(entrainment_speed, "entrainment_speed", "m/s", bounded=True)
+    eta = check_positive(viscosity, "viscosity", "Pa*s", bounded=True)
+    xi = check_positive(pressure_viscosity, "pressure_viscosity", "1/Pa", bounded=True)
+    Q, Rx, Ry, Ep, u, eta, xi = broadcast(load=Q, Rx=Rx, Ry=Ry, E_prime=Ep, entrainment_speed=u,
+                                          viscosity=eta, pressure_viscosity=xi)
     k = 1.03 * (Ry / Rx) ** 0.64
     if np.any((k < 1.0) | (k > 8.0)):
         log.info("EHL: ellipticity parameter k outside the fitted range 1..8 (min %.3g, "
@@ -194,6 +199,12 @@ def film_thickness(contact, *, entrainment_speed, viscosity, pressure_viscosity)
     >>> round(float(f.h_min) * 1e6, 3)
     0.756
     """
+    check_instance(contact, "contact", HertzContact)
+    u = check_positive(entrainment_speed, "entrainment_speed", "m/s", bounded=True)
+    eta = check_positive(viscosity, "viscosity", "Pa*s", bounded=True)
+    xi = check_positive(pressure_viscosity, "pressure_viscosity", "1/Pa", bounded=True)
+    broadcast(entrainment_speed=u, viscosity=eta, pressure_viscosity=xi,
+              contact=np.asarray(contact.load))
     Q = np.asarray(contact.load, dtype=float)
     loaded = Q > 0
     Qs = np.where(loaded, Q, 1.0)
@@ -226,9 +237,10 @@ def film_parameter(h_min, roughness_race, roughness_ball):
     >>> round(float(film_parameter(0.3e-6, 0.175e-6, 0.075e-6)), 3)
     1.576
     """
-    h = check_nonnegative(h_min, "h_min", "m")
-    rr = check_nonnegative(roughness_race, "roughness_race", "m")
-    rb = check_nonnegative(roughness_ball, "roughness_ball", "m")
+    h = check_nonnegative(h_min, "h_min", "m", bounded=True)
+    rr = check_nonnegative(roughness_race, "roughness_race", "m", bounded=True)
+    rb = check_nonnegative(roughness_ball, "roughness_ball", "m", bounded=True)
+    h, rr, rb = broadcast(h_min=h, roughness_race=rr, roughness_ball=rb)
     s = np.sqrt(rr**2 + rb**2)
     if np.any(s == 0):
         raise ValueError("roughness_race and roughness_ball must not both be 0 [m]")
@@ -274,13 +286,15 @@ def entrainment_speed(ball_diameter, pitch_diameter, contact_angle=0.0, *, inner
     >>> round(float(entrainment_speed(0.0127, 0.065, inner_speed=4000 * 2 * np.pi / 60)), 3)
     6.547
     """
-    D = check_positive(ball_diameter, "ball_diameter", "m")
-    dm = check_positive(pitch_diameter, "pitch_diameter", "m")
+    D = check_positive(ball_diameter, "ball_diameter", "m", bounded=True)
+    dm = check_positive(pitch_diameter, "pitch_diameter", "m", bounded=True)
+    b = check_range(contact_angle, "contact_angle", -np.pi / 2, np.pi / 2, unit="rad")
+    wi = as_array(inner_speed, "inner_speed", bounded=True, tiny_ok=True, unit="rad/s")
+    wo = as_array(outer_speed, "outer_speed", bounded=True, tiny_ok=True, unit="rad/s")
+    D, dm, b, wi, wo = broadcast(ball_diameter=D, pitch_diameter=dm, contact_angle=b,
+                                 inner_speed=wi, outer_speed=wo)
     if np.any(D >= dm):
         raise ValueError("ball_diameter must be < pitch_diameter [m]")
-    b = check_range(contact_angle, "contact_angle", -np.pi / 2, np.pi / 2, unit="rad")
-    wi = np.asarray(inner_speed, dtype=float)
-    wo = np.asarray(outer_speed, dtype=float)
     return _s((dm**2 - (D * np.cos(b)) ** 2) / (4.0 * dm) * np.abs(wi - wo))
 
 

@@ -55,7 +55,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import special
 
-from ._checks import as_array, check_choice, check_nonnegative, check_positive
+from ._checks import (as_array, broadcast, check_choice, check_instance, check_nonnegative,
+                      check_positive)
 from .materials import Material, effective_modulus
 
 __all__ = [
@@ -178,12 +179,9 @@ def curvature(rx1, ry1, rx2, ry2) -> Curvature:
     >>> round(float(c.Rx) * 1e3, 4), round(float(c.Ry) * 1e3, 4)
     (6.35, 165.1)
     """
-    inv = {}
-    for name, r in (("rx1", rx1), ("ry1", ry1), ("rx2", rx2), ("ry2", ry2)):
-        arr = as_array(r, name, allow_inf=True)
-        if np.any(arr == 0):
-            raise ValueError(f"{name} must be non-zero (use np.inf for a flat surface) [m]")
-        inv[name] = 1.0 / arr
+    radii = {name: _radius(r, name) for name, r in
+             (("rx1", rx1), ("ry1", ry1), ("rx2", rx2), ("ry2", ry2))}
+    inv = dict(zip(radii, (1.0 / r for r in broadcast(**radii))))
     cx = inv["rx1"] + inv["rx2"]
     cy = inv["ry1"] + inv["ry2"]
     for plane, c, n1, n2 in (("x", cx, "rx1", "rx2"), ("y", cy, "ry1", "ry2")):
@@ -194,6 +192,14 @@ def curvature(rx1, ry1, rx2, ry2) -> Curvature:
                 "(use line_contact); negative means the concave body is more curved than "
                 "the convex one (inconsistent for a Hertz contact)")
     return Curvature(Rx=_scalar(1.0 / cx), Ry=_scalar(1.0 / cy))
+
+
+def _radius(r, name: str) -> np.ndarray:
+    """A principal radius: non-zero, finite or inf (flat), of physical magnitude [m]."""
+    arr = as_array(r, name, allow_inf=True, bounded=True, unit="m")
+    if np.any(arr == 0):
+        raise ValueError(f"{name} must be non-zero (use np.inf for a flat surface) [m]")
+    return arr
 
 
 # --------------------------------------------------------------------------- ellipticity
@@ -471,14 +477,19 @@ class HertzContact:
         return self.p_max * np.sqrt(np.clip(s, 0.0, None))
 
 
-def _contact_from_parts(Q, Rx, Ry, Ep, method) -> HertzContact:
-    """Internal: contact for validated, broadcast arrays."""
-    R = Rx * Ry / (Rx + Ry)
+def _radius_ratio(Rx, Ry) -> np.ndarray:
+    """Larger over smaller effective radius, checked against the ellipticity solver's range."""
     alpha = np.where(Ry >= Rx, Ry / Rx, Rx / Ry)
     if np.any(alpha > _ALPHA_MAX):
         raise ValueError(f"radius ratio Ry/Rx must be in [1e-8, 1e8] [-]; got "
                          f"{float(np.max(alpha)):g} (close to line contact: use line_contact)")
-    k, K, E = _ellipticity(alpha, method)
+    return alpha
+
+
+def _contact_from_parts(Q, Rx, Ry, Ep, method) -> HertzContact:
+    """Internal: contact for validated, broadcast arrays."""
+    R = Rx * Ry / (Rx + Ry)
+    k, K, E = _ellipticity(_radius_ratio(Rx, Ry), method)
     # Hamrock & Dowson (1981) eqs. 3.8-3.16; Ricci (2009) eqs. 12-13
     c = (6.0 / np.pi) * E * Q * R / Ep
     a = np.cbrt(c * k * k)
@@ -539,11 +550,11 @@ def elliptical_contact(load, Rx, Ry, E_prime, method: str = "exact") -> HertzCon
     (0.3244, 4.5383)
     """
     check_choice(method, "method", METHODS)
-    Q = check_nonnegative(load, "load", "N")
-    Rx = check_positive(Rx, "Rx", "m")
-    Ry = check_positive(Ry, "Ry", "m")
-    Ep = check_positive(E_prime, "E_prime", "Pa")
-    Q, Rx, Ry, Ep = np.broadcast_arrays(Q, Rx, Ry, Ep)
+    Q = check_nonnegative(load, "load", "N", bounded=True)
+    Rx = check_positive(Rx, "Rx", "m", bounded=True)
+    Ry = check_positive(Ry, "Ry", "m", bounded=True)
+    Ep = check_positive(E_prime, "E_prime", "Pa", bounded=True)
+    Q, Rx, Ry, Ep = broadcast(load=Q, Rx=Rx, Ry=Ry, E_prime=Ep)
     return _contact_from_parts(Q, Rx, Ry, Ep, method)
 
 
@@ -587,13 +598,17 @@ def point_contact(load, rx1, ry1, rx2, ry2, material1: Material,
     >>> round(float(c.a) * 1e6, 2), round(float(c.p_max) / 1e6, 1), round(float(c.approach) * 1e6, 3)
     (129.4, 2851.3, 5.274)
     """
-    if not isinstance(material1, Material):
-        raise TypeError(f"material1 must be a ballrace.Material; got {type(material1).__name__}")
-    if material2 is not None and not isinstance(material2, Material):
-        raise TypeError(f"material2 must be a ballrace.Material; got {type(material2).__name__}")
-    geo = curvature(rx1, ry1, rx2, ry2)
-    return elliptical_contact(load, geo.Rx, geo.Ry, effective_modulus(material1, material2),
-                              method=method)
+    check_choice(method, "method", METHODS)
+    Ep = effective_modulus(material1, material2)
+    Q = check_nonnegative(load, "load", "N", bounded=True)
+    radii = {name: _radius(r, name) for name, r in
+             (("rx1", rx1), ("ry1", ry1), ("rx2", rx2), ("ry2", ry2))}
+    Q, *radii_b = broadcast(load=Q, **radii)
+    geo = curvature(*radii_b)
+    # derived radii and modulus may pass 1e30 a little (cancelling curvatures, nu near -1):
+    # the formulas stay finite, so they are not checked against the input limits again
+    Q, Rx, Ry, Ep = np.broadcast_arrays(Q, geo.Rx, geo.Ry, Ep)
+    return _contact_from_parts(Q, Rx, Ry, Ep, method)
 
 
 def contact_stiffness(Rx, Ry, E_prime, method: str = "exact"):
@@ -622,13 +637,12 @@ def contact_stiffness(Rx, Ry, E_prime, method: str = "exact"):
     True
     """
     check_choice(method, "method", METHODS)
-    Rx = check_positive(Rx, "Rx", "m")
-    Ry = check_positive(Ry, "Ry", "m")
-    Ep = check_positive(E_prime, "E_prime", "Pa")
-    Rx, Ry, Ep = np.broadcast_arrays(Rx, Ry, Ep)
+    Rx = check_positive(Rx, "Rx", "m", bounded=True)
+    Ry = check_positive(Ry, "Ry", "m", bounded=True)
+    Ep = check_positive(E_prime, "E_prime", "Pa", bounded=True)
+    Rx, Ry, Ep = broadcast(Rx=Rx, Ry=Ry, E_prime=Ep)
     R = Rx * Ry / (Rx + Ry)
-    alpha = np.where(Ry >= Rx, Ry / Rx, Rx / Ry)
-    k, K, E = _ellipticity(alpha, method)
+    k, K, E = _ellipticity(_radius_ratio(Rx, Ry), method)
     return _scalar(np.pi * k * Ep * np.sqrt(2.0 * E * R / (9.0 * K**3)))
 
 
@@ -656,8 +670,10 @@ def load_from_approach(approach, Rx, Ry, E_prime, method: str = "exact"):
     >>> round(float(load_from_approach(c.approach, 0.004, 0.08, 219.78e9)), 9)
     250.0
     """
-    d = check_nonnegative(approach, "approach", "m")
-    return _scalar(contact_stiffness(Rx, Ry, E_prime, method) * d**1.5)
+    d = check_nonnegative(approach, "approach", "m", bounded=True)
+    K = contact_stiffness(Rx, Ry, E_prime, method)
+    d, K = broadcast(approach=d, **{"Rx, Ry, E_prime": K})
+    return _scalar(K * d**1.5)
 
 
 # --------------------------------------------------------------------------- line contact
@@ -726,19 +742,13 @@ def line_contact(load_per_length, r1, r2, material1: Material,
     >>> round(float(c.b) * 1e3, 2), round(float(c.p_max) / 1e6)
     (6.21, 3585)
     """
-    w = check_nonnegative(load_per_length, "load_per_length", "N/m")
-    inv = []
-    for name, r in (("r1", r1), ("r2", r2)):
-        arr = as_array(r, name, allow_inf=True)
-        if np.any(arr == 0):
-            raise ValueError(f"{name} must be non-zero (use np.inf for a flat surface) [m]")
-        inv.append(1.0 / arr)
-    c = inv[0] + inv[1]
+    Ep = effective_modulus(material1, material2)
+    w = check_nonnegative(load_per_length, "load_per_length", "N/m", bounded=True)
+    w, a1, a2 = broadcast(load_per_length=w, r1=_radius(r1, "r1"), r2=_radius(r2, "r2"))
+    c = 1.0 / a1 + 1.0 / a2
     if np.any(c <= 0):
         raise ValueError(f"curvature sum 1/r1 + 1/r2 must be > 0 [1/m]; got {float(np.min(c)):g}")
     R = 1.0 / c
-    Ep = effective_modulus(material1, material2)
-    w, R = np.broadcast_arrays(w, R)
     b = np.sqrt(8.0 * w * R / (np.pi * Ep))
     with np.errstate(divide="ignore", invalid="ignore"):
         p = np.where(w > 0, 2.0 * w / (np.pi * b), 0.0)

@@ -85,7 +85,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import hertz
-from ._checks import as_array, check_choice, check_positive, check_range
+from ._checks import as_array, broadcast, check_choice, check_positive, check_range
 from .bearing import BallBearing
 from .kinematics import _kinematics_beta
 from .loaddist import ConvergenceError
@@ -136,8 +136,9 @@ def ball_mass(D, density):
     >>> round(float(ball_mass(22.225e-3, 7850.0)) * 1e3, 3)   # 7/8 in steel ball [g]
     45.123
     """
-    D = check_positive(D, "D", "m")
-    rho = check_positive(density, "density", "kg/m^3")
+    D = check_positive(D, "D", "m", bounded=True)
+    rho = check_positive(density, "density", "kg/m^3", bounded=True)
+    D, rho = broadcast(D=D, density=rho)
     return hertz._scalar(rho * np.pi * D**3 / 6.0)
 
 
@@ -194,8 +195,9 @@ def centrifugal_force(D, density, d_m, orbital_speed):
     533.7
     """
     m = np.asarray(ball_mass(D, density))
-    d_m = check_positive(d_m, "d_m", "m")
-    w = as_array(orbital_speed, "orbital_speed")
+    d_m = check_positive(d_m, "d_m", "m", bounded=True)
+    w = as_array(orbital_speed, "orbital_speed", bounded=True, tiny_ok=True, unit="rad/s")
+    broadcast(D=D, density=density, d_m=d_m, orbital_speed=w)
     return hertz._scalar(0.5 * m * d_m * w * w)
 
 
@@ -230,9 +232,11 @@ def gyroscopic_moment(D, density, ball_speed, orbital_speed, pitch_angle):
     -1.4459
     """
     J = np.asarray(ball_inertia(D, density))
-    wR = as_array(ball_speed, "ball_speed")
-    wc = as_array(orbital_speed, "orbital_speed")
-    b = as_array(pitch_angle, "pitch_angle")
+    wR = as_array(ball_speed, "ball_speed", bounded=True, tiny_ok=True, unit="rad/s")
+    wc = as_array(orbital_speed, "orbital_speed", bounded=True, tiny_ok=True, unit="rad/s")
+    b = check_range(pitch_angle, "pitch_angle", -np.pi / 2, np.pi / 2, low_inclusive=True,
+                    high_inclusive=True, unit="rad")
+    broadcast(D=D, density=density, ball_speed=wR, orbital_speed=wc, pitch_angle=b)
     return hertz._scalar(J * wR * wc * np.sin(b))
 
 
@@ -812,14 +816,16 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
     check_choice(tilt, "tilt", ("fixed", "free"))
     check_choice(orbital, "orbital", ORBITALS)
     check_choice(_start_from, "_start_from", ("static", "estimate"))
-    L = np.array([float(as_array(v, n)) if np.ndim(v) == 0 else np.nan
-                  for v, n in ((Fa, "Fa"), (Fr, "Fr"), (Fz, "Fz"), (My, "My"), (Mz, "Mz"))])
+    L = np.array([float(a) if a.ndim == 0 else np.nan
+                  for a in (as_array(v, n, bounded=True, tiny_ok=True) for v, n in
+                            ((Fa, "Fa"), (Fr, "Fr"), (Fz, "Fz"), (My, "My"), (Mz, "Mz")))])
     if np.any(np.isnan(L)):
         raise TypeError("Fa, Fr, Fz, My and Mz must be scalars (one load case per call)")
-    wi = float(as_array(speed_inner, "speed_inner"))
-    wo = float(as_array(speed_outer, "speed_outer"))
-    if np.ndim(speed_inner) or np.ndim(speed_outer):
+    wi = as_array(speed_inner, "speed_inner", bounded=True, tiny_ok=True, unit="rad/s")
+    wo = as_array(speed_outer, "speed_outer", bounded=True, tiny_ok=True, unit="rad/s")
+    if wi.ndim or wo.ndim:
         raise TypeError("speed_inner and speed_outer must be scalars [rad/s]")
+    wi, wo = float(wi), float(wo)
     if tilt == "fixed" and (L[3] != 0 or L[4] != 0):
         raise ValueError("My and Mz must be 0 with tilt='fixed' (rings kept parallel); "
                          "use tilt='free' to apply a moment")

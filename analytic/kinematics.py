@@ -37,7 +37,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._checks import as_array, check_choice, check_positive, check_range
+from ._checks import (as_array, broadcast, check_choice, check_integer, check_positive,
+                      check_range)
 
 __all__ = [
     "CONTROLS",
@@ -63,24 +64,29 @@ def _scalar(x):
     return x[()] if x.ndim == 0 else x
 
 
-def _check_geometry(D, d_m, name_alpha, alpha):
-    D = check_positive(D, "D", "m")
-    d_m = check_positive(d_m, "d_m", "m")
+def _check_geometry(D, d_m, name_alpha, alpha, **speeds):
+    """Checked D, d_m and an angle, broadcast together and with the named ``speeds``."""
+    D = check_positive(D, "D", "m", bounded=True)
+    d_m = check_positive(d_m, "d_m", "m", bounded=True)
     a = check_range(alpha, name_alpha, -0.5 * np.pi, 0.5 * np.pi, low_inclusive=True,
                     high_inclusive=True, unit="rad")
+    speeds = {n: as_array(v, n, bounded=True, tiny_ok=True, unit="rad/s")
+              for n, v in speeds.items()}
+    broadcast(D=D, d_m=d_m, **{name_alpha: a}, **speeds)
     if np.any(D >= d_m):
         raise ValueError(f"D must be < d_m [m]; got D={float(np.max(D)):g}, "
                          f"d_m={float(np.min(d_m)):g}")
     return D, d_m, a
 
 
-def _check_angles(D, d_m, contact_angle_inner, contact_angle_outer):
+def _check_angles(D, d_m, contact_angle_inner, contact_angle_outer, **speeds):
     """Checked D, d_m, alpha_i and alpha_o (alpha_o defaults to alpha_i)."""
-    D, d_m, ai = _check_geometry(D, d_m, "contact_angle_inner", contact_angle_inner)
+    D, d_m, ai = _check_geometry(D, d_m, "contact_angle_inner", contact_angle_inner, **speeds)
     if contact_angle_outer is None:
         return D, d_m, ai, ai
     ao = check_range(contact_angle_outer, "contact_angle_outer", -0.5 * np.pi, 0.5 * np.pi,
                      low_inclusive=True, high_inclusive=True, unit="rad")
+    broadcast(D=D, d_m=d_m, contact_angle_inner=ai, contact_angle_outer=ao, **speeds)
     return D, d_m, ai, ao
 
 
@@ -150,7 +156,8 @@ def cage_speed(D, d_m, contact_angle=0.0, speed_inner=1.0, speed_outer=0.0):
     >>> round(float(cage_speed(0.3126, 1.537, 0.0, 1.0)), 4)
     0.3983
     """
-    D, d_m, a = _check_geometry(D, d_m, "contact_angle", contact_angle)
+    D, d_m, a = _check_geometry(D, d_m, "contact_angle", contact_angle,
+                                speed_inner=speed_inner, speed_outer=speed_outer)
     wi = as_array(speed_inner, "speed_inner")
     wo = as_array(speed_outer, "speed_outer")
     g = D * np.cos(a) / d_m
@@ -194,7 +201,8 @@ def ball_speed(D, d_m, contact_angle=0.0, speed_inner=1.0, speed_outer=0.0):
     >>> round(float(ball_speed(0.3126, 1.537, 0.0, 1.0)), 4)   # CWRU 6205: BSF 2.3567
     -2.3567
     """
-    D, d_m, a = _check_geometry(D, d_m, "contact_angle", contact_angle)
+    D, d_m, a = _check_geometry(D, d_m, "contact_angle", contact_angle,
+                                speed_inner=speed_inner, speed_outer=speed_outer)
     wi = as_array(speed_inner, "speed_inner")
     wo = as_array(speed_outer, "speed_outer")
     g = D * np.cos(a) / d_m
@@ -389,7 +397,8 @@ def ball_kinematics(D, d_m, contact_angle_inner, contact_angle_outer=None,
     True
     """
     check_choice(control, "control", CONTROLS)
-    D, d_m, ai, ao = _check_angles(D, d_m, contact_angle_inner, contact_angle_outer)
+    D, d_m, ai, ao = _check_angles(D, d_m, contact_angle_inner, contact_angle_outer,
+                                   speed_inner=speed_inner, speed_outer=speed_outer)
     wi = as_array(speed_inner, "speed_inner")
     wo = as_array(speed_outer, "speed_outer")
     beta, wc, wR, s_i, s_o, r_i, r_o = _kinematics(D / d_m, ai, ao, wi, wo, control)
@@ -522,8 +531,10 @@ def defect_frequencies(D, d_m, n_balls, contact_angle=0.0, speed_inner=1.0,
     >>> round(float(f.bpfo), 4), round(float(f.bpfi), 4), round(float(2 * f.bsf), 4)
     (3.5848, 5.4152, 4.7134)
     """
-    D, d_m, a = _check_geometry(D, d_m, "contact_angle", contact_angle)
-    Z = check_positive(n_balls, "n_balls", "-")
+    D, d_m, a = _check_geometry(D, d_m, "contact_angle", contact_angle,
+                                speed_inner=speed_inner, speed_outer=speed_outer)
+    Z = check_integer(n_balls, "n_balls", 1)
+    broadcast(D=D, n_balls=Z, speed_inner=speed_inner, speed_outer=speed_outer)
     fi = as_array(speed_inner, "speed_inner")
     fo = as_array(speed_outer, "speed_outer")
     g = D * np.cos(a) / d_m

@@ -49,7 +49,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._checks import (as_array, check_choice, check_nonnegative, check_positive,
+from ._checks import (as_array, check_choice, check_integer, check_nonnegative, check_positive,
                       check_range)
 
 __all__ = [
@@ -602,9 +602,11 @@ def contact_capacity(ball_diameter, n_balls, pitch_diameter, contact_angle, conf
     7426
     """
     check_choice(race, "race", ("inner", "outer"))
-    D = float(check_positive(ball_diameter, "ball_diameter", "m"))
-    dm = float(check_positive(pitch_diameter, "pitch_diameter", "m"))
-    Z = float(check_positive(n_balls, "n_balls", "-"))
+    D = float(check_positive(ball_diameter, "ball_diameter", "m", bounded=True))
+    dm = float(check_positive(pitch_diameter, "pitch_diameter", "m", bounded=True))
+    if D >= dm:
+        raise ValueError(f"ball_diameter must be < pitch_diameter [m]; got {D!r} >= {dm!r}")
+    Z = float(check_integer(n_balls, "n_balls", 1))
     f = check_range(conformity, "conformity", 0.5, None, unit="-")
     a = check_range(contact_angle, "contact_angle", -np.pi / 2, np.pi / 2, unit="rad")
     if D > 0.0254 * (1 + 1e-12):
@@ -708,7 +710,17 @@ def lundberg_palmgren_life(ball_loads, contact_angles, *, ball_diameter, pitch_d
     143.7
     """
     check_choice(rotating, "rotating", ("inner", "outer"))
-    Qi = check_nonnegative(ball_loads, "ball_loads", "N")
+    D = float(check_positive(ball_diameter, "ball_diameter", "m", bounded=True))
+    if D >= float(check_positive(pitch_diameter, "pitch_diameter", "m", bounded=True)):
+        raise ValueError(f"ball_diameter must be < pitch_diameter [m]; got {D!r} >= "
+                         f"{pitch_diameter!r}")
+    check_range(f_inner, "f_inner", 0.5, None, unit="-")
+    check_range(f_outer, "f_outer", 0.5, None, unit="-")
+    for name, angle in (("contact_angles", contact_angles),
+                        ("contact_angles_outer", contact_angles_outer)):
+        if angle is not None:
+            check_range(angle, name, -np.pi / 2, np.pi / 2, unit="rad")
+    Qi = check_nonnegative(ball_loads, "ball_loads", "N", bounded=True)
     if Qi.ndim != 1 or Qi.size < 3:
         raise ValueError(f"ball_loads must be a 1-D array with one load per ball (>= 3); "
                          f"got shape {Qi.shape}")

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._checks import check_positive, check_range
+from ._checks import check_instance, check_positive, check_range
 
 __all__ = ["Material", "effective_modulus", "johnson_modulus", "BEARING_STEEL", "SILICON_NITRIDE"]
 
@@ -53,9 +53,15 @@ class Material:
     name: str = ""
 
     def __post_init__(self) -> None:
-        check_positive(self.E, "E", "Pa")
-        check_range(self.nu, "nu", -1.0, 0.5, unit="-")
-        check_positive(self.density, "density", "kg/m^3")
+        checked = (check_positive(self.E, "E", "Pa", bounded=True),
+                   check_range(self.nu, "nu", -1.0, 0.5, unit="-"),
+                   check_positive(self.density, "density", "kg/m^3", bounded=True))
+        for name, arr in zip(("E", "nu", "density"), checked):
+            if arr.ndim:
+                raise TypeError(f"{name} must be a single real number, not an array; "
+                                f"got shape {arr.shape}")
+        if not isinstance(self.name, str):
+            raise TypeError(f"name must be a string; got {type(self.name).__name__}")
 
     @property
     def reduced_modulus(self) -> float:
@@ -93,6 +99,9 @@ def effective_modulus(material1: Material, material2: Material | None = None):
     >>> round(effective_modulus(steel) / 1e9, 3)   # = E/(1-nu^2) for like materials
     219.78
     """
+    check_instance(material1, "material1", Material, "ballrace.Material")
+    if material2 is not None:
+        check_instance(material2, "material2", Material, "ballrace.Material")
     m2 = material1 if material2 is None else material2
     return 2.0 / ((1.0 - material1.nu**2) / material1.E + (1.0 - m2.nu**2) / m2.E)
 

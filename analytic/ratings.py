@@ -34,7 +34,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._checks import check_choice, check_nonnegative, check_positive, check_range
+from ._checks import (broadcast, check_choice, check_instance, check_integer, check_nonnegative,
+                      check_positive, check_range)
 from .materials import Material
 
 __all__ = [
@@ -131,22 +132,34 @@ def bearing_numbers(bearing_or_D, n_balls=None, pitch_diameter=None, contact_ang
         D, Z, dm = b.ball_diameter, b.n_balls, b.pitch_diameter
         alpha = getattr(b, "free_contact_angle", 0.0) if contact_angle is None else contact_angle
         i = getattr(b, "n_rows", 1)
+        names = ("bearing.ball_diameter", "bearing.n_balls", "bearing.pitch_diameter",
+                 "contact_angle" if contact_angle is not None else "bearing.free_contact_angle",
+                 "bearing.n_rows")
     else:
+        names = ("bearing_or_D (ball_diameter)", "n_balls", "pitch_diameter", "contact_angle",
+                 "n_rows")
         D, Z, dm, alpha, i = bearing_or_D, n_balls, pitch_diameter, contact_angle, n_rows
         if Z is None or dm is None:
             raise TypeError("give a bearing object, or ball_diameter, n_balls and pitch_diameter")
         alpha = 0.0 if alpha is None else alpha
-    D = float(check_positive(D, "ball_diameter", "m"))
-    dm = float(check_positive(dm, "pitch_diameter", "m"))
-    if isinstance(Z, bool) or int(Z) != Z or Z < 3:
-        raise ValueError(f"n_balls must be an integer >= 3; got {Z!r}")
-    if isinstance(i, bool) or int(i) != i or i not in (1, 2):
-        raise ValueError(f"n_rows must be 1 or 2; got {i!r}")
-    alpha = float(check_range(alpha, "contact_angle", 0.0, np.pi / 2, low_inclusive=True,
-                              unit="rad"))
+    D = float(_scalar_of(check_positive(D, names[0], "m", bounded=True), names[0]))
+    dm = float(_scalar_of(check_positive(dm, names[2], "m", bounded=True), names[2]))
+    Z = _scalar_of(check_integer(Z, names[1], 3), names[1])
+    i = _scalar_of(check_integer(i, names[4], 1), names[4])
+    if i not in (1, 2):
+        raise ValueError(f"{names[4]} must be 1 or 2; got {i!r}")
+    alpha = float(_scalar_of(check_range(alpha, names[3], 0.0, np.pi / 2, low_inclusive=True,
+                                         unit="rad"), names[3]))
     if D >= dm:
         raise ValueError(f"ball_diameter must be < pitch_diameter [m]; got D={D!r}, d_m={dm!r}")
     return D, int(Z), dm, alpha, int(i)
+
+
+def _scalar_of(arr: np.ndarray, name: str) -> float:
+    """The single value of a checked 0-d array; ``TypeError`` for an array."""
+    if arr.ndim:
+        raise TypeError(f"{name} must be a single number, not an array; got shape {arr.shape}")
+    return float(arr)
 
 
 # --------------------------------------------------------------------------- factors
@@ -405,6 +418,7 @@ def static_rating_pressure(bearing_or_D, n_balls=None, pitch_diameter=None, cont
                                          n_rows)
     check_range(f_inner, "f_inner", 0.5, None, unit="-")
     check_range(f_outer, "f_outer", 0.5, None, unit="-")
+    check_instance(material, "material", Material, "ballrace.Material")
     C0 = static_rating(D, Z, dm, alpha, i)
     Q = 5.0 * C0 / (i * Z * np.cos(alpha))
     g = D * np.cos(alpha) / dm
@@ -474,10 +488,12 @@ def static_equivalent_load(radial_load, axial_load, contact_angle=0.0, n_rows: i
     >>> float(static_equivalent_load(1000.0, 100.0))            # never below Fr
     1000.0
     """
-    Fr = check_nonnegative(radial_load, "radial_load", "N")
-    Fa = check_nonnegative(axial_load, "axial_load", "N")
-    alpha = float(check_range(contact_angle, "contact_angle", 0.0, np.pi / 2,
-                              low_inclusive=True, unit="rad"))
+    Fr = check_nonnegative(radial_load, "radial_load", "N", bounded=True)
+    Fa = check_nonnegative(axial_load, "axial_load", "N", bounded=True)
+    Fr, Fa = broadcast(radial_load=Fr, axial_load=Fa)
+    alpha = float(_scalar_of(check_range(contact_angle, "contact_angle", 0.0, np.pi / 2,
+                                         low_inclusive=True, unit="rad"), "contact_angle"))
+    n_rows = int(_scalar_of(check_integer(n_rows, "n_rows", 1), "n_rows"))
     if n_rows not in (1, 2):
         raise ValueError(f"n_rows must be 1 or 2; got {n_rows!r}")
     x0, y0 = _x0y0(alpha, n_rows)
@@ -506,8 +522,9 @@ def static_safety_factor(static_rating_N, static_equivalent_load_N):
     >>> float(static_safety_factor(20000.0, 8000.0))
     2.5
     """
-    C0 = check_positive(static_rating_N, "static_rating_N", "N")
-    P0 = check_positive(static_equivalent_load_N, "static_equivalent_load_N", "N")
+    C0 = check_positive(static_rating_N, "static_rating_N", "N", bounded=True)
+    P0 = check_positive(static_equivalent_load_N, "static_equivalent_load_N", "N", bounded=True)
+    C0, P0 = broadcast(static_rating_N=C0, static_equivalent_load_N=P0)
     return _s(C0 / P0)
 
 

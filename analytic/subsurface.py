@@ -111,7 +111,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import special
 
-from ._checks import as_array, check_choice, check_nonnegative, check_range
+from ._checks import as_array, broadcast, check_choice, check_nonnegative, check_range
 from .hertz import HertzContact, LineContact, _scalar
 
 __all__ = [
@@ -598,8 +598,9 @@ def axis_stress(c: HertzContact, z, nu=0.3) -> StressState:
     (-0.180353, -0.8)
     """
     _check_contact(c)
-    z = check_nonnegative(z, "z", "m")
+    z = check_nonnegative(z, "z", "m", bounded=True, tiny_ok=True)
     nu = _check_nu(nu)
+    broadcast(z=z, nu=nu, c=np.asarray(c.b))
     axn, ayn, b, p, nu = _axis_inputs(c, nu)
     axn, ayn, b, p, nu, z = np.broadcast_arrays(axn, ayn, b, p, nu, z)
     loaded = b > 0
@@ -865,10 +866,11 @@ def stress(c: HertzContact, x, y, z, nu=0.3) -> StressState:
     (-0.213891, 0.213891)
     """
     _check_contact(c)
-    x = as_array(x, "x")
-    y = as_array(y, "y")
-    z = check_nonnegative(z, "z", "m")
+    x = as_array(x, "x", bounded=True, tiny_ok=True, unit="m")
+    y = as_array(y, "y", bounded=True, tiny_ok=True, unit="m")
+    z = check_nonnegative(z, "z", "m", bounded=True, tiny_ok=True)
     nu = _check_nu(nu)
+    broadcast(x=x, y=y, z=z, nu=nu, c=np.asarray(c.b))
     axn, ayn, b, p, nu = _axis_inputs(c, nu)
     arrs = np.broadcast_arrays(x, y, z, axn, ayn, b, p, nu)
     shape = arrs[0].shape
@@ -955,9 +957,10 @@ def line_stress(lc: LineContact, x, z, nu=0.3) -> StressState:
     """
     if not isinstance(lc, LineContact):
         raise TypeError(f"lc must be a LineContact; got {type(lc).__name__}")
-    x = as_array(x, "x")
-    z = check_nonnegative(z, "z", "m")
+    x = as_array(x, "x", bounded=True, tiny_ok=True, unit="m")
+    z = check_nonnegative(z, "z", "m", bounded=True, tiny_ok=True)
     nu = _check_nu(nu)
+    broadcast(x=x, z=z, nu=nu, lc=np.asarray(lc.b))
     b, p = np.asarray(lc.b, float), np.asarray(lc.p_max, float)
     x, z, b, p, nu = np.broadcast_arrays(x, z, b, p, nu)
     loaded = b > 0

@@ -240,3 +240,70 @@ def test_teach_subsurface_writes_png(tmp_path):
     assert r.exit_code == 0, r.output
     assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert "max shear" in r.output and "0.31" in r.output
+
+
+# ------------------------------------------------------------------ issue 14: nothing that cannot fail
+@pytest.mark.parametrize("expected, field", [
+    ('expected.a = { value = "0.3244 mm", atol = "inf m", reason = "r" }', "expected.a.atol"),
+    ('expected.a = { value = "1e400 m", rtol = 1e-3, reason = "r" }', "expected.a.value"),
+    ('expected.a = { min = "-1e999 m", reason = "r" }', "expected.a.min"),
+    ('expected.a = { max = "inf m", reason = "r" }', "expected.a.max"),
+    ('expected.a = { value = "nan m", rtol = 1e-3, reason = "r" }', "expected.a.value"),
+    ('expected.k = { value = nan, rtol = 1e-3, reason = "r" }', "expected.k.value"),
+    ('expected.k = { max = inf, reason = "r" }', "expected.k.max"),
+])
+def test_expectations_that_cannot_fail_are_refused(expected, field):
+    """Issue 14 item 0: these loaded and then passed whatever the code computed."""
+    with pytest.raises(CaseFileError, match="must be a finite number") as exc:
+        parse_cases(case("c", expected), "inf.toml")
+    assert field in str(exc.value) and str(exc.value).startswith("inf.toml")
+
+
+def test_bound_with_min_above_max_is_refused():
+    with pytest.raises(CaseFileError, match="min must not exceed max"):
+        parse_cases(case("c", 'expected.k = { min = 2.0, max = 1.0, reason = "r" }'))
+
+
+@pytest.mark.parametrize("bad", [math.nan, math.inf, -math.inf])
+@pytest.mark.parametrize("key", ["value", "rtol", "atol"])
+def test_baseline_entries_must_be_finite(tmp_path, key, bad):
+    """Issue 14 item 0: a NaN or Infinity entry compared as 'unchanged' forever."""
+    (c,) = parse_cases(case("base"))
+    run = run_cases([c], serial=True)
+    path = write_baseline(run, tmp_path / "b.json")
+    data = json.loads(path.read_text())
+    data["values"]["base"]["a"][key] = bad
+    path.write_text(json.dumps(data))          # Python writes NaN / Infinity tokens
+    with pytest.raises(ValueError, match=rf"values\['base'\]\['a'\]\.{key} must be a finite"):
+        compare_baseline(run, path)
+
+
+def test_baseline_tolerances_in_range(tmp_path):
+    (c,) = parse_cases(case("base"))
+    run = run_cases([c], serial=True)
+    path = write_baseline(run, tmp_path / "b.json")
+    original = path.read_text()
+    for key, bad, msg in (("rtol", 1.5, r"rtol must be in \[0, 1\)"),
+                          ("atol", -1e-9, "atol must be >= 0")):
+        data = json.loads(original)
+        data["values"]["base"]["a"][key] = bad
+        path.write_text(json.dumps(data))
+        with pytest.raises(ValueError, match=msg):
+            compare_baseline(run, path)
+
+
+@pytest.mark.parametrize("content", [bytes(range(256)) * 4, b"\x89PNG\r\n\x1a\n\x00\x00",
+                                     b"not json at all", b"[1, 2, 3]"])
+def test_cli_baseline_that_is_not_a_results_json(tmp_path, content):
+    """Issue 14 item 10: a binary --baseline printed a UnicodeDecodeError text."""
+    from ballrace.cli import app
+
+    p = tmp_path / "c.toml"
+    p.write_text(case("one"))
+    b = tmp_path / "picture.png"
+    b.write_bytes(content)
+    r = CliRunner().invoke(app, ["validate", "--cases", str(p), "--serial", "--baseline", str(b)])
+    assert r.exit_code == 2, r.output
+    out = " ".join(r.output.split())
+    assert "picture.png" in out and "is not a results JSON" in out, r.output
+    assert "UnicodeDecodeError" not in r.output and "Traceback" not in r.output

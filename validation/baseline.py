@@ -12,7 +12,10 @@ Tolerances: analytic values ``rtol = 1e-9`` (double-precision iterations converg
 ~1e-12; this survives BLAS and platform differences); finite-element values
 ``rtol = 1e-4`` (direct-solver round-off and mesher differences between machines);
 ``atol = 1e-12`` in SI units for values that are zero.  They are stored in the file, so
-a baseline can be loosened by hand for a specific value.
+a baseline can be loosened by hand for a specific value.  Loading checks every entry:
+values and tolerances must be finite numbers (a NaN or Infinity entry, which Python's
+JSON reader accepts, would compare as "unchanged" forever), ``0 <= rtol < 1`` and
+``atol >= 0``; a file that is not JSON text (a binary file, say) is refused with its name.
 
 Examples
 --------
@@ -98,14 +101,58 @@ def write_baseline(run, path) -> Path:
 
 
 def load_baseline(path) -> dict:
-    """Read a baseline file (or a report's results.json, which embeds one)."""
-    data = json.loads(Path(path).read_text(encoding="utf-8"))
+    """Read a baseline file (or a report's results.json, which embeds one).
+
+    Raises
+    ------
+    OSError
+        The file cannot be read.
+    ValueError
+        The file is not a results/baseline JSON, or an entry is not a finite value with
+        finite tolerances; the message names the file (and the case and output).
+    """
+    path = Path(path)
+    raw = path.read_bytes()
+    try:
+        data = json.loads(raw.decode("utf-8"))
+    except UnicodeDecodeError:
+        raise ValueError(f"{path} is not a results JSON (not UTF-8 text: a binary file?)") \
+            from None
+    except json.JSONDecodeError as exc:
+        raise ValueError(f"{path} is not a results JSON ({exc})") from None
+    if not isinstance(data, dict):
+        raise ValueError(f"{path} is not a results JSON (top level is a "
+                         f"{type(data).__name__}, not an object)")
     if data.get("format") != FORMAT:
         if isinstance(data.get("baseline"), dict) and data["baseline"].get("format") == FORMAT:
-            return data["baseline"]
-        raise ValueError(f"not a ballrace baseline (format {data.get('format')!r}, "
-                         f"expected {FORMAT!r})")
+            data = data["baseline"]
+        else:
+            raise ValueError(f"{path}: not a ballrace baseline (format {data.get('format')!r}, "
+                             f"expected {FORMAT!r})")
+    _check_values(data.get("values"), path)
     return data
+
+
+def _check_values(values, path) -> None:
+    """Every entry {"value", "rtol", "atol"} holds finite numbers in range."""
+    if not isinstance(values, dict):
+        raise ValueError(f"{path}: 'values' must be an object {{case: {{output: entry}}}}")
+    for cid, outs in values.items():
+        if not isinstance(outs, dict):
+            raise ValueError(f"{path}: values[{cid!r}] must be an object {{output: entry}}")
+        for name, spec in outs.items():
+            where = f"{path}: values[{cid!r}][{name!r}]"
+            if not isinstance(spec, dict) or set(spec) != {"value", "rtol", "atol"}:
+                raise ValueError(f"{where} must be {{\"value\", \"rtol\", \"atol\"}}; "
+                                 f"got {spec!r}")
+            for key in ("value", "rtol", "atol"):
+                v = spec[key]
+                if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+                    raise ValueError(f"{where}.{key} must be a finite number; got {v!r}")
+            if not 0 <= spec["rtol"] < 1:
+                raise ValueError(f"{where}.rtol must be in [0, 1); got {spec['rtol']!r}")
+            if spec["atol"] < 0:
+                raise ValueError(f"{where}.atol must be >= 0; got {spec['atol']!r}")
 
 
 def compare_baseline(run, path) -> Drift:

@@ -314,9 +314,17 @@ def run_cases(cases: Iterable[Case], *, fem: str = "quick", serial: bool = False
         from . import distributed
 
         if client is None:
-            own_client = distributed.make_client(scheduler=scheduler, workers=workers)
+            try:
+                own_client = distributed.make_client(scheduler=scheduler, workers=workers)
+            except distributed.SchedulerError as exc:
+                log.error("%s", exc)
+                for case in remote:
+                    done(_result(case, "error", f"not run: {exc}"))
+                remote = []
+                sched_name = f"dask {scheduler} (unavailable)"
             client = own_client
-        sched_name = distributed.describe(client)
+        if remote:
+            sched_name = distributed.describe(client)
         for case in remote:
             if on_start:
                 on_start(case)
@@ -339,20 +347,7 @@ def run_cases(cases: Iterable[Case], *, fem: str = "quick", serial: bool = False
                 on_start(case)
             done(_run_local(case, _inputs_for(case, fem, artifact_dir)))
         if futures:
-            from dask.distributed import as_completed
-
-            for fut in as_completed(list(futures)):
-                case, pts = futures[fut]
-                try:
-                    if pts is None:
-                        out, dt = fut.result()
-                        done(_finish(case, out, dt, artifacts=_artifacts(out)))
-                    else:
-                        outs, dt = fut.result()
-                        done(_finish(case, reduce_points(case, outs), dt,
-                                     points=_points(pts, outs)))
-                except Exception as exc:  # the calculation raised on a worker
-                    done(_result(case, "error", _error_message(exc)))
+            _collect(client, futures, done)
     finally:
         if own_client is not None:
             from . import distributed
@@ -362,6 +357,65 @@ def run_cases(cases: Iterable[Case], *, fem: str = "quick", serial: bool = False
     ordered = tuple(results[c.id] for c in cases)
     return Run(results=ordered, fem=fem, started=t_start, duration=time.perf_counter() - t0,
                scheduler=sched_name)
+
+
+def _collect(client, futures: dict, done: Callable, poll: float = 1.0) -> None:
+    """Report each future's case as it finishes; never wait on a cluster without workers.
+
+    A task lost with a dying worker is re-run by dask on another worker; one that dask gives
+    up on (``KilledWorker``) or that raised is an ``error``.  When the cluster has had no
+    worker at all for :func:`distributed.timeout` seconds, the cases still outstanding are
+    reported as errors ("lost") and their futures cancelled: never a pass, never a hang.
+    Futures that dask cancels (the scheduler connection was lost) are errors too.
+    """
+    from dask.distributed import wait
+
+    from . import distributed
+
+    limit = distributed.timeout()
+    pending = set(futures)
+    idle_since = None
+    while pending:
+        try:
+            finished, pending = wait(pending, timeout=poll, return_when="FIRST_COMPLETED")
+        except TimeoutError:
+            finished = set()
+        except Exception as exc:  # noqa: BLE001 - futures cancelled (scheduler connection lost)
+            finished = {f for f in pending if f.done()}
+            pending = pending - finished
+            if not finished:
+                msg = f"lost: {type(exc).__name__}: {' '.join(str(exc).split())}"
+                for fut in sorted(pending, key=lambda f: futures[f][0].id):
+                    done(_result(futures[fut][0], "error", msg))
+                return
+        for fut in finished:
+            case, pts = futures[fut]
+            try:
+                if pts is None:
+                    out, dt = fut.result()
+                    done(_finish(case, out, dt, artifacts=_artifacts(out)))
+                else:
+                    outs, dt = fut.result()
+                    done(_finish(case, reduce_points(case, outs), dt, points=_points(pts, outs)))
+            except Exception as exc:  # the calculation raised on a worker, or dask gave up
+                done(_result(case, "error", _error_message(exc)))
+        if finished or not pending:
+            idle_since = None
+            continue
+        if distributed.n_workers(client) > 0:
+            idle_since = None
+            continue
+        now = time.monotonic()
+        idle_since = idle_since or now
+        if now - idle_since < limit:
+            continue
+        msg = (f"lost: the dask cluster has had no workers for {limit:g} s (all died or "
+               "none connected); the case did not run to completion")
+        log.error("%s; %d case(s) outstanding", msg, len(pending))
+        for fut in sorted(pending, key=lambda f: futures[f][0].id):
+            done(_result(futures[fut][0], "error", msg))
+        client.cancel(list(pending))
+        pending = set()
 
 
 def _gather_sweep(chunks):

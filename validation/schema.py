@@ -24,7 +24,9 @@ replaced).  One case::
 
 Instead of ``value`` an expectation may give a bound, ``max = ...`` and/or
 ``min = ...`` (the approximations' documented error bounds).  Every tolerance or bound
-needs a ``reason``.  A ``[case.sweep]`` table turns a case into a parameter sweep: each
+needs a ``reason``.  Values, tolerances and bounds must be finite numbers (``"inf m"``,
+``"1e400 m"``, which overflows to inf, or ``"-1e999 m"`` would make an expectation that
+cannot fail).  A ``[case.sweep]`` table turns a case into a parameter sweep: each
 key is an input with a list of values (or ``{linspace = [lo, hi, n]}`` /
 ``{logspace = [lo_exp, hi_exp, n]}``), the calculation runs on the Cartesian grid
 (through dask), and ``[case.reduce]`` maps new output names to ``"max_abs(name)"``,
@@ -264,6 +266,14 @@ def _quantity(value, dimension: str, where: str, *, allow_inf: bool = False) -> 
         raise CaseFileError(str(exc)) from None
 
 
+def _finite(value, dimension: str, where: str) -> float:
+    """An expected value, tolerance or bound: a finite number (inf would never fail)."""
+    v = _quantity(value, dimension, where)
+    if not math.isfinite(v):
+        raise _err(where, f"must be a finite number; got {value!r} (= {v!r} in SI units)")
+    return v
+
+
 def _param_value(p: registry.Param, value, where: str):
     if p.dimension == "str":
         if not isinstance(value, str):
@@ -331,14 +341,16 @@ def _parse_expectation(name: str, spec, dimension: str, where: str) -> Expectati
         rtol = spec.get("rtol", 0.0)
         if isinstance(rtol, bool) or not isinstance(rtol, (int, float)) or not 0 <= rtol < 1:
             raise _err(where + ".rtol", f"must be a number in [0, 1); got {rtol!r}")
-        atol = _quantity(spec["atol"], dimension, where + ".atol") if "atol" in spec else 0.0
+        atol = (_finite(spec["atol"], dimension, where + ".atol") if "atol" in spec else 0.0)
         if atol < 0:
             raise _err(where + ".atol", f"must be >= 0; got {spec['atol']!r}")
         return Expectation(name=name, dimension=dimension, reason=reason.strip(),
-                           value=_quantity(spec["value"], dimension, where + ".value"),
+                           value=_finite(spec["value"], dimension, where + ".value"),
                            rtol=float(rtol), atol=atol, text=str(spec["value"]))
-    lo = _quantity(spec["min"], dimension, where + ".min") if "min" in spec else None
-    hi = _quantity(spec["max"], dimension, where + ".max") if "max" in spec else None
+    lo = _finite(spec["min"], dimension, where + ".min") if "min" in spec else None
+    hi = _finite(spec["max"], dimension, where + ".max") if "max" in spec else None
+    if lo is not None and hi is not None and lo > hi:
+        raise _err(where, f"min must not exceed max; got min {spec['min']!r} > max {spec['max']!r}")
     text = " and ".join(x for x in (f">= {spec['min']}" if "min" in spec else "",
                                     f"<= {spec['max']}" if "max" in spec else "") if x)
     return Expectation(name=name, dimension=dimension, reason=reason.strip(), max=hi, min=lo,
