@@ -48,7 +48,7 @@ import numpy as np
 
 from ._checks import as_array, check_choice, check_nonnegative, check_positive
 from .bearing import BallBearing
-from .loaddist import ConvergenceError, ball_stiffness
+from .loaddist import MAX_APPROACH_RATIO, ConvergenceError, _Model, ball_stiffness
 
 __all__ = ["ARRANGEMENTS", "DuplexPair", "DuplexResult", "axial_load", "axial_deflection",
            "power_law_unloading_ratio"]
@@ -79,6 +79,16 @@ def _forces(bearing, da, dr):
     Fa = np.sum(Q * np.sin(b), axis=-1)
     Fr = np.sum(Q * np.cos(b) * np.cos(psi), axis=-1)
     return Fa, Fr, Q, b
+
+
+def _approach(bearing, da, dr):
+    """Largest ball approach s - A of one bearing at ring displacements (da, dr) [m]."""
+    A = bearing.curvature_center_distance
+    bf = bearing.free_contact_angle
+    psi = bearing.azimuths(0.0)
+    z = A * np.sin(bf) + np.asarray(da, float)[..., None]
+    x = A * np.cos(bf) + np.asarray(dr, float)[..., None] * np.cos(psi)
+    return float(np.max(np.hypot(x, z) - A))
 
 
 def axial_load(bearing: BallBearing, axial_deflection, radial_deflection=0.0):
@@ -418,6 +428,12 @@ class DuplexPair:
             log.info("duplex: no preload and no axial load; the radial load alone sets "
                      "the axial position")
         A = self.bearing.curvature_center_distance
+        cap = 2.0 * _Model.of(self.bearing).capacity
+        if max(abs(Fa) + P, Fr) > cap:
+            raise ValueError(
+                f"Fa={Fa!r} N, Fr={Fr!r} N (preload {P:g} N) are beyond the load-deflection "
+                f"range of the pair: its {2 * self.bearing.n_balls} balls carry at most "
+                f"{cap:.4g} N at a contact approach of {MAX_APPROACH_RATIO:g} D")
         scale = max(abs(Fa), Fr, P, 1.0)                 # 1 N floor: tiny loads
         target = np.array([Fa, Fr])
         d0 = self.preload_deflection
@@ -446,7 +462,7 @@ class DuplexPair:
                 step = np.array([-r[0] / J[0, 0] if J[0, 0] != 0 else 1e-3 * A, 0.0])
             if not np.all(np.isfinite(step)):
                 step = np.array([1e-3 * A * np.sign(-r[0] or 1.0), 0.0])
-            cap = 0.05 * A
+            cap = 0.05 * A + 0.5 * max(abs(x), abs(dr), d0)   # grows with the deflection
             big = np.max(np.abs(step))
             if big > cap:
                 step *= cap / big
@@ -464,6 +480,12 @@ class DuplexPair:
             x, dr, r = xn, drn, rn
             err = np.max(np.abs(r)) / scale
         if not err <= rtol:
+            d, _, _, Q, b = self._state(x, dr)
+            lim = MAX_APPROACH_RATIO * self.bearing.ball_diameter
+            if np.max(Q) > 0 and _approach(self.bearing, d, dr) > lim:
+                raise ValueError(f"Fa={Fa!r} N, Fr={Fr!r} N are beyond the load-deflection "
+                                 f"range of the pair: a ball approach exceeds "
+                                 f"{MAX_APPROACH_RATIO:g} D = {lim:.3g} m")
             raise ConvergenceError(f"duplex pair equilibrium did not converge: relative residual "
                                    f"{err:.3e} after {it} iterations (Fa={Fa!r} N, Fr={Fr!r} N)")
         d, Fa_b, Fr_b, Q, b = self._state(x, dr)
