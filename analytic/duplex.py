@@ -75,7 +75,10 @@ def _forces(bearing, da, dr):
     s = np.hypot(x, z)
     b = np.arctan2(z, x)
     Kn, _ = ball_stiffness(bearing, b)
-    Q = Kn * np.maximum(s - A, 0.0) ** 1.5
+    # half-torus grooves: no contact where the groove-centre line points inwards (x <= 0),
+    # whose angle is reported folded into (-pi/2, pi/2] (as in loaddist)
+    Q = np.where(x > 0, Kn * np.maximum(s - A, 0.0) ** 1.5, 0.0)
+    b = np.where(b > 0.5 * np.pi, b - np.pi, np.where(b <= -0.5 * np.pi, b + np.pi, b))
     Fa = np.sum(Q * np.sin(b), axis=-1)
     Fr = np.sum(Q * np.cos(b) * np.cos(psi), axis=-1)
     return Fa, Fr, Q, b
@@ -441,9 +444,10 @@ class DuplexPair:
         if self.arrangement == "DT":
             x = _inverse(self.bearing, 0.5 * (Fa + P)) - d0 if Fa + P > 0 else 0.0
         else:
+            # beyond the unloading load bearing 2 is off and bearing 1 carries Fa alone
             x = 0.0 if Fa == 0 else float(np.sign(Fa)) * (
-                _inverse(self.bearing, abs(Fa)) if P == 0 else min(
-                    _inverse(self.bearing, abs(Fa) + P) - d0, 2 * d0))
+                _inverse(self.bearing, abs(Fa)) - d0 if abs(Fa) >= self.unloading_load
+                else min(_inverse(self.bearing, abs(Fa) + P) - d0, d0))
         dr = 0.0
         radial_free = Fr > 0
         h = 1e-7 * A
@@ -464,15 +468,18 @@ class DuplexPair:
                 step = np.array([1e-3 * A * np.sign(-r[0] or 1.0), 0.0])
             cap = 0.05 * A + 0.5 * max(abs(x), abs(dr), d0)   # grows with the deflection
             big = np.max(np.abs(step))
+            ratio = 1.0
             if big > cap:
-                step *= cap / big
+                ratio = cap / big
+                step *= ratio
             t, f0 = 1.0, float(np.sum(r**2))
             for _ in range(50):
                 xn, drn = x + t * step[0], dr + t * step[1]
                 rn = self._pair(xn, drn) - target
                 if not radial_free:
                     rn[1] = 0.0
-                if float(np.sum(rn**2)) < (1 - 1e-4 * t) * f0:
+                # Armijo on |r|^2 for the (possibly shortened) Newton step
+                if float(np.sum(rn**2)) < (1 - 1e-4 * t * ratio) * f0:
                     break
                 t *= 0.5
             else:

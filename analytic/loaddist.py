@@ -20,7 +20,10 @@ eqs. 3.33–3.38, 3.61–3.65; Ricci 2009 eqs. 16, 22–27).  The reference conf
 x_0 = A - P_d/2 = A cos beta_f, z_0 = A sin beta_f (H&D eq. 3.61); :func:`radial` uses the
 axially centred configuration z_0 = 0 instead (H&D eq. 3.39).  The groove torus is taken
 as complete on both sides (deep-groove model): a ball may be loaded at negative contact
-angle.
+angle.  It is half a torus, though, facing the ball: a ball whose groove-centre line
+points inwards (x_j <= 0, |beta_j| > 90 deg, possible only with a clearance near 2A) is
+unloaded, and reports that line's angle folded into (-90, 90] deg.  Loads whose largest
+ball approach would exceed 0.1 D are refused as beyond the load-deflection range.
 
 Equilibrium of the inner ring (loads applied to it: Fa, Fy, Fz, My, Mz, right-handed
 moments about the bearing centre):
@@ -337,7 +340,9 @@ class _State:
         s = np.maximum(s, 1e-300)
         c, sn = x / s, z / s
         beta = np.arctan2(z, x)
-        delta = np.maximum(delta, 0.0)
+        # a ball touches only where the groove-centre line points outwards (x > 0): with
+        # x <= 0 the surfaces of both grooves face away from it (the groove is half a torus)
+        delta = np.where(x > 0, np.maximum(delta, 0.0), 0.0)
         if Kn is None:
             Kn, dlnK = _kn(model, beta)
         else:
@@ -388,7 +393,8 @@ def _jacobian(model, geo, st, arm):
 
 def _potential(model, geo, u, Kn, F):
     """Frozen-stiffness potential sum 2/5 K delta^2.5 - F.u (free DOFs), per case."""
-    d = np.maximum(geo.xz(u)[3], 0.0)
+    x, _, _, d = geo.xz(u)
+    d = np.where(x > 0, np.maximum(d, 0.0), 0.0)
     return 0.4 * (Kn * d * d * np.sqrt(d)).sum(1) - (F * u).sum(1)
 
 
@@ -434,6 +440,21 @@ def _overload(model, delta, F):
             f"0.01 D)")
 
 
+def _beyond_groove(model, geo, u, F):
+    """ValueError when Newton failed with a ball pressed past 90 deg from the groove bottom.
+
+    With x_j <= 0 and s_j > A the ball would be loaded on the far half of the groove torus,
+    which does not exist: the loads need a contact at |beta| >= 90 deg and have no
+    equilibrium in the groove (e.g. a thrust against a free-tilting ring with 3 balls).
+    """
+    x, _, _, d = geo.xz(np.asarray(u, float).reshape(1, 5))
+    if np.any((x <= 0) & (d > 0)):
+        raise ValueError(
+            f"the loads {np.asarray(F).tolist()} [N, N m] have no equilibrium within the "
+            "grooves: they need a ball contact at 90 deg or more from the groove bottom "
+            "(beyond the range of the model)")
+
+
 def _newton(model, geo, F, u0, fixed, arm, rtol, max_iter, strict=True):
     """Damped Newton for all N cases at once; returns (u (N,5), iterations (N,), ok (N,)).
 
@@ -466,6 +487,7 @@ def _newton(model, geo, F, u0, fixed, arm, rtol, max_iter, strict=True):
         if it >= max_iter:
             i = active[np.argmax(np.nan_to_num(err[active], nan=np.inf))]
             _overload(model, delta[i], F[i])
+            _beyond_groove(model, geo, u[i], F[i])
             raise ConvergenceError(
                 f"load distribution did not converge after {it} iterations: relative "
                 f"equilibrium residual {err[i]:.3e} (> rtol={rtol:g}) in load case {int(i)}; "
@@ -589,7 +611,6 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
     it = 0
     while not err <= rtol:
         if it >= max_iter:
-            _overload(model, st.delta[0], F)
             raise ConvergenceError(
                 f"load distribution did not converge after {it} iterations: relative "
                 f"equilibrium residual {err:.3e} (> rtol={rtol:g}); loads {F.tolist()}, "
@@ -813,10 +834,10 @@ def _loaded_zone(model, x0, z0, u):
 
     g0 = 0.0 if z0 > 0 else (x0 - model.A) * (x0 + model.A)
 
-    def f(psi, uu):          # s(psi) - A without cancellation (see _Geo.xz)
+    def f(psi, uu):          # s(psi) - A without cancellation (see _Geo.xz); x > 0 only
         dx = uu[:, 1:2] * np.cos(psi) + uu[:, 2:3] * np.sin(psi)
         dz = uu[:, 0:1] + model.Ri * (uu[:, 3:4] * np.sin(psi) - uu[:, 4:5] * np.cos(psi))
-        return g0 + dx * (2.0 * x0 + dx) + dz * (2.0 * z0 + dz)
+        return np.where(x0 + dx > 0, g0 + dx * (2.0 * x0 + dx) + dz * (2.0 * z0 + dz), -1.0)
 
     g = np.sort(np.concatenate([np.broadcast_to(grid, (N, grid.size)), extra[:, None]], 1), 1)
     v = f(g, u)
@@ -872,9 +893,8 @@ def _result(bearing, model, psi, x0, z0, Pd, u, applied, imposed, arm, iters, sh
 
     Raises ConvergenceError if any value is not finite or the relative equilibrium residual
     exceeds max(_FLOOR_CAP, 100 rtol); ValueError if a ball approach is beyond the
-    load-deflection range or a loaded ball's contact angle leaves (-pi/2, pi/2) (the inner
-    groove would pass through the ball).  Unloaded balls report the angle of the line of
-    groove centres folded into (-pi/2, pi/2] (the line, not its direction).
+    load-deflection range.  Unloaded balls report the angle of the line of groove centres
+    folded into (-pi/2, pi/2] (the line, not its direction).
     """
     st = _State(model, _Geo(model, psi, x0, z0), u, arm) if state is None else state
     Z = model.Z
@@ -896,15 +916,8 @@ def _result(bearing, model, psi, x0, z0, Pd, u, applied, imposed, arm, iters, sh
             f"{what} did not reach equilibrium: relative residual {rel[i]:.3e} "
             f"(> {tol:g}) after {int(np.max(iters, initial=0))} iterations in load case {i}; "
             f"loads {app[i].tolist()}, displacements {u[i].tolist()}")
-    beta = st.beta.copy()
-    loaded = st.Q > 0
-    out = np.abs(beta) >= 0.5 * np.pi
-    if np.any(loaded & out):
-        i, j = (int(k) for k in np.argwhere(loaded & out)[0])
-        raise ValueError(
-            f"the loads {app[i].tolist()} [N, N m] are beyond the range of the model: ball "
-            f"{j + 1} would be loaded at contact angle {beta[i, j]:.4g} rad, outside "
-            "(-pi/2, pi/2) (the inner groove would pass through the ball)")
+    beta = st.beta.copy()                         # loaded balls have x > 0: |beta| < pi/2
+    out = np.abs(beta) > 0.5 * np.pi
     beta = np.where(out, beta - np.copysign(np.pi, beta), beta)
     beta = np.where(beta <= -0.5 * np.pi, beta + np.pi, beta)
     return LoadDistribution(
@@ -1064,7 +1077,9 @@ def _retry(model, geo, L, u0, imposed, arm, rtol, max_iter, ok, u, iters):
 
     With the contact arm, straight from the start (the groove-arm solution can lie in
     another basin: an eccentric thrust carried by reverse contacts); then load
-    continuation, a quarter of the load at a time from the previous solution.  Raises
+    continuation from the previous solution: for loads below 1e-4 of the capacity down
+    from 1e-3 of it by decades (a light load with clearance: the rigid ring must find its
+    seat while the balls hardly resist), otherwise up a quarter of the load at a time.  Raises
     ConvergenceError (or ValueError for an overload) for what still fails.
     """
     bad = np.flatnonzero(~ok)
@@ -1081,16 +1096,24 @@ def _retry(model, geo, L, u0, imposed, arm, rtol, max_iter, ok, u, iters):
                                    max_iter, strict=False)
             ub[todo[okk]], done[todo[okk]] = uu[okk], True
             ib[todo] += it2
+    sc = np.array([1.0, 1.0, 1.0, model.Ri, model.Ri])
     for k in np.flatnonzero(~done):
         uk = zero[k][None].copy()
-        for frac in (0.25, 0.5, 0.75, 1.0):
+        # light loads: down from 1e-3 of the capacity by decades (the contact geometry then
+        # hardly changes from one decade to the next); otherwise up in quarters
+        k0 = 1e-3 * model.capacity / max(float(np.abs(Lb[k] / sc).max()), 1e-300)
+        n = int(np.ceil(np.log10(k0))) if k0 > 10.0 else 0
+        fracs = np.logspace(n, 0.0, n + 1) if n else (0.25, 0.5, 0.75, 1.0)
+        for i, frac in enumerate(fracs):
+            last = i == len(fracs) - 1
             Lk = Lb[k][None] * frac
-            uk, itk, _ = _newton(model, geo, Lk, uk, fx[k][None], "groove", rtol, max_iter,
-                                 strict=frac == 1.0 and arm == "groove")
-            ib[k] += itk[0]
+            if arm == "groove" or i == 0:
+                uk, itk, _ = _newton(model, geo, Lk, uk, fx[k][None], "groove", rtol, max_iter,
+                                     strict=last and arm == "groove")
+                ib[k] += itk[0]
             if arm == "contact":
                 uk, itk, _ = _newton(model, geo, Lk, uk, fx[k][None], "contact", rtol,
-                                     max_iter, strict=frac == 1.0)
+                                     max_iter, strict=last)
                 ib[k] += itk[0]
         ub[k] = uk[0]
     u, iters = u.copy(), iters.copy()
@@ -1205,7 +1228,10 @@ def thrust(bearing: BallBearing, Fa, *, rtol: float = 1e-13, max_iter: int = 100
         \delta_t = \frac{A\sin(\beta - \beta_f)}{\cos\beta}
 
     solved for beta by safeguarded Newton–Raphson with K_n evaluated (exact Hertz) at
-    beta (Hamrock & Dowson 1981 eqs. 3.50–3.56, 3.60).  Each ball carries
+    beta (Hamrock & Dowson 1981 eqs. 3.50–3.56, 3.60), then polished by the Newton of
+    :func:`solve` with radial displacement and tilt held at zero (near beta_f = 90 deg
+    eq. 3.60 loses its digits, and at light loads a tolerance on beta is none on the
+    thrust); the result's equilibrium is checked like every solver's.  Each ball carries
     Q = F_a / (Z sin beta).  If shoulder heights are given, ``result.truncated(race)``
     reports whether the contact ellipse runs over the shoulder (H&D eqs. 3.57–3.58).
 
