@@ -94,6 +94,16 @@ def _approach(bearing, da, dr):
     return float(np.max(np.hypot(x, z) - A))
 
 
+def _past_groove(bearing, da, dr):
+    """True if a ball is pressed past 90 deg (x <= 0 with s > A) at displacements (da, dr)."""
+    A = bearing.curvature_center_distance
+    bf = bearing.free_contact_angle
+    psi = bearing.azimuths(0.0)
+    z = A * np.sin(bf) + np.asarray(da, float)[..., None]
+    x = A * np.cos(bf) + np.asarray(dr, float)[..., None] * np.cos(psi)
+    return bool(np.any((x <= 0) & (np.hypot(x, z) > A)))
+
+
 def axial_load(bearing: BallBearing, axial_deflection, radial_deflection=0.0):
     r"""Axial load of one bearing at given axial and radial ring displacements [N].
 
@@ -456,6 +466,8 @@ class DuplexPair:
         it = 0
         while err > rtol and it < max_iter:
             it += 1
+            # difference step below the deflections (light loads deflect less than 1e-7 A)
+            h = 1e-7 * min(A, max(abs(x), abs(dr), d0, 1e-6 * A))
             J = self._jacobian(x, dr, h)
             if radial_free:
                 try:
@@ -493,6 +505,10 @@ class DuplexPair:
                 raise ValueError(f"Fa={Fa!r} N, Fr={Fr!r} N are beyond the load-deflection "
                                  f"range of the pair: a ball approach exceeds "
                                  f"{MAX_APPROACH_RATIO:g} D = {lim:.3g} m")
+            if _past_groove(self.bearing, d, dr):
+                raise ValueError(f"Fa={Fa!r} N, Fr={Fr!r} N have no equilibrium within the "
+                                 "grooves: they need a ball contact at 90 deg or more from "
+                                 "the groove bottom (beyond the range of the model)")
             raise ConvergenceError(f"duplex pair equilibrium did not converge: relative residual "
                                    f"{err:.3e} after {it} iterations (Fa={Fa!r} N, Fr={Fr!r} N)")
         d, Fa_b, Fr_b, Q, b = self._state(x, dr)

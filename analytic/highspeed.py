@@ -803,7 +803,8 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
     ConvergenceError
         If the equilibrium is not found (the message gives residual and iterations).
     ValueError
-        For invalid arguments (named in the message).
+        For invalid arguments (named in the message), and for loads beyond the
+        load-deflection range (as :func:`ballrace.analytic.loaddist.solve`).
 
     References
     ----------
@@ -850,6 +851,8 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
     if friction_coefficient is not None:
         mu = float(check_positive(friction_coefficient, "friction_coefficient", "-"))
     rtol = float(check_range(rtol, "rtol", 0.0, 1e-3, high_inclusive=True, unit="-"))
+    from .loaddist import _check_loads, _Model as _StaticModel
+    _check_loads(_StaticModel.of(bearing), L[None])     # overload: the static model's words
     model = _Model.of(bearing)
     psi = bearing.azimuths(0.0)
     Z = model.Z

@@ -480,7 +480,16 @@ def _newton(model, geo, F, u0, fixed, arm, rtol, max_iter, strict=True):
     active = np.flatnonzero(~(err <= rtol))
     it = 0
     conv = np.ones(N, dtype=bool)
+    best_u, best_err = u.copy(), np.where(np.isnan(err), np.inf, err)
+    cap = max(_FLOOR_CAP, 100.0 * rtol)
     while active.size:
+        if it >= max_iter:
+            # a residual at round-off level is convergence: take the best iterate
+            fine = active[best_err[active] <= cap]
+            u[fine], err[fine] = best_u[fine], best_err[fine]
+            active = active[best_err[active] > cap]
+            if not active.size:
+                break
         if it >= max_iter and not strict:
             conv[active] = False
             break
@@ -488,10 +497,16 @@ def _newton(model, geo, F, u0, fixed, arm, rtol, max_iter, strict=True):
             i = active[np.argmax(np.nan_to_num(err[active], nan=np.inf))]
             _overload(model, delta[i], F[i])
             _beyond_groove(model, geo, u[i], F[i])
+            dm_ = float(delta[i].max())
+            rnd = 20.0 * np.finfo(float).eps * float(np.abs(u[i] * sc).max()) / dm_ \
+                if dm_ > 0 else np.inf
             raise ConvergenceError(
                 f"load distribution did not converge after {it} iterations: relative "
-                f"equilibrium residual {err[i]:.3e} (> rtol={rtol:g}) in load case {int(i)}; "
-                f"loads {F[i].tolist()}, displacements {u[i].tolist()}")
+                f"equilibrium residual {err[i]:.3e} (best {best_err[i]:.3e}; > rtol={rtol:g}) "
+                f"in load case {int(i)}; loads {F[i].tolist()}, displacements "
+                f"{u[i].tolist()}" + (f" (round-off limit here ~{rnd:.1e}: the largest ball "
+                                      "approach is tiny against the ring displacement)"
+                                      if rnd > 0.1 * best_err[i] else ""))
         it += 1
         a = active
         ua, Ra, fx = u[a], Rs[a], fixed[a]
@@ -561,6 +576,8 @@ def _newton(model, geo, F, u0, fixed, arm, rtol, max_iter, strict=True):
             log.debug("load distribution: %d cases stopped at the round-off floor (max %.2e)",
                       int(floor.sum()), float(en[floor].max()))
         Rs[a], err[a] = Rn, en
+        better = en < best_err[a]
+        best_u[a[better]], best_err[a[better]] = unew[better], en[better]
         J[a], Kn[a], delta[a], qmax[a] = snew.J, snew.Kn, snew.delta, snew.Q.max(1)
         active = a[~(en <= rtol) & ~floor]
     if it:
@@ -608,9 +625,13 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
     u = u0[0].copy()
     st = _State(model, geo, u[None], arm)
     R, err, qmax = residual(st)
+    best = (err if err == err else np.inf, u, st)
     it = 0
     while not err <= rtol:
         if it >= max_iter:
+            if best[0] <= max(_FLOOR_CAP, 100.0 * rtol):   # round-off level: the best iterate
+                err, u, st = best
+                break
             raise ConvergenceError(
                 f"load distribution did not converge after {it} iterations: relative "
                 f"equilibrium residual {err:.3e} (> rtol={rtol:g}); loads {F.tolist()}, "
@@ -656,6 +677,8 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
         fl = float(_floor(rtol, float(snew.delta.max()), float(np.abs(unew * sc).max())))
         floor = fl >= en > 0.5 * err
         u, st, R, err, qmax = unew, snew, Rn, en, qn
+        if err < best[0]:
+            best = (err, u, st)
         if floor and not err <= rtol:
             log.debug("load distribution: stopped at the round-off floor (%.2e)", err)
             break
@@ -869,7 +892,7 @@ def _loads_array(Fa, Fy, Fz, My, Mz):
     return np.stack(b, axis=-1)
 
 
-def _check_loads(model, L, arm_ok=True):
+def _check_loads(model, L):
     """ValueError if applied loads (N, 5) exceed what Z balls can carry in the model's range.
 
     Every component of the resultant is at most sum Q_j <= Z K_max (0.1 D)^1.5 (moments
@@ -986,7 +1009,14 @@ def solve(bearing: BallBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *, displ
     ------
     ConvergenceError
         If the equilibrium residual is not below ``rtol`` after ``max_iter`` iterations
-        (the message gives the residual, the iteration count and the load case).
+        (the message gives the residual, the iteration count and the load case), after a
+        second attempt by load continuation; and if what would be returned is not finite
+        or has a relative residual above max(1e-9, 100 rtol) (never returned).
+    ValueError
+        For invalid arguments (named in the message); for loads beyond the
+        load-deflection range (a ball approach above :data:`MAX_APPROACH_RATIO` D, or any
+        load component above Z K_max (0.1 D)^1.5); and when Newton fails with a ball
+        pressed past 90 deg from the groove bottom (no equilibrium within the grooves).
 
     References
     ----------

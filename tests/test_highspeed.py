@@ -392,3 +392,12 @@ def test_issue14_item3_outer_ring_rotation_without_inner_speed():
     # the cage turns with the outer ring at about (1 + D/d_m)/2 of its speed
     loaded = r.outer_loads > 0
     assert np.allclose(r.orbital_speed[loaded] / 66.1, 0.5 * (1 + 1.62 / 10.5), rtol=0.02)
+
+
+def test_issue14_item5_overload_reported_like_the_static_solver():
+    brg = ballrace.BallBearing(22.225e-3, 16, 125.26e-3, 0.5232, 0.5232,
+                               free_contact_angle=np.radians(40))
+    with pytest.raises(ValueError, match="beyond the load-deflection range"):
+        hs.solve(brg, Fa=1e9, speed_inner=1000.0)
+    with pytest.raises(ValueError, match="beyond the load-deflection range"):
+        ld.solve(brg, Fa=1e9)
