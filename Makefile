@@ -6,7 +6,7 @@ STAMP  := $(VENV)/.installed
 export PYVISTA_OFF_SCREEN := true
 export MPLBACKEND := Agg
 
-.PHONY: all venv validate test test-fem test-all bench docs test-docs clean
+.PHONY: all venv validate test test-fem test-all bench docs test-docs fuzz clean
 
 all: test
 
@@ -48,6 +48,15 @@ test-fem: $(STAMP)
 
 test-all: $(STAMP)
 	$(BIN)/python -m pytest -q
+
+## Long fuzz run of the solvers (tests/test_fuzz.py): 10^4 fresh random cases for the static
+## load distribution, fewer for the slower solvers; summary (cases, refusals, convergence
+## failures, worst residual per entry point) in .hypothesis/fuzz-report.jsonl
+fuzz: $(STAMP)
+	@mkdir -p .hypothesis && rm -f .hypothesis/fuzz-report.jsonl
+	HYPOTHESIS_PROFILE=fuzz BALLRACE_FUZZ_REPORT=.hypothesis/fuzz-report.jsonl \
+	  $(BIN)/python -m pytest tests/test_fuzz.py -q -p no:cacheprovider; \
+	  status=$$?; cat .hypothesis/fuzz-report.jsonl; exit $$status
 
 ## Benchmarks (by hand): throughput and accuracy figures
 bench: $(STAMP)

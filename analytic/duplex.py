@@ -48,7 +48,7 @@ import numpy as np
 
 from ._checks import as_array, check_choice, check_nonnegative, check_positive
 from .bearing import BallBearing
-from .loaddist import ConvergenceError, ball_stiffness
+from .loaddist import MAX_APPROACH_RATIO, ConvergenceError, _Model, ball_stiffness
 
 __all__ = ["ARRANGEMENTS", "DuplexPair", "DuplexResult", "axial_load", "axial_deflection",
            "power_law_unloading_ratio"]
@@ -75,10 +75,33 @@ def _forces(bearing, da, dr):
     s = np.hypot(x, z)
     b = np.arctan2(z, x)
     Kn, _ = ball_stiffness(bearing, b)
-    Q = Kn * np.maximum(s - A, 0.0) ** 1.5
+    # half-torus grooves: no contact where the groove-centre line points inwards (x <= 0),
+    # whose angle is reported folded into (-pi/2, pi/2] (as in loaddist)
+    Q = np.where(x > 0, Kn * np.maximum(s - A, 0.0) ** 1.5, 0.0)
+    b = np.where(b > 0.5 * np.pi, b - np.pi, np.where(b <= -0.5 * np.pi, b + np.pi, b))
     Fa = np.sum(Q * np.sin(b), axis=-1)
     Fr = np.sum(Q * np.cos(b) * np.cos(psi), axis=-1)
     return Fa, Fr, Q, b
+
+
+def _approach(bearing, da, dr):
+    """Largest ball approach s - A of one bearing at ring displacements (da, dr) [m]."""
+    A = bearing.curvature_center_distance
+    bf = bearing.free_contact_angle
+    psi = bearing.azimuths(0.0)
+    z = A * np.sin(bf) + np.asarray(da, float)[..., None]
+    x = A * np.cos(bf) + np.asarray(dr, float)[..., None] * np.cos(psi)
+    return float(np.max(np.hypot(x, z) - A))
+
+
+def _past_groove(bearing, da, dr):
+    """True if a ball is pressed past 90 deg (x <= 0 with s > A) at displacements (da, dr)."""
+    A = bearing.curvature_center_distance
+    bf = bearing.free_contact_angle
+    psi = bearing.azimuths(0.0)
+    z = A * np.sin(bf) + np.asarray(da, float)[..., None]
+    x = A * np.cos(bf) + np.asarray(dr, float)[..., None] * np.cos(psi)
+    return bool(np.any((x <= 0) & (np.hypot(x, z) > A)))
 
 
 def axial_load(bearing: BallBearing, axial_deflection, radial_deflection=0.0):
@@ -418,6 +441,12 @@ class DuplexPair:
             log.info("duplex: no preload and no axial load; the radial load alone sets "
                      "the axial position")
         A = self.bearing.curvature_center_distance
+        cap = 2.0 * _Model.of(self.bearing).capacity
+        if max(abs(Fa) + P, Fr) > cap:
+            raise ValueError(
+                f"Fa={Fa!r} N, Fr={Fr!r} N (preload {P:g} N) are beyond the load-deflection "
+                f"range of the pair: its {2 * self.bearing.n_balls} balls carry at most "
+                f"{cap:.4g} N at a contact approach of {MAX_APPROACH_RATIO:g} D")
         scale = max(abs(Fa), Fr, P, 1.0)                 # 1 N floor: tiny loads
         target = np.array([Fa, Fr])
         d0 = self.preload_deflection
@@ -425,9 +454,10 @@ class DuplexPair:
         if self.arrangement == "DT":
             x = _inverse(self.bearing, 0.5 * (Fa + P)) - d0 if Fa + P > 0 else 0.0
         else:
+            # beyond the unloading load bearing 2 is off and bearing 1 carries Fa alone
             x = 0.0 if Fa == 0 else float(np.sign(Fa)) * (
-                _inverse(self.bearing, abs(Fa)) if P == 0 else min(
-                    _inverse(self.bearing, abs(Fa) + P) - d0, 2 * d0))
+                _inverse(self.bearing, abs(Fa)) - d0 if abs(Fa) >= self.unloading_load
+                else min(_inverse(self.bearing, abs(Fa) + P) - d0, d0))
         dr = 0.0
         radial_free = Fr > 0
         h = 1e-7 * A
@@ -436,6 +466,8 @@ class DuplexPair:
         it = 0
         while err > rtol and it < max_iter:
             it += 1
+            # difference step below the deflections (light loads deflect less than 1e-7 A)
+            h = 1e-7 * min(A, max(abs(x), abs(dr), d0, 1e-6 * A))
             J = self._jacobian(x, dr, h)
             if radial_free:
                 try:
@@ -446,17 +478,20 @@ class DuplexPair:
                 step = np.array([-r[0] / J[0, 0] if J[0, 0] != 0 else 1e-3 * A, 0.0])
             if not np.all(np.isfinite(step)):
                 step = np.array([1e-3 * A * np.sign(-r[0] or 1.0), 0.0])
-            cap = 0.05 * A
+            cap = 0.05 * A + 0.5 * max(abs(x), abs(dr), d0)   # grows with the deflection
             big = np.max(np.abs(step))
+            ratio = 1.0
             if big > cap:
-                step *= cap / big
+                ratio = cap / big
+                step *= ratio
             t, f0 = 1.0, float(np.sum(r**2))
             for _ in range(50):
                 xn, drn = x + t * step[0], dr + t * step[1]
                 rn = self._pair(xn, drn) - target
                 if not radial_free:
                     rn[1] = 0.0
-                if float(np.sum(rn**2)) < (1 - 1e-4 * t) * f0:
+                # Armijo on |r|^2 for the (possibly shortened) Newton step
+                if float(np.sum(rn**2)) < (1 - 1e-4 * t * ratio) * f0:
                     break
                 t *= 0.5
             else:
@@ -464,6 +499,16 @@ class DuplexPair:
             x, dr, r = xn, drn, rn
             err = np.max(np.abs(r)) / scale
         if not err <= rtol:
+            d, _, _, Q, b = self._state(x, dr)
+            lim = MAX_APPROACH_RATIO * self.bearing.ball_diameter
+            if np.max(Q) > 0 and _approach(self.bearing, d, dr) > lim:
+                raise ValueError(f"Fa={Fa!r} N, Fr={Fr!r} N are beyond the load-deflection "
+                                 f"range of the pair: a ball approach exceeds "
+                                 f"{MAX_APPROACH_RATIO:g} D = {lim:.3g} m")
+            if _past_groove(self.bearing, d, dr):
+                raise ValueError(f"Fa={Fa!r} N, Fr={Fr!r} N have no equilibrium within the "
+                                 "grooves: they need a ball contact at 90 deg or more from "
+                                 "the groove bottom (beyond the range of the model)")
             raise ConvergenceError(f"duplex pair equilibrium did not converge: relative residual "
                                    f"{err:.3e} after {it} iterations (Fa={Fa!r} N, Fr={Fr!r} N)")
         d, Fa_b, Fr_b, Q, b = self._state(x, dr)

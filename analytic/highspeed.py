@@ -304,6 +304,12 @@ def _lambdas(outer, gyro):
     return li, lo
 
 
+def _fold(a):
+    """Angle of a line folded into (-pi/2, pi/2] [rad] (a contact normal has no sense)."""
+    a = np.where(a > 0.5 * np.pi, a - np.pi, a)
+    return np.where(a <= -0.5 * np.pi, a + np.pi, a)
+
+
 class _Balls:
     """Per-ball state: geometry, loads, kinematics, residuals and ring contributions."""
 
@@ -337,12 +343,14 @@ class _Balls:
         # An open contact has no contact angle: for the kinematics it takes the angle of
         # the line of groove centres, blended in over a deflection of 1e-5 D (loads there
         # are ~1 N or less) so that the equations stay continuous.
-        base = np.arctan2(self.A1, self.A2)
+        # (the line, not its direction: folded into (-pi/2, pi/2], so that a far-side ball
+        # of a ring displaced by more than A cos(beta_f) does not get an angle near pi)
+        base = np.arctan(self.A1 / np.where(self.A2 == 0.0, 1e-300, self.A2))
         d_ref = 1e-5 * m.D
         self.wgt_i = np.clip(self.di / d_ref, 0.0, 1.0)
         self.wgt_o = np.clip(self.do / d_ref, 0.0, 1.0)
-        self.ai_k = base + self.wgt_i * (self.ai - base)
-        self.ao_k = base + self.wgt_o * (self.ao - base)
+        self.ai_k = base + self.wgt_i * (_fold(self.ai) - base)
+        self.ao_k = base + self.wgt_o * (_fold(self.ao) - base)
         # kinematics (race control) at the current angles
         rho = m.D / m.dm
         # a ball cannot be controlled by a race it does not touch: inner control fades
@@ -644,11 +652,23 @@ def _newton(sysm, x, rtol, max_iter):
     row = np.concatenate([np.full(2 * Z, sysm.ball_sc), sysm.load_sc])
 
     def fun(xx):
-        r = sysm.scaled(sysm.residual(sysm.balls(xx)))
+        if not np.all(np.isfinite(xx)):
+            return np.full(xx.shape, 1e10)
+        with np.errstate(all="ignore"):
+            r = sysm.scaled(sysm.residual(sysm.balls(xx)))
         return r if np.all(np.isfinite(r)) else np.full(r.shape, 1e10)
 
-    sol = root(fun, x1, jac=lambda xx: sysm.jacobian(xx) * row[:, None], method="lm",
+    def jac(xx):
+        if not np.all(np.isfinite(xx)):
+            return np.eye(xx.size)
+        with np.errstate(all="ignore"):
+            J = sysm.jacobian(xx) * row[:, None]
+        return J if np.all(np.isfinite(J)) else np.eye(xx.size)
+
+    sol = root(fun, x1, jac=jac, method="lm",
                options={"xtol": 1e-15, "ftol": 1e-15, "maxiter": 50 * (x1.size + 1)})
+    if not np.all(np.isfinite(fun(sol.x))):
+        return x1, b, err, it
     x2, b2, err2, it2 = _damped_newton(sysm, sol.x, rtol, max_iter)
     log.info("highspeed: Newton stalled at %.3e; Levenberg-Marquardt (%d evaluations) then "
              "Newton: %.3e", err, sol.nfev, err2)
@@ -787,7 +807,8 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
     ConvergenceError
         If the equilibrium is not found (the message gives residual and iterations).
     ValueError
-        For invalid arguments (named in the message).
+        For invalid arguments (named in the message), and for loads beyond the
+        load-deflection range (as :func:`ballrace.analytic.loaddist.solve`).
 
     References
     ----------
@@ -836,6 +857,8 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
     if friction_coefficient is not None:
         mu = float(check_positive(friction_coefficient, "friction_coefficient", "-"))
     rtol = float(check_range(rtol, "rtol", 0.0, 1e-3, high_inclusive=True, unit="-"))
+    from .loaddist import _check_loads, _Model as _StaticModel
+    _check_loads(_StaticModel.of(bearing), L[None])     # overload: the static model's words
     model = _Model.of(bearing)
     psi = bearing.azimuths(0.0)
     Z = model.Z
@@ -916,7 +939,7 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
         log.warning("highspeed: Jones race-control choice did not settle after 8 rounds")
 
     return _result(bearing, model, psi, sysm, x, b, L, wi, wo, sysm.outer, gyroscopic, mu,
-                   total_it, F_ref, Q_ref)
+                   total_it, F_ref, Q_ref, rtol)
 
 
 def _jones_outer(bearing, b):
@@ -929,7 +952,8 @@ def _jones_outer(bearing, b):
     return mo > mi
 
 
-def _result(bearing, model, psi, sysm, x, b, L, wi, wo, outer, gyro, mu, iters, F_ref, Q_ref):
+def _result(bearing, model, psi, sysm, x, b, L, wi, wo, outer, gyro, mu, iters, F_ref, Q_ref,
+            rtol=1e-10):
     r = sysm.residual(b)
     Z = model.Z
     raw = np.concatenate([np.abs(r[:2 * Z]) if not sysm.static else np.zeros(2 * Z),
@@ -950,6 +974,12 @@ def _result(bearing, model, psi, sysm, x, b, L, wi, wo, outer, gyro, mu, iters, 
             log.warning("highspeed: friction (mu=%g) cannot resist the gyroscopic moment on "
                         "%d balls (gyroscopic pivoting)", mu, int(np.sum(slip)))
     loads = b.C.sum(axis=0)
+    arrays = (b.Qi, b.Qo, b.ai_k, b.ao_k, b.di, b.do, b.X1, b.X2, b.Fc, b.Mg, b.wc, b.wR,
+              b.beta, sr_i, sr_o, u, loads)
+    if not (all(np.all(np.isfinite(a)) for a in arrays) and res / F_ref <= max(1e-9, rtol)):
+        raise ConvergenceError(f"high-speed equilibrium: the solution is not finite or not "
+                               f"balanced (relative residual {res / F_ref:.3e}) after {iters} "
+                               "Newton iterations")
     return HighSpeedResult(
         bearing=bearing, azimuths=psi, speed_inner=wi, speed_outer=wo,
         inner_loads=b.Qi, outer_loads=b.Qo, inner_contact_angles=b.ai_k,

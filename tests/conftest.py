@@ -10,4 +10,6 @@ import os
 from hypothesis import settings
 
 settings.register_profile("ci", derandomize=True, print_blob=True)
+# long fuzz run (``make fuzz``, tests/test_fuzz.py): fresh random examples, 10^4 per test
+settings.register_profile("fuzz", max_examples=10_000, deadline=None, print_blob=True)
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "default"))

@@ -171,3 +171,16 @@ def test_pair_equilibrium_random(P, Fa, Fr, arrangement):
     scale = max(abs(Fa), Fr, P, 1.0)
     assert abs(r.axial_loads[0] - r.axial_loads[1] - Fa) < 1e-8 * scale
     assert abs(r.radial_loads.sum() - Fr) < 1e-8 * scale
+
+
+def test_issue14_item5_radial_overload_is_reported_like_the_axial_one():
+    # 3.3e7 N radial on a 5-ball pair ended with "did not converge: relative residual 0.71"
+    brg = ballrace.BallBearing(12.7e-3, 5, 40e-3, 0.52, 0.52, free_contact_angle=np.radians(25))
+    pair = dx.DuplexPair(brg, "DB", preload=100.0)
+    for kw in ({"Fr": 3.3e7}, {"Fa": 3.3e7}, {"Fa": -3.3e7, "Fr": 1e3}):
+        with pytest.raises(ValueError, match="beyond the load-deflection range of the pair"):
+            pair.solve(**kw)
+    # a heavy load inside the range still converges, and balances
+    r = pair.solve(Fr=2e5)
+    assert abs(r.radial_loads.sum() - 2e5) <= 1e-10 * 2e5
+    assert abs(r.axial_loads[0] - r.axial_loads[1]) <= 1e-10 * 2e5

@@ -375,3 +375,29 @@ def test_inner_control_light_inner_contact_converges_and_flags_slip():
     with pytest.raises(hs.ConvergenceError,
                        match=r"residual .* after \d+ Newton iterations.*control='outer'"):
         hs.solve(BRG, rtol=1e-300, **kw)
+
+def test_issue14_item3_outer_ring_rotation_without_inner_speed():
+    # 6 balls, D = 1.62 mm, P_d = 30.3 um, Fr = 175.7 N, outer ring at 66.1 rad/s, outer
+    # control, Jones's per-ball orbit: "Rx must be finite; got nan" (a far-side ball's open
+    # contact took the groove-centre line's angle near pi into the kinematics).  The issue
+    # gives no conformities; f_i = 0.505, f_o = 0.51 reproduce the NaN.
+    brg = ballrace.BallBearing(1.62e-3, 6, 10.5e-3, 0.505, 0.51, diametral_clearance=30.3e-6)
+    r = hs.solve(brg, Fr=175.7, speed_outer=66.1, control="outer", orbital="ball")
+    assert r.relative_residual < 1e-9
+    assert abs(r.loads[1] - 175.7) <= 1e-9 * 175.7
+    for a in (r.inner_contact_angles, r.outer_contact_angles, r.orbital_speed, r.spin_speed):
+        assert np.all(np.isfinite(a))
+    assert np.all(np.abs(r.inner_contact_angles) <= np.pi / 2)
+    assert np.all(np.abs(r.outer_contact_angles) <= np.pi / 2)
+    # the cage turns with the outer ring at about (1 + D/d_m)/2 of its speed
+    loaded = r.outer_loads > 0
+    assert np.allclose(r.orbital_speed[loaded] / 66.1, 0.5 * (1 + 1.62 / 10.5), rtol=0.02)
+
+
+def test_issue14_item5_overload_reported_like_the_static_solver():
+    brg = ballrace.BallBearing(22.225e-3, 16, 125.26e-3, 0.5232, 0.5232,
+                               free_contact_angle=np.radians(40))
+    with pytest.raises(ValueError, match="beyond the load-deflection range"):
+        hs.solve(brg, Fa=1e9, speed_inner=1000.0)
+    with pytest.raises(ValueError, match="beyond the load-deflection range"):
+        ld.solve(brg, Fa=1e9)
