@@ -443,7 +443,6 @@ class BallBearing:
     def eccentric_thrust(self, Fa, e, **kwargs):
         """Eccentric thrust (Ricci 2009); see :func:`ballrace.analytic.loaddist.eccentric_thrust`."""
         from .loaddist import eccentric_thrust
-        broadcast(Fa=as_array(Fa, "Fa", bounded=True), e=as_array(e, "e", bounded=True))
         return eccentric_thrust(self, Fa, e, **kwargs)
 
     def solve(self, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, **kwargs):

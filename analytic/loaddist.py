@@ -1448,7 +1448,8 @@ def eccentric_thrust(bearing: BallBearing, Fa, e, *, rtol: float = 1e-12,
     if not isinstance(bearing, BallBearing):
         raise TypeError(f"bearing must be a ballrace.BallBearing; got {type(bearing).__name__}")
     model = _Model.of(bearing)
-    F0, e0 = check_nonnegative(Fa, "Fa", "N"), check_nonnegative(e, "e", "m")
+    F0 = check_nonnegative(Fa, "Fa", "N", bounded=True, tiny_ok=True)
+    e0 = check_nonnegative(e, "e", "m")
     try:
         Fa_, e_ = np.broadcast_arrays(F0, e0)
     except ValueError:
