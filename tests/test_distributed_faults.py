@@ -295,3 +295,11 @@ def test_bad_timeout_setting_is_named(monkeypatch, value):
 def test_parse_of_the_slow_sweep():
     (c,) = parse_cases(SLOW_SWEEP)
     assert c.distributed and c.sweep.size == 40
+
+
+def test_bad_timeout_setting_makes_distributed_cases_errors(monkeypatch):
+    monkeypatch.setenv("BALLRACE_DASK_TIMEOUT", "soon")
+    run = run_cases(_sweep_cases())           # default in-process LocalCluster
+    assert {r.status for r in run.results} == {"error"}
+    assert all("BALLRACE_DASK_TIMEOUT must be a positive number" in r.message
+               for r in run.results)

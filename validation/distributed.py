@@ -68,8 +68,8 @@ def make_client(scheduler: str | None = None, workers: int | None = None):
     except ImportError as exc:  # pragma: no cover - optional extra
         raise RuntimeError("FE and sweep cases run through dask.distributed; install "
                            "ballrace[report] or pass --serial") from exc
+    wait = timeout()                     # a bad BALLRACE_DASK_TIMEOUT is refused before any run
     if scheduler:
-        wait = timeout()
         log.info("connecting to dask scheduler %s (timeout %g s)", scheduler, wait)
         try:
             client = Client(scheduler, timeout=f"{wait}s")
