@@ -413,8 +413,6 @@ KNOWN = {
     'loaddist.combined-Fr-bool-True',
     'loaddist.combined-Fr-list-[[1.0, 2.0], [3.0]]',
     'loaddist.combined-Fa-1e+308',
-    'loaddist.eccentric_thrust-Fa-1e+308',
-    'loaddist.eccentric_thrust-e-1e+308',
     'loaddist.jones_max_ball_load-Fr-1e+308',
     'loaddist.jones_max_ball_load-n_balls-2.5',
     'loaddist.jones_max_ball_load-Kn-1e+308',
@@ -430,7 +428,6 @@ KNOWN = {
     'loaddist.stribeck_max_ball_load-Fr-1e+308',
     'loaddist.stribeck_max_ball_load-n_balls-2.5',
     'loaddist.thrust-Fa-1e+308',
-    'loaddist.eccentric_thrust-Fa-e',
 }
 
 
