@@ -123,6 +123,8 @@ def check_form(s: str, name: str) -> None:
         raise ValueError(f"{name}: {s!r} contains a comma; write the decimal point as '.' and "
                          "no thousands separator (e.g. '6.35 mm')")
     m = _NUMBER.match(s)
+    if m is None and re.match(r"\s*[+-]?(inf|nan)", s, re.I):
+        raise ValueError(f"{name}: {s!r} is not a finite quantity")
     if m is None:
         raise ValueError(f"{name}: cannot parse {s!r} as a quantity: it does not start with a "
                          "number (e.g. '6.35 mm')")

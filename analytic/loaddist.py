@@ -57,7 +57,8 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from . import hertz
-from ._checks import as_array, check_choice, check_nonnegative, check_positive, check_range
+from ._checks import (as_array, broadcast, check_choice, check_nonnegative, check_positive,
+                      check_range)
 from .bearing import BallBearing
 
 __all__ = [
@@ -1450,11 +1451,7 @@ def eccentric_thrust(bearing: BallBearing, Fa, e, *, rtol: float = 1e-12,
     model = _Model.of(bearing)
     F0 = check_nonnegative(Fa, "Fa", "N", bounded=True, tiny_ok=True)
     e0 = check_nonnegative(e, "e", "m")
-    try:
-        Fa_, e_ = np.broadcast_arrays(F0, e0)
-    except ValueError:
-        raise ValueError(f"Fa and e must broadcast to one shape; got shapes {F0.shape} (Fa) "
-                         f"and {e0.shape} (e)") from None
+    Fa_, e_ = broadcast(Fa=F0, e=e0)
     e_max = 0.5 * model.dm
     if np.any(e_ >= e_max):
         bad = float(e_[e_ >= e_max].ravel()[0])
