@@ -6,7 +6,7 @@ Each case runs in its own subprocess so its peak memory (ru_maxrss) and wall tim
 its own.  Cases: ``inner-hs`` / ``inner-2b`` (ball on the inner race of the 209 bearing,
 D = 12.7 mm, d_m = 65 mm, f = 0.52, contact angle 0, Q = 4450 N; half-space / two
 elastic bodies), ``outer-hs``, ``plane-hs`` / ``plane-2b`` (ball on plane, 2000 N),
-``outer-2b``, ``ball-2b`` (two 12.7 mm balls, 2000 N), ``inner-exact`` (exact
+``outer-2b``, ``ball-2b`` / ``ball-hs`` (two 12.7 mm balls, 2000 N), ``inner-exact`` (exact
 sphere–torus gap), ``inner-hs-loads`` (three loads on one mesh and one factorisation).
 Budgets (issue 10): half-space <= 30 s and 3 GB, two bodies <= 60 s and 6 GB, each extra
 load of a list <= 1 s; accuracy: fem.TOLERANCES["standard"].
@@ -25,6 +25,7 @@ CASES = {
     "outer-hs": ("race", "outer", 4450.0, "half-space", "hertz"),
     "outer-2b": ("race", "outer", 4450.0, "two-body", "hertz"),
     "ball-2b": ("ball", None, 2000.0, "two-body", "hertz"),
+    "ball-hs": ("ball", None, 2000.0, "half-space", "hertz"),
     "plane-hs": ("plane", None, 2000.0, "half-space", "hertz"),
     "plane-2b": ("plane", None, 2000.0, "two-body", "hertz"),
     "inner-exact": ("race", "inner", 4450.0, "half-space", "exact"),

@@ -326,7 +326,11 @@ class FEResult:
     tau0, z0 : orthogonal shear |tau_xz| peak [Pa] and its depth [m] (extract.peak_fit).
     tau_x0z0 : |tau_xz| at the analytic (x0, z0) [Pa].
     max_shear, max_shear_depth, von_mises, von_mises_depth : on-axis maxima [Pa], [m].
-    n_dofs : total degrees of freedom; timings : seconds per stage; peak_rss : [bytes].
+    n_dofs : total degrees of freedom; peak_rss : [bytes].
+    timings : seconds per stage [s]: the shared ones (mesh, assemble, load_matrix,
+        factorize, solve, compliance — once per mesh, the same in every result of a load
+        list), this load's ``contact`` and ``extract``, ``per_load`` (their sum) and
+        ``total`` (shared + per_load).
     analytic : the Hertz contact; comparison : table rows (dicts).
     """
 
