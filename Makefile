@@ -6,7 +6,7 @@ STAMP  := $(VENV)/.installed
 export PYVISTA_OFF_SCREEN := true
 export MPLBACKEND := Agg
 
-.PHONY: all venv validate test test-fem test-all bench docs test-docs fuzz clean
+.PHONY: all venv cholmod validate test test-fem test-all bench docs test-docs fuzz clean
 
 all: test
 
@@ -16,23 +16,26 @@ $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip setuptools wheel
 	$(BIN)/python -m pip install --quiet -e ".[all]"
-	@# Sparse solver for the FE check (docs/fem.md): CHOLMOD needs SuiteSparse headers and
-	@# OpenBLAS from apt (root or passwordless sudo); without them fall back to pip-only
-	@# pypardiso (MKL, ~1 GB).  pyamg (in the fem extra) and SuperLU remain as last resorts.
-	@SUDO=""; [ "$$(id -u)" = 0 ] || SUDO="sudo -n"; \
-	if command -v apt-get >/dev/null 2>&1 && $$SUDO true 2>/dev/null; then \
-	  { DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq libsuitesparse-dev \
-	      libopenblas0-pthread >/dev/null 2>&1 \
-	    || { $$SUDO apt-get update -qq >/dev/null 2>&1 && \
-	         DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq libsuitesparse-dev \
-	           libopenblas0-pthread >/dev/null 2>&1; } \
-	    || echo "note: apt-get install of SuiteSparse failed"; }; \
-	else echo "note: no apt-get/root: skipping SuiteSparse (CHOLMOD)"; fi
-	@$(BIN)/python -m pip install --quiet "scikit-sparse==0.4.16" 2>/dev/null \
-	  || { echo "note: scikit-sparse (CHOLMOD) unavailable; installing pypardiso instead"; \
-	       $(BIN)/python -m pip install --quiet pypardiso \
-	       || echo "note: pypardiso unavailable; the FE check will use pyamg or SuperLU"; }
+	@echo "installed; the FE check uses pypardiso (pip, Linux/Windows x86-64) or SciPy's"
+	@echo "SuperLU; for the optional CHOLMOD speed-up run 'make cholmod' (apt, root/sudo)."
 	touch $(STAMP)
+
+## Optional FE speed-up: CHOLMOD (scikit-sparse) instead of pypardiso.  It runs
+## `apt-get install libsuitesparse-dev libopenblas0-pthread` as root (or `sudo -n`) and then
+## pip-installs scikit-sparse 0.4.16 into the venv; skip it and pypardiso is used.
+cholmod: $(STAMP)
+	@echo "make cholmod: apt-get install -y libsuitesparse-dev libopenblas0-pthread (needs root"
+	@echo "or passwordless sudo), then pip install scikit-sparse==0.4.16 (the extra fem-cholmod)."
+	@echo "Optional: skip it and the FE check uses pypardiso."
+	@SUDO=""; [ "$$(id -u)" = 0 ] || SUDO="sudo -n"; \
+	command -v apt-get >/dev/null 2>&1 || { echo "no apt-get here: install SuiteSparse by hand"; exit 1; }; \
+	$$SUDO true 2>/dev/null || { echo "neither root nor passwordless sudo: skipped"; exit 1; }; \
+	DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq libsuitesparse-dev \
+	    libopenblas0-pthread >/dev/null \
+	  || { $$SUDO apt-get update -qq >/dev/null && DEBIAN_FRONTEND=noninteractive \
+	       $$SUDO apt-get install -y -qq libsuitesparse-dev libopenblas0-pthread >/dev/null; }
+	$(BIN)/python -m pip install --quiet "scikit-sparse==0.4.16"
+	@$(BIN)/python -c "from ballrace.fem.solvers import chosen_solver as c; print('FE solver now:', c())"
 
 ## The main job: analytic reference checks (and quick FE checks), summary table, report in reports/latest/
 validate: $(STAMP)

@@ -46,41 +46,59 @@ class MeshLevel:
         grid to the mesh (what a convergence study needs: with 16 the major-axis error
         of the 209 inner race levels off at -0.19 % once the mesh is finer than the
         tents).
+    tent_floor : float
+        Smallest tent spacing in surface elements [-].  Finer tents than ~1 element
+        make the nodal pressures oscillate (inf-sup); coarser ones misrepresent the
+        Hertz pressure near the edge of the ellipse, which is what sets the
+        orthogonal-shear peak near x0: at 1.4 elements the ball-on-plane z0 was
+        -6.3 % off and tau0 +2.0 %, at 1.0 element +0.8 % and +0.4 % (n = 9,
+        docs/fem.md).  The quick level keeps 1.4: at 5 elements per semi-axis a
+        1-element tent spacing puts a pressure oscillation into the shallowest
+        stress samples.
     """
 
     n: float
     max_stretch: float = 4.0
     tents_per_axis: float = 16.0
+    tent_floor: float = 1.0
 
     def __post_init__(self):
         check_range(self.n, "n", 0.0, None, unit="-")
         check_range(self.max_stretch, "max_stretch", 1.0, None, low_inclusive=True, unit="-")
         check_positive(self.tents_per_axis, "tents_per_axis", "-", allow_inf=True)
+        check_range(self.tent_floor, "tent_floor", 0.5, None, low_inclusive=True, unit="-")
 
 
 #: Named mesh levels (:class:`MeshLevel`); ``run_case(level=MeshLevel(...))`` for others.
-LEVELS = {"quick": MeshLevel(5, 4.0), "standard": MeshLevel(9, 2.3),
+LEVELS = {"quick": MeshLevel(5, 4.0, tent_floor=1.4), "standard": MeshLevel(9, 2.3),
           "fine": MeshLevel(12, 2.0)}
 MODES = ("half-space", "two-body")
 GAPS = ("hertz", "exact")
 
 #: Relative tolerances of the comparison with Hertz / Lundberg–Palmgren, per level
-#: (issue 5 for "standard"; "quick" is a smoke level).  Depths are ill-conditioned.
+#: ("standard": issue 10, met by every half-space case and the ball on a plane in both
+#: modes, docs/fem.md; "quick" is a smoke level).
 TOLERANCES = {
-    "standard": {"a": 0.005, "b": 0.005, "p_max": 0.005, "approach": 0.01, "tau0": 0.03,
-                 "tau_x0z0": 0.03, "z0": 0.10, "max_shear": 0.03, "max_shear_depth": 0.10,
-                 "von_mises": 0.03, "von_mises_depth": 0.10},
-    "quick": {"a": 0.05, "b": 0.05, "p_max": 0.06, "approach": 0.03, "tau0": 0.12,
-              "tau_x0z0": 0.15, "z0": 0.30, "max_shear": 0.12, "max_shear_depth": 0.30,
-              "von_mises": 0.12, "von_mises_depth": 0.30},
+    "standard": {"a": 0.005, "b": 0.005, "p_max": 0.005, "approach": 0.01,
+                 "approach_depth_point": 0.01, "tau0": 0.015, "tau_x0z0": 0.015, "z0": 0.02,
+                 "max_shear": 0.015, "max_shear_depth": 0.02, "von_mises": 0.015,
+                 "von_mises_depth": 0.02},
+    "quick": {"a": 0.05, "b": 0.05, "p_max": 0.06, "approach": 0.03,
+              "approach_depth_point": 0.03, "tau0": 0.12, "tau_x0z0": 0.15, "z0": 0.30,
+              "max_shear": 0.12, "max_shear_depth": 0.30, "von_mises": 0.12,
+              "von_mises_depth": 0.30},
 }
 TOLERANCES["fine"] = TOLERANCES["standard"]
 
-#: Two elastic bodies on a conformal groove: the on-axis stress maxima of the real
-#: geometry exceed Hertz's half-space values by an amount that grows with a / (f D)
-#: (209 inner race: max shear +1.4 % at 556 N, +2.6 % at 4450 N; outer race +3.8 %;
-#: half-space mode +0.3 %, docs/fem.md), so they are held to 5 % there.
-CONFORMAL_STRESS_TOLERANCE = {"max_shear": 0.05, "von_mises": 0.05}
+#: Two elastic bodies whose lower body is curved (race groove, ball): the stresses of the
+#: real geometry depart from Hertz's half-spaces by an amount that grows with the contact
+#: size over the body's radius — measured at the standard level (docs/fem.md): 209 inner
+#: race max shear +2.5 % and z0 -5.8 % at 4450 N (a/(fD) = 0.39), outer race max shear
+#: +3.8 %; ball on ball max shear -2.1 %, its depth +4.6 %, z0 -9.6 % at a/R = 0.055 and
+#: half of each at a/R = 0.028 — while the half-space mode of the same contacts is within
+#: the standard tolerances.  These bounds (never wider than issue 5's) apply there.
+CURVED_BODY_TOLERANCE = {"max_shear": 0.05, "von_mises": 0.05, "z0": 0.10,
+                         "max_shear_depth": 0.06, "von_mises_depth": 0.06}
 
 #: Extent of the lower body (half-space block, plane block), in semi-major axes.
 BLOCK_EXTENT = 8.0
@@ -120,6 +138,21 @@ class ContactCase:
     material1: Material
     material2: Material
     lower_radii: tuple = (math.inf, math.inf)
+
+    def at_load(self, load: float) -> "ContactCase":
+        """The same geometry at another normal load Q [N] (Hertz solution recomputed).
+
+        Examples
+        --------
+        >>> c = plane_case(12.7e-3, 2000.0).at_load(16000.0).analytic
+        >>> round(float(c.a) * 1e3, 4)                    # 2 x 0.4426 mm (a ~ Q^(1/3))
+        0.8851
+        """
+        load = _check_load(load)
+        c = self.analytic
+        new = hertz.elliptical_contact(load, float(c.Rx), float(c.Ry), float(c.E_prime),
+                                       method=c.method)
+        return replace(self, load=load, analytic=new)
 
 
 def _check_load(load):
@@ -283,13 +316,23 @@ class FEResult:
     case, mode, gap, level : what was run.
     a, b : semi-major and semi-minor axes from pressure moments [m].
     p_max : 3F/(2 pi a b) [Pa].
-    approach : depth-point approach, comparable with Hertz's delta [m] (see
-        ``approach_hertz_equivalent``: FE depth-point approach + half-space w(z_q)).
-    approach_rigid : raw rigid approach of the far planes [m] (includes bulk compliance).
+    approach : the FE estimate of Hertz's approach delta of distant points [m], directly
+        comparable with ``analytic.approach``: ``approach_depth_point`` plus the
+        half-space displacements ``w_1(z_q) + w_2(z_q)`` of the two depth points under the
+        Hertz pressure (:func:`ballrace.fem.halfspace.axial_displacement`; docs/fem.md).
+    approach_depth_point : approach of the two on-axis points at depth ``z_q`` (one per
+        body; ``info["depth_point"]``) [m], measured in the FE model; Hertz theory gives
+        ``delta - w_1(z_q) - w_2(z_q)`` for it.
+    approach_rigid : rigid approach of the far planes (block bottom, ball equator) [m];
+        it includes the bulk compliance of the finite bodies, so it is not Hertz's delta.
     tau0, z0 : orthogonal shear |tau_xz| peak [Pa] and its depth [m] (extract.peak_fit).
     tau_x0z0 : |tau_xz| at the analytic (x0, z0) [Pa].
     max_shear, max_shear_depth, von_mises, von_mises_depth : on-axis maxima [Pa], [m].
-    n_dofs : total degrees of freedom; timings : seconds per stage; peak_rss : [bytes].
+    n_dofs : total degrees of freedom; peak_rss : [bytes].
+    timings : seconds per stage [s]: the shared ones (mesh, assemble, load_matrix,
+        factorize, solve, compliance — once per mesh, the same in every result of a load
+        list), this load's ``contact`` and ``extract``, ``per_load`` (their sum) and
+        ``total`` (shared + per_load).
     analytic : the Hertz contact; comparison : table rows (dicts).
     """
 
@@ -301,6 +344,7 @@ class FEResult:
     b: float
     p_max: float
     approach: float
+    approach_depth_point: float
     approach_rigid: float
     tau0: float
     z0: float
@@ -329,7 +373,8 @@ class FEResult:
 
     def to_dict(self) -> dict:
         """JSON-ready summary (SI units)."""
-        keys = ("a", "b", "p_max", "approach", "approach_rigid", "tau0", "z0", "tau_x0z0",
+        keys = ("a", "b", "p_max", "approach", "approach_depth_point", "approach_rigid",
+                "tau0", "z0", "tau_x0z0",
                 "max_shear", "max_shear_depth", "von_mises", "von_mises_depth", "n_dofs",
                 "solver", "peak_rss", "mode", "gap", "level")
         out = {k: getattr(self, k) for k in keys}
@@ -352,8 +397,9 @@ def ball_on_race(brg, load: float, race: str = "inner", contact_angle: float = 0
     ----------
     brg : ballrace.BallBearing
         Bearing.
-    load : float
-        Ball load Q [N], > 0.
+    load : float or sequence of float
+        Ball load Q [N], > 0; a list of loads is solved on one mesh with one
+        factorisation (``run_case(..., loads=...)``) and returns a list of results.
     race : {"inner", "outer"}
     contact_angle : float
         Contact angle [rad].
@@ -372,26 +418,26 @@ def ball_on_race(brg, load: float, race: str = "inner", contact_angle: float = 0
 
     Returns
     -------
-    FEResult
+    FEResult (list of FEResult for a list of loads)
     """
-    return run_case(race_case(brg, load, race, contact_angle), level=level, mode=mode,
-                    gap=gap, **kwargs)
+    return _run(lambda q: race_case(brg, q, race, contact_angle), load, level=level,
+                mode=mode, gap=gap, **kwargs)
 
 
 def ball_on_plane(ball_diameter: float, load: float, material: Material = BEARING_STEEL,
                   level: str = "standard", mode: str = "half-space", gap: str = "hertz",
                   plane_material: Material | None = None, **kwargs) -> FEResult:
     """FE check of a ball on a flat (see :func:`ball_on_race` for the options)."""
-    return run_case(plane_case(ball_diameter, load, material, plane_material), level=level,
-                    mode=mode, gap=gap, **kwargs)
+    return _run(lambda q: plane_case(ball_diameter, q, material, plane_material), load,
+                level=level, mode=mode, gap=gap, **kwargs)
 
 
 def ball_on_ball(ball_diameter: float, load: float, material: Material = BEARING_STEEL,
                  level: str = "standard", mode: str = "half-space", gap: str = "hertz",
                  other_diameter: float | None = None, **kwargs) -> FEResult:
     """FE check of two balls pressed together (see :func:`ball_on_race`)."""
-    return run_case(ball_case(ball_diameter, load, material, other_diameter), level=level,
-                    mode=mode, gap=gap, **kwargs)
+    return _run(lambda q: ball_case(ball_diameter, q, material, other_diameter), load,
+                level=level, mode=mode, gap=gap, **kwargs)
 
 
 def ball_on_groove(ball_diameter: float, load: float, race_radius: float, groove_radius: float,
@@ -400,8 +446,19 @@ def ball_on_groove(ball_diameter: float, load: float, race_radius: float, groove
                    race_material: Material | None = None, **kwargs) -> FEResult:
     """FE check of a ball in a groove given by plain radii (:func:`groove_case`; options
     as :func:`ball_on_race`)."""
-    return run_case(groove_case(ball_diameter, load, race_radius, groove_radius, race, material,
-                                race_material), level=level, mode=mode, gap=gap, **kwargs)
+    return _run(lambda q: groove_case(ball_diameter, q, race_radius, groove_radius, race,
+                                      material, race_material), load, level=level, mode=mode,
+                gap=gap, **kwargs)
+
+
+def _run(make, load, **kwargs):
+    """run_case for one load, or for a list of loads on one mesh (``loads=``)."""
+    if np.ndim(load) == 0:
+        return run_case(make(load), **kwargs)
+    qs = [float(q) for q in np.asarray(load, dtype=float).ravel()]
+    if not qs:
+        raise ValueError("load must be > 0 [N] or a non-empty list of loads [N]")
+    return run_case(make(max(qs)), loads=qs, **kwargs)
 
 
 # --------------------------------------------------------------------------- pipeline
@@ -417,30 +474,38 @@ class _Sizing:
 def _level(level) -> tuple[str, MeshLevel]:
     """(name, MeshLevel) of a level name or a :class:`MeshLevel`."""
     if isinstance(level, MeshLevel):
-        return (f"n={level.n:g},s<={level.max_stretch:g},tents<={level.tents_per_axis:g}",
+        return (f"n={level.n:g},s<={level.max_stretch:g},tents<={level.tents_per_axis:g},"
+                f"floor={level.tent_floor:g}",
             level)
     check_choice(level, "level", tuple(LEVELS))
     return level, LEVELS[level]
 
 
-def sizing(case: ContactCase, level) -> _Sizing:
-    """Element size, anisotropy, refinement box and pressure grid for a level."""
+def sizing(case: ContactCase, level, cover: ContactCase | None = None) -> _Sizing:
+    """Element size, anisotropy, refinement box and pressure grid for a level.
+
+    ``cover`` (a case of the same geometry at a larger load) makes the refinement box
+    and the pressure grid cover its larger ellipse at the resolution set by ``case``
+    (the smallest load of a load list).
+    """
     from .model import PressureGrid
 
     lv = _level(level)[1]
     c = case.analytic
     ax, ay = float(c.semi_axis_x), float(c.semi_axis_y)
-    minor, major = min(ax, ay), max(ax, ay)
+    minor = min(ax, ay)
+    cc = (cover or case).analytic
+    cx, cy = max(ax, float(cc.semi_axis_x)), max(ay, float(cc.semi_axis_y))
     h = minor / lv.n
     # elongate the elements along y when the ellipse is long in y (bearing contacts)
     s = float(np.clip(ay / ax / STRETCH_RATIO, 1.0, lv.max_stretch)) if ay > ax else 1.0
     ext = 1.3
-    Lx, Ly = ext * ax, ext * ay
-    # tent spacing: fine enough for the moments, >= 1.4x the surface mesh (inf-sup, docs/fem.md)
-    dx = max(ax / lv.tents_per_axis, 1.4 * h)
-    dy = max(ay / lv.tents_per_axis, 1.4 * h * s)
+    Lx, Ly = ext * cx, ext * cy
+    # tent spacing: fine enough for the moments, >= tent_floor surface elements (inf-sup)
+    dx = max(ax / lv.tents_per_axis, lv.tent_floor * h)
+    dy = max(ay / lv.tents_per_axis, lv.tent_floor * h * s)
     grid = PressureGrid(Lx, Ly, max(3, int(round(Lx / dx))), max(3, int(round(Ly / dy))))
-    fine = (Lx + 2 * h, Ly + 2 * h * s, 1.6 * minor)
+    fine = (Lx + 2 * h, Ly + 2 * h * s, 1.6 * min(cx, cy))
     return _Sizing(h=h, stretch=s, fine=fine, grid=grid, zq=3.0 * minor)
 
 
@@ -508,9 +573,9 @@ def _bodies(case: ContactCase, mode: str, sz: _Sizing, use_cache: bool):
 
 def run_case(case: ContactCase, level: str = "standard", mode: str = "half-space",
              gap: str = "hertz", *, solver: str | None = None, use_cache: bool = True,
-             progress: Callable[[str], None] | None = None, load: float | None = None,
-             approach: float | None = None) -> FEResult:
-    """Mesh, assemble, solve and post-process one contact case.
+             progress: Callable[[str], None] | None = None, approach: float | None = None,
+             loads=None):
+    """Mesh, assemble, solve and post-process one contact case (or a list of loads).
 
     Parameters
     ----------
@@ -524,23 +589,46 @@ def run_case(case: ContactCase, level: str = "standard", mode: str = "half-space
         Called with the name of each stage ("mesh", "assemble", "contact", "extract").
     approach : float, optional
         Impose the rigid approach of the far planes [m] instead of the case's load.
+    loads : sequence of float, optional
+        Ball loads Q [N], each > 0, solved on one mesh with one factorisation per body
+        (the compliance is linear): the mesh resolution is set by the smallest load's
+        ellipse, the refinement box and the pressure grid cover the largest, and each
+        further load costs only its contact solve and extraction.  Returns a list of
+        :class:`FEResult` in the order of ``loads`` (``case.load`` is then ignored).
+
+    Returns
+    -------
+    FEResult, or list of FEResult when ``loads`` is given.
     """
-    from . import extract as ex
-    from . import halfspace
-    from .model import assemble_body, compliance, solve_contact
+    from .model import assemble_body, compliance
 
     level, lv = _level(level)
     check_choice(mode, "mode", MODES)
     check_choice(gap, "gap", GAPS)
+    if loads is not None:
+        if approach is not None:
+            raise ValueError("give loads [N] or approach [m], not both")
+        qs = [float(check_positive(q, "loads", "N")) for q in np.atleast_1d(loads)]
+        if not qs:
+            raise ValueError("loads must hold at least one load [N]")
+        cases = [case.at_load(q) for q in qs]
+    else:
+        cases = [case]
+    small = min(cases, key=lambda cs: cs.load)
+    large = max(cases, key=lambda cs: cs.load)
     step = progress or (lambda stage: None)
-    c = case.analytic
-    timings = {}
-    sz = sizing(case, lv)
+    shared = {}
+    sz = sizing(small, lv, cover=large)
 
+    from .solvers import slow_solver_hint
+
+    hint = slow_solver_hint(solver)
+    if hint:
+        log.warning(hint)
     step("mesh")
     t0 = time.perf_counter()
-    bodies, meshes = _bodies(case, mode, sz, use_cache)
-    timings["mesh"] = time.perf_counter() - t0
+    bodies, meshes = _bodies(large, mode, sz, use_cache)
+    shared["mesh"] = time.perf_counter() - t0
 
     step("assemble")
     states = []
@@ -548,9 +636,7 @@ def run_case(case: ContactCase, level: str = "standard", mode: str = "half-space
         st = assemble_body(b, sz.grid, solver)
         states.append(st)
         for k, v in st.timings.items():
-            timings[k] = timings.get(k, 0.0) + v
-
-    step("contact")
+            shared[k] = shared.get(k, 0.0) + v
     t0 = time.perf_counter()
     if gap == "hertz":
         def g0(x, y):
@@ -560,6 +646,22 @@ def run_case(case: ContactCase, level: str = "standard", mode: str = "half-space
             return case.upper.height(x, y) - case.lower.height(x, y)
     I = sz.grid.integrals(g0)
     C = compliance(states)
+    shared["compliance"] = time.perf_counter() - t0
+    out = [_solve_load(cs, states, meshes, sz, I, C, level, mode, gap, approach, shared, step)
+           for cs in cases]
+    return out if loads is not None else out[0]
+
+
+def _solve_load(case, states, meshes, sz, I, C, level, mode, gap, approach, shared, step):
+    """Contact solve and extraction of one load on prepared bodies (see :func:`run_case`)."""
+    from . import extract as ex
+    from . import halfspace
+    from .model import solve_contact
+
+    c = case.analytic
+    timings = dict(shared)
+    step("contact")
+    t0 = time.perf_counter()
     sol = solve_contact(C, I["G0"], I["m"], load=None if approach is not None else case.load / 4,
                         approach=approach, p_ref=float(c.p_max), delta_ref=float(c.approach))
     timings["contact"] = time.perf_counter() - t0
@@ -578,7 +680,7 @@ def run_case(case: ContactCase, level: str = "standard", mode: str = "half-space
     w_sum = 0.0
     for s, u in zip(states, us):
         b = s.body
-        zq = sz.zq
+        zq = 3.0 * float(min(c.semi_axis_x, c.semi_axis_y))
         pt = np.array([[eps, eps, b.side * zq]])
         uz = ex.probe_displacement(s, u, pt)[0, 2]
         d_fe -= b.side * uz             # displacement of the depth point towards the support
@@ -624,8 +726,8 @@ def run_case(case: ContactCase, level: str = "standard", mode: str = "half-space
 
     # custom MeshLevels are held to the standard tolerances
     tol = TOLERANCES.get(level, TOLERANCES["standard"]) if gap == "hertz" else {}
-    if tol and mode == "two-body" and case.lower_kind == "race":
-        tol = {**tol, **{q: max(tol[q], v) for q, v in CONFORMAL_STRESS_TOLERANCE.items()}}
+    if tol and mode == "two-body" and case.lower_kind in ("race", "ball"):
+        tol = {**tol, **{q: max(tol[q], v) for q, v in CURVED_BODY_TOLERANCE.items()}}
     rows = []
 
     def row(q, unit, fe, an):
@@ -637,7 +739,8 @@ def run_case(case: ContactCase, level: str = "standard", mode: str = "half-space
     row("a", "m", a_fe, float(c.a))
     row("b", "m", b_fe, float(c.b))
     row("p_max", "Pa", mom["p_max"], float(c.p_max))
-    row("approach", "m", d_fe, d_an)
+    row("approach", "m", d_fe + w_sum, float(c.approach))
+    row("approach_depth_point", "m", d_fe, d_an)
     row("tau0", "Pa", tau0_fe, float(osh.tau0))
     row("tau_x0z0", "Pa", tau_at, float(osh.tau0))
     row("z0", "m", z0_fe, z0)
@@ -650,16 +753,19 @@ def run_case(case: ContactCase, level: str = "standard", mode: str = "half-space
               "max_shear": tres.reshape(Xs.shape), "von_mises": vm.reshape(Xs.shape),
               "grid": sz.grid, "lam": sol.lam, "axis_z": za, "axis_tresca": tr_a,
               "axis_von_mises": vm_a, "states": states}
-    info = {"approach_hertz": float(c.approach), "depth_point": sz.zq,
+    info = {"approach_hertz": float(c.approach), "depth_point": zq,
+            "halfspace_w_depth_points": w_sum,
             "rigid_approach_error": sol.Delta / float(c.approach) - 1.0,
             "complementarity": sol.complementarity, "n_tents": sz.grid.n_tents,
             "h_contact": sz.h, "stretch": sz.stretch,
             "mesh_nodes": [int(m.n_nodes) for m in meshes],
             "mesh_digests": [m.digest() for m in meshes]}
-    timings["total"] = sum(v for k, v in timings.items())
+    timings["per_load"] = timings["contact"] + timings["extract"]
+    timings["total"] = sum(shared.values()) + timings["per_load"]
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
     res = FEResult(case=case, mode=mode, gap=gap, level=level, a=a_fe, b=b_fe,
-                   p_max=mom["p_max"], approach=d_fe, approach_rigid=sol.Delta, tau0=tau0_fe,
+                   p_max=mom["p_max"], approach=d_fe + w_sum, approach_depth_point=d_fe,
+                   approach_rigid=sol.Delta, tau0=tau0_fe,
                    z0=z0_fe, tau_x0z0=tau_at, max_shear=ms, max_shear_depth=ms_d,
                    von_mises=vmx, von_mises_depth=vm_d,
                    n_dofs=int(sum(s.n_dofs for s in states)), timings=timings,

@@ -313,7 +313,7 @@ def assemble_body(body: Body, grid: PressureGrid, solver: str | None = None) -> 
     import scipy.sparse as sp
     from skfem import Basis, ElementTetP2, ElementVector, FacetBasis
 
-    from .solvers import factorize
+    from .solvers import chosen_solver, factorize, rigid_body_modes
 
     tm = {}
     t0 = time.perf_counter()
@@ -369,7 +369,10 @@ def assemble_body(body: Body, grid: PressureGrid, solver: str | None = None) -> 
     t0 = time.perf_counter()
     Kff = K[free][:, free].tocsc()
     del K
-    solve, name = factorize(Kff, solver)
+    nns = None
+    if chosen_solver(solver) == "amg":
+        nns = rigid_body_modes(sbasis.doflocs[:, free // 3].T, free % 3)
+    solve, name = factorize(Kff, solver, near_nullspace=nns)
     tm["factorize"] = time.perf_counter() - t0
     t0 = time.perf_counter()
     Ff = F[free].toarray()

@@ -188,6 +188,49 @@ def test_fast_p2_elasticity_equals_scikit_fem(E, nu):
         assert np.abs(K1 @ mode).max() <= 1e-10 * abs(K1).max()
 
 
+@needs_fem
+def test_rigid_body_modes_are_the_kernel_and_amg_solves():
+    """The six rigid-body modes are in the kernel of the unconstrained P2 stiffness, and
+    the amg path (with them as near-nullspace) solves a constrained system like CHOLMOD
+    or SuperLU."""
+    from skfem import Basis, ElementTetP2, ElementVector, MeshTet
+
+    from ballrace.fem.model import elasticity_p2
+    from ballrace.fem.solvers import factorize, rigid_body_modes
+
+    m = MeshTet().refined(2)
+    b = Basis(m, ElementVector(ElementTetP2()), intorder=1)
+    sb = b.with_element(ElementTetP2())
+    K = elasticity_p2(m.p, m.t, sb.element_dofs, b.N, 200e9, 0.3)
+    dof = np.arange(b.N)
+    B = rigid_body_modes(sb.doflocs[:, dof // 3].T, dof % 3)
+    assert np.linalg.matrix_rank(B) == 6
+    assert np.abs(K @ B).max() <= 1e-9 * abs(K).max()
+    fixed = b.get_dofs(lambda x: x[2] == 0.0).all()
+    free = np.setdiff1d(dof, fixed)
+    A = K[free][:, free].tocsc()
+    rhs = np.random.default_rng(2).standard_normal((free.size, 2))
+    x_ref = factorize(A, "superlu")[0](rhs)
+    solve, name = factorize(A, "amg", near_nullspace=B[free])
+    assert name == "amg"
+    assert np.allclose(solve(rhs), x_ref, rtol=0, atol=1e-8 * np.abs(x_ref).max())
+
+
+def test_solver_choice_and_slow_hint(monkeypatch):
+    from ballrace.fem import solvers
+
+    monkeypatch.setenv("BALLRACE_SOLVER", "superlu")
+    assert solvers.chosen_solver() == "superlu"
+    hint = solvers.slow_solver_hint(n_dofs=268_000)
+    assert "268,000 DOFs" in hint and 'pip install "ballrace[fem]"' in hint
+    monkeypatch.setenv("BALLRACE_SOLVER", "gauss")
+    with pytest.raises(ValueError, match="solver must be one of"):
+        solvers.chosen_solver()
+    monkeypatch.delenv("BALLRACE_SOLVER")
+    assert solvers.chosen_solver() in solvers.CHAIN            # amg only on request
+    assert solvers.slow_solver_hint("cholmod") is None
+
+
 def test_pressure_grid_moments():
     from ballrace.fem.model import PressureGrid
     from ballrace.fem.extract import pressure_moments
@@ -270,5 +313,37 @@ def test_quick_ball_on_inner_race(brg209):
     assert r.a == pytest.approx(float(c.a), rel=0.05)
     assert r.b == pytest.approx(float(c.b), rel=0.05)
     assert r.p_max == pytest.approx(float(c.p_max), rel=0.06)
-    assert r.approach == pytest.approx(r.comparison[3]["analytic"], rel=0.03)
-    _check(r)
+    # approach: the FE estimate of Hertz's delta, directly comparable with analytic.approach
+    rows = {row["quantity"]: row for row in r.comparison}
+    assert rows["approach"]["analytic"] == float(c.approach)
+    assert r.approach == pytest.approx(float(c.approach), rel=0.03)
+    w = r.info["halfspace_w_depth_points"]
+    assert r.approach == pytest.approx(r.approach_depth_point + w, rel=1e-12)
+    assert rows["approach_depth_point"]["analytic"] == pytest.approx(float(c.approach) - w)
+    # the rigid approach of the far planes includes the finite block's bulk compliance
+    assert r.approach_rigid != pytest.approx(r.approach, rel=1e-3)
+    d = r.to_dict()
+    assert {"approach", "approach_depth_point", "approach_rigid"} <= set(d)
+    _check(r, names=("a", "b", "p_max", "approach", "approach_depth_point", "tau0", "z0"))
+
+
+@needs_fem
+@pytest.mark.fem
+def test_load_list_shares_mesh_and_factorisation():
+    """loads=[...]: one mesh and one factorisation; each load gets its own Hertz reference
+    and the contact scales as Hertz says (a ~ Q^(1/3), delta ~ Q^(2/3))."""
+    from ballrace import fem
+
+    rs = fem.ball_on_plane(12.7e-3, [1000.0, 2000.0], level="quick")
+    assert [r.case.load for r in rs] == [1000.0, 2000.0]
+    assert rs[0].info["mesh_digests"] == rs[1].info["mesh_digests"]
+    assert rs[0].n_dofs == rs[1].n_dofs
+    assert rs[0].timings["factorize"] == rs[1].timings["factorize"]      # shared, once
+    for r in rs:
+        assert r.analytic.load == r.case.load
+        assert r.info["complementarity"] < 1e-8
+        _check(r, names=("a", "b", "p_max", "approach", "tau0"))
+    assert rs[1].a / rs[0].a == pytest.approx(2.0 ** (1 / 3), rel=0.01)
+    assert rs[1].approach / rs[0].approach == pytest.approx(2.0 ** (2 / 3), rel=0.01)
+    with pytest.raises(ValueError, match="loads"):
+        fem.run_case(fem.plane_case(12.7e-3, 1.0), level="quick", loads=[1000.0, -1.0])

@@ -1,8 +1,12 @@
-"""Standard-level FE checks (issue 5 tolerances); run by ``make test-fem`` (``-m slow``).
+"""Standard-level FE checks (issue 10 tolerances); run by ``make test-fem`` (``-m slow``).
 
 Tolerances at "standard" (:data:`ballrace.fem.TOLERANCES`): a, b, p_max 0.5 %, approach
-(depth-point method) 1 %, tau0 3 %, z0 10 %.  Cost is measured in
-``benchmarks/bench_fem.py``, not here.
+(the FE estimate of Hertz's delta) and the depth-point approach 1 %, tau0, tau at
+(x0, z0), the on-axis max shear and von Mises maxima 1.5 %, z0 and the depths of the
+maxima 2 %.  Two elastic bodies whose lower body is curved (race groove, ball) are held
+to :data:`ballrace.fem.api.CURVED_BODY_TOLERANCE` on the stress maxima and their depths:
+there the real geometry departs from Hertz's half-spaces (docs/fem.md).  Cost is
+measured in ``benchmarks/bench_fem.py``, not here.
 """
 from __future__ import annotations
 
@@ -15,7 +19,8 @@ fem = pytest.importorskip("ballrace.fem")
 pytest.importorskip("skfem")
 pytest.importorskip("gmsh")
 
-CHECKED = ("a", "b", "p_max", "approach", "tau0", "z0")
+ALL = ("a", "b", "p_max", "approach", "approach_depth_point", "tau0", "tau_x0z0", "z0",
+       "max_shear", "max_shear_depth", "von_mises", "von_mises_depth")
 
 
 @pytest.fixture(scope="module")
@@ -23,33 +28,46 @@ def brg209():
     return ballrace.BallBearing(12.7e-3, 9, 65e-3, 0.52, 0.52, free_contact_angle=0.0)
 
 
-def _assert_rows(r, names=CHECKED):
+def _assert_rows(r, names=ALL):
     rows = {row["quantity"]: row for row in r.comparison}
+    assert all(rows[q]["tol"] is not None for q in names)
     bad = [f"{q}: {100 * rows[q]['error']:+.3f} % (tol {100 * rows[q]['tol']:.1f} %)"
            for q in names if not rows[q]["ok"]]
     assert not bad, "; ".join(bad)
 
 
 def test_standard_inner_race_half_space(brg209):
-    r = fem.ball_on_race(brg209, 4450.0, race="inner", level="standard", mode="half-space")
-    _assert_rows(r)
+    _assert_rows(fem.ball_on_race(brg209, 4450.0, race="inner", mode="half-space"))
+
+
+def test_standard_outer_race_half_space(brg209):
+    _assert_rows(fem.ball_on_race(brg209, 4450.0, race="outer", mode="half-space"))
 
 
 def test_standard_ball_on_plane_half_space():
-    r = fem.ball_on_plane(12.7e-3, 2000.0, level="standard", mode="half-space")
-    _assert_rows(r)
+    _assert_rows(fem.ball_on_plane(12.7e-3, 2000.0, level="standard", mode="half-space"))
 
 
 def test_standard_ball_on_plane_two_body():
-    r = fem.ball_on_plane(12.7e-3, 2000.0, level="standard", mode="two-body")
-    _assert_rows(r)
+    _assert_rows(fem.ball_on_plane(12.7e-3, 2000.0, level="standard", mode="two-body"))
+
+
+def test_standard_ball_on_ball_half_space():
+    _assert_rows(fem.ball_on_ball(12.7e-3, 2000.0, level="standard", mode="half-space"))
 
 
 def test_standard_inner_race_two_body(brg209):
     # the race is the groove with its lands (meshes.geometry.RingSurface); a block cut off
     # at 0.75 f D beside the groove put a 0.3 % shortfall on a (docs/fem.md)
-    r = fem.ball_on_race(brg209, 4450.0, race="inner", level="standard", mode="two-body")
-    _assert_rows(r)
+    _assert_rows(fem.ball_on_race(brg209, 4450.0, race="inner", mode="two-body"))
+
+
+def test_standard_load_list_on_one_mesh(brg209):
+    """Two loads on one mesh and one factorisation: each within the standard tolerances."""
+    rs = fem.ball_on_race(brg209, [3500.0, 4450.0], race="inner", mode="half-space")
+    assert rs[0].info["mesh_digests"] == rs[1].info["mesh_digests"]
+    for r in rs:
+        _assert_rows(r)
 
 
 def test_exact_gap_is_beyond_hertz(brg209):

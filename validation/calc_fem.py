@@ -30,17 +30,20 @@ _OUT = {"a": "[length]", "b": "[length]", "p_max": "[pressure]", "tau0": "[press
         "z0": "[length]", "tau_x0z0": "[pressure]", "max_shear": "[pressure]",
         "max_shear_depth": "[length]", "von_mises": "[pressure]",
         "von_mises_depth": "[length]", "approach": "[length]", "approach_vs_hertz": "",
+        "approach_depth_point": "[length]", "approach_rigid": "[length]",
         "n_dofs": "", "wall_time": "[time]",
-        **{f"{q}_vs_hertz": "" for q in ("a", "b", "p_max", "tau0", "max_shear")}}
+        **{f"{q}_vs_hertz": "" for q in ("a", "b", "p_max", "tau0", "max_shear", "z0",
+                                         "max_shear_depth")}}
 
 
 def _outputs(r, render_dir, case_id) -> dict:
     out = {k: float(getattr(r, k)) for k in ("a", "b", "p_max", "tau0", "z0", "tau_x0z0",
                                               "max_shear", "max_shear_depth", "von_mises",
-                                              "von_mises_depth", "approach")}
+                                              "von_mises_depth", "approach",
+                                              "approach_depth_point", "approach_rigid")}
     rows = {row["quantity"]: row for row in r.comparison}
     out["approach_vs_hertz"] = float(rows["approach"]["error"]) if "approach" in rows else math.nan
-    for q in ("a", "b", "p_max", "tau0", "max_shear"):
+    for q in ("a", "b", "p_max", "tau0", "max_shear", "z0", "max_shear_depth"):
         out[f"{q}_vs_hertz"] = float(rows[q]["error"]) if q in rows else math.nan
     out["n_dofs"] = float(r.n_dofs)
     out["wall_time"] = float(r.timings.get("total", math.nan))
