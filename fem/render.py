@@ -412,9 +412,12 @@ def render_3d(r, path: str = "out-3d.png", *, field: str = "von_mises",
     pl = pv.Plotter(off_screen=True, window_size=tuple(int(v) for v in window_size))
     try:
         pl.set_background("white")
-        hi = float(np.max(val[np.unique(cells)]))
-        pl.add_mesh(body, scalars="MPa", cmap="viridis", clim=(0.0, hi),
+        hi, step = _nice_top(float(np.max(val[np.unique(cells)])))
+        # mostly ambient light: the faces keep the colours of the scalar bar
+        pl.add_mesh(body, scalars="MPa", cmap="viridis", clim=(0.0, hi), ambient=0.6,
+                    diffuse=0.45, specular=0.0,
                     scalar_bar_args={"title": f"{title} [MPa]", "color": "black",
+                                     "n_labels": int(round(hi / step)) + 1,
                                      "vertical": True, "position_x": 0.88, "position_y": 0.25,
                                      "height": 0.6, "width": 0.05, "fmt": "%.0f",
                                      "title_font_size": 14, "label_font_size": 12})
@@ -490,3 +493,10 @@ def _peak(c, nu: float, field: str) -> float:
     if field == "von_mises":
         return float(subsurface.von_mises(c, nu=nu).sigma_vm) / 1e6
     return float(subsurface.max_shear(c, nu=nu).tau_max) / 1e6
+
+
+def _nice_top(v: float) -> tuple[float, float]:
+    """Colour-bar top at or above ``v`` and a round label step giving 4 to 8 steps."""
+    e = 10.0 ** np.floor(np.log10(max(v, 1e-12)))
+    step = next(m * e for m in (0.1, 0.2, 0.25, 0.4, 0.5, 1.0, 2.0) if np.ceil(v / (m * e)) <= 8)
+    return float(np.ceil(v / step) * step), float(step)
