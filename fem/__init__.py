@@ -12,17 +12,18 @@ contact by a compliance matrix and non-negative least squares, compared with
 Importing this package is cheap: gmsh, meshio, scikit-fem and pyvista are imported
 only when a model is run or rendered.  Frame: x rolling, y transverse, z depth;
 Lundberg–Palmgren's "tau_yz" (their y = rolling) is ``tau_xz`` here, and both names
-are accepted by :func:`render`.
+are accepted by :func:`render`; :func:`render_3d` draws a 3-D pyvista picture
+off-screen.
 """
 from __future__ import annotations
 
 from .api import (GAPS, LEVELS, MODES, TOLERANCES, ContactCase, FEResult, MeshLevel,
                   ball_case, ball_on_ball, ball_on_groove, ball_on_plane, ball_on_race,
                   groove_case, plane_case, race_case, run_case)
-from .render import render
+from .render import render, render_3d
 from .solvers import SOLVERS, available_solvers
 
 __all__ = ["ball_on_race", "ball_on_plane", "ball_on_ball", "ball_on_groove", "run_case",
-           "render", "race_case", "plane_case", "ball_case", "groove_case", "ContactCase",
-           "FEResult", "LEVELS", "MeshLevel", "MODES", "GAPS", "TOLERANCES", "SOLVERS",
-           "available_solvers"]
+           "render", "render_3d", "race_case", "plane_case", "ball_case", "groove_case",
+           "ContactCase", "FEResult", "LEVELS", "MeshLevel", "MODES", "GAPS", "TOLERANCES",
+           "SOLVERS", "available_solvers"]

@@ -15,12 +15,19 @@ profiles along x and y beside Hertz's.
 
 Drawing uses matplotlib's object API on the Agg canvas (no pyplot state, no display,
 no VTK), so it is safe in dask worker threads and silent on machines without X.
+
+:func:`render_3d` adds a 3-D picture with pyvista (imported inside it): the lower body
+near the contact, cut away to show the sections y = 0 and x = 0, coloured by the von Mises
+or Tresca stress recovered at the P2 nodes (:func:`nodal_stress`).  VTK's off-screen
+window is chosen before the first window is made (:func:`offscreen_vtk`), so it prints
+nothing on machines without X either.
 """
 from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["render", "FIELDS", "section_comparison"]
+__all__ = ["render", "render_3d", "FIELDS", "FIELDS_3D", "section_comparison", "nodal_stress",
+           "offscreen_vtk"]
 
 FIELDS = ("von_mises", "max_shear", "tau_xz", "tau_yz", "pressure")
 _TITLES = {"von_mises": "von Mises stress", "max_shear": "max shear (Tresca)",
@@ -239,3 +246,257 @@ def _pressure(fig, r) -> None:
         ax.tick_params(labelsize=7)
         ax.locator_params(axis="x", nbins=5)
     fig.suptitle(f"contact pressure: {_label(r)}", fontsize=10)
+
+
+# --------------------------------------------------------------------------- 3-D (pyvista)
+FIELDS_3D = ("von_mises", "max_shear")
+
+# skfem P2 tetrahedron: vertices 0-3, then the midpoints of edges 01, 12, 02, 03, 13, 23
+# (the same order as VTK's quadratic tetra).  Eight linear tets per P2 tet: four corners
+# and the inner octahedron split along its diagonal m02-m13.
+_SUBTETS = np.array([[0, 4, 6, 7], [4, 1, 5, 8], [6, 5, 2, 9], [7, 8, 9, 3],
+                     [6, 8, 4, 5], [6, 8, 5, 9], [6, 8, 9, 7], [6, 8, 7, 4]])
+_P2_REF = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], [.5, 0, 0], [.5, .5, 0],
+                    [0, .5, 0], [0, 0, .5], [.5, 0, .5], [0, .5, .5]], dtype=float)
+
+
+def offscreen_vtk() -> None:
+    """Choose VTK's off-screen render window before the first window is made.
+
+    The pip VTK wheels (>= 9.4) try an X window first and print "bad X server
+    connection" (with terminal colour codes) on a machine without a usable display
+    before they fall back to EGL.  ``VTK_DEFAULT_OPENGL_WINDOW`` selects the window
+    class directly; it is set (unless the user set it) to ``vtkEGLRenderWindow`` when
+    libEGL is present, else to ``vtkOSOpenGLRenderWindow`` when libOSMesa is (Linux only;
+    other systems keep VTK's default).  A missing library must not be named: VTK then
+    crashes instead of falling back.
+    """
+    import ctypes.util
+    import os
+    import sys
+
+    if "VTK_DEFAULT_OPENGL_WINDOW" in os.environ or not sys.platform.startswith("linux"):
+        return
+    if ctypes.util.find_library("EGL"):
+        os.environ["VTK_DEFAULT_OPENGL_WINDOW"] = "vtkEGLRenderWindow"
+    elif ctypes.util.find_library("OSMesa"):
+        os.environ["VTK_DEFAULT_OPENGL_WINDOW"] = "vtkOSOpenGLRenderWindow"
+
+
+def nodal_stress(state, u) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Stress recovered at the P2 nodes of a body by averaging the elements around each node.
+
+    Parameters
+    ----------
+    state : BodyState
+        An assembled body (``r.fields["states"][i]``).
+    u : ndarray
+        Its displacement vector (``state.X @ lam``) [m].
+
+    Returns
+    -------
+    points : ndarray (n, 3)
+        The P2 nodes (vertices and edge midpoints) [m].
+    cells : ndarray (m, 4)
+        Linear tetrahedra on those nodes, eight per P2 tetrahedron.
+    stress : ndarray (n, 6)
+        Averaged stress ``sxx, syy, szz, sxy, sxz, syz`` in the mesh frame [Pa].
+    """
+    from skfem import ElementTetP2
+
+    from .extract import _locator
+
+    sb = state.scalar_basis
+    edofs = sb.element_dofs                                 # (10, nt)
+    inv = _locator(state)["inv"]                            # (nt, 3, 3)
+    U = np.asarray(u).reshape(-1, 3)
+    E, nu = state.body.E, state.body.nu
+    lam = E * nu / ((1 + nu) * (1 - 2 * nu))
+    mu = E / (2 * (1 + nu))
+    el = ElementTetP2()
+    n = sb.N
+    acc = np.zeros((n, 6))
+    cnt = np.zeros(n)
+    for k in range(10):                                     # evaluate at node k of every element
+        X = _P2_REF[k][:, None]
+        grad = np.zeros((edofs.shape[1], 3, 3))
+        for i in range(10):
+            _, dphi = el.lbasis(X, i)                        # (3, 1) reference gradient
+            g = np.einsum("nji,j->ni", inv, dphi[:, 0])
+            grad += U[edofs[i]][:, :, None] * g[:, None, :]
+        eps = 0.5 * (grad + grad.transpose(0, 2, 1))
+        tr = np.trace(eps, axis1=1, axis2=2)
+        s = 2 * mu * eps + lam * tr[:, None, None] * np.eye(3)
+        comp = np.stack([s[:, 0, 0], s[:, 1, 1], s[:, 2, 2], s[:, 0, 1], s[:, 0, 2],
+                         s[:, 1, 2]], axis=1)
+        np.add.at(acc, edofs[k], comp)
+        np.add.at(cnt, edofs[k], 1.0)
+    cells = edofs.T[:, _SUBTETS].reshape(-1, 4)
+    return np.asarray(sb.doflocs).T.copy(), cells, acc / np.maximum(cnt, 1.0)[:, None]
+
+
+def render_3d(r, path: str = "out-3d.png", *, field: str = "von_mises",
+              window_size=(1280, 720)) -> str:
+    """Off-screen pyvista picture of the FE stress field in the body under the contact.
+
+    The lower body (plane, half-space or race) of the quarter model is cut to a box of
+    about 2.5 semi-axes around the contact, mirrored about the symmetry planes x = 0 and
+    y = 0 and drawn with the quadrant towards the viewer removed, so the two cut faces
+    show the field on the sections y = 0 (rolling) and x = 0 (transverse) and the top
+    shows it on the surface.  The Hertz contact ellipse is outlined on the surface;
+    on the axis where the cuts meet, an open circle marks the analytic depth of the
+    maximum and a cross the FE one.  The field is the element stress (exact P2 gradient)
+    averaged at the P2 nodes, in MPa; coordinates are in mm.
+
+    pyvista and VTK are imported here only, and VTK's off-screen window is chosen
+    first (:func:`offscreen_vtk`), so nothing is printed on machines without X.
+
+    Parameters
+    ----------
+    r : FEResult
+        A solved case (``r.fields`` holds ``states`` and the contact pressures ``lam``).
+    path : str
+        Output PNG path.
+    field : {"von_mises", "max_shear"}
+        von Mises or maximum shear (Tresca) stress.
+    window_size : (int, int)
+        Image size [px] (width, height).
+
+    Returns
+    -------
+    str
+        The path written.
+
+    Raises
+    ------
+    ImportError
+        If pyvista (VTK) is not installed.
+    """
+    from ballrace.analytic import subsurface
+    from ballrace.analytic._checks import check_choice
+
+    from .extract import displacement, tresca_von_mises
+
+    check_choice(field, "field", FIELDS_3D)
+    offscreen_vtk()
+    import pyvista as pv
+
+    f = r.fields
+    state = f["states"][-1]
+    c = r.analytic
+    pts, cells, S = nodal_stress(state, displacement(state, f["lam"]))
+    tres, vm = tresca_von_mises(S)
+    val = (vm if field == "von_mises" else tres) / 1e6
+
+    mm = 1e3
+    ax_, ay_ = float(c.semi_axis_x), float(c.semi_axis_y)
+    minor = min(ax_, ay_)
+    surf = state.body.surface
+    z_top = float(surf.height(0.0, 0.0)) if surf is not None else float(pts[:, 2].max())
+    # a box of 2.5 semi-axes (1.6 along a much longer one), 2.5 minor semi-axes deep
+    X, Y, D = 2.5 * ax_, 2.5 * ay_, 2.5 * minor
+    X, Y = min(X, max(1.6 * ax_, 5.0 * Y)), min(Y, max(1.6 * ay_, 5.0 * X))
+    tets = state.scalar_basis.element_dofs[:4].T             # the FE mesh (vertices first)
+    depth = (np.asarray(surf.height(pts[:, 0], pts[:, 1]), dtype=float) - pts[:, 2]
+             if surf is not None else z_top - pts[:, 2])
+    near = np.all((pts[tets, 0] <= 1.5 * X) & (pts[tets, 1] <= 1.5 * Y)
+                  & (depth[tets] <= 1.5 * D), axis=1)
+    cells = cells.reshape(-1, 8, 4)[near].reshape(-1, 4)
+    zlo, zhi = float(pts[:, 2].min()) * mm, float(pts[:, 2].max()) * mm
+    box = (0.0, X * mm, 0.0, Y * mm, zlo - 1.0, zhi + 1.0)     # x, y only: depth clips z
+    body = _cutaway(pv, cells, pts * mm, box, depth * mm, D * mm, val)
+    edges = _cutaway(pv, tets[near], pts * mm, box, depth * mm, D * mm)
+
+    pv.OFF_SCREEN = True
+    title = {"von_mises": "von Mises stress", "max_shear": "max shear stress (Tresca)"}[field]
+    pl = pv.Plotter(off_screen=True, window_size=tuple(int(v) for v in window_size))
+    try:
+        pl.set_background("white")
+        hi, step = _nice_top(float(np.max(val[np.unique(cells)])))
+        # mostly ambient light: the faces keep the colours of the scalar bar
+        pl.add_mesh(body, scalars="MPa", cmap="viridis", clim=(0.0, hi), ambient=0.6,
+                    diffuse=0.45, specular=0.0,
+                    scalar_bar_args={"title": f"{title} [MPa]", "color": "black",
+                                     "n_labels": int(round(hi / step)) + 1,
+                                     "vertical": True, "position_x": 0.88, "position_y": 0.25,
+                                     "height": 0.6, "width": 0.05, "fmt": "%.0f",
+                                     "title_font_size": 14, "label_font_size": 12})
+        pl.add_mesh(edges, style="wireframe", color="black", opacity=0.25, line_width=0.5)
+        # Hertz ellipse on the surface (the removed quadrant left out)
+        t = np.linspace(0.5 * np.pi, 2.0 * np.pi, 181)
+        ex_, ey_ = ax_ * np.cos(t), ay_ * np.sin(t)
+        ez = (np.asarray(surf.height(ex_, ey_), dtype=float) if surf is not None
+              else np.full(t.size, z_top))
+        line = np.stack([ex_, ey_, ez + 0.01 * minor], axis=1) * mm
+        pl.add_mesh(pv.lines_from_points(line), color="red", line_width=3)
+        nu = float(state.body.nu)
+        if field == "von_mises":
+            za, zf, fmax = (float(subsurface.von_mises(c, nu=nu).depth), r.von_mises_depth,
+                            r.von_mises)
+        else:
+            za, zf, fmax = (float(subsurface.max_shear(c, nu=nu).depth), r.max_shear_depth,
+                            r.max_shear)
+        # analytic maximum: a sphere on the axis where the cuts meet; FE maximum: short
+        # black lines at its depth on both cut faces
+        pl.add_mesh(pv.Sphere(radius=0.05 * minor * mm, center=(0.0, 0.0, (z_top - za) * mm)),
+                    color="magenta")
+        zl, w = (z_top - zf) * mm, 0.6 * minor * mm
+        for q in ((w, 0.0), (0.0, w)):
+            seg = np.array([[0.0, 0.0, zl], [q[0], q[1], zl]]) + 1e-3 * w
+            pl.add_mesh(pv.lines_from_points(seg), color="black", line_width=5)
+        pl.add_legend([[f"Hertz contact ellipse (a = {ax_ * mm:.3f} mm, b = {ay_ * mm:.3f} mm)",
+                        "red"],
+                       [f"analytic max {_peak(c, nu, field):.0f} MPa "
+                        f"at depth {za * mm:.3f} mm", "magenta"],
+                       [f"FE max {fmax / 1e6:.0f} MPa at depth {zf * mm:.3f} mm "
+                        "(black lines)", "black"]],
+                      bcolor="white", border=False, size=(0.4, 0.12), loc="lower left",
+                      face="circle")
+        pl.add_text(f"{title}: {_label(r)}\nlower body, three quadrants of the mirrored "
+                    "quarter model (sections y = 0 and x = 0), coordinates in mm",
+                    position="upper_left", font_size=10, color="black")
+        pl.show_bounds(location="outer", color="black", font_size=9, xtitle="x rolling [mm]",
+                       ytitle="y transverse [mm]", ztitle="z [mm]", n_xlabels=3, n_ylabels=3,
+                       n_zlabels=3, fmt="%.2f")
+        view = (1.6, 1.25, 1.0) if Y <= 2 * X else (1.6, 0.6, 0.8)   # long side in view
+        pl.camera_position = [view, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0)]
+        pl.reset_camera()
+        pl.camera.zoom(1.1)
+        pl.screenshot(str(path))
+    finally:
+        pl.close()
+    return str(path)
+
+
+def _cutaway(pv, cells, pts, box, depth, dmax, values=None):
+    """Surface of the quarter-model mesh cut to ``box`` and ``depth <= dmax``, mirrored to
+    the three quadrants x < 0 or y < 0 (the quadrant x, y > 0 towards the viewer left open)."""
+    import warnings
+
+    grid = pv.UnstructuredGrid({pv.CellType.TETRA: np.asarray(cells)}, np.asarray(pts))
+    if values is not None:
+        grid.point_data["MPa"] = values
+    grid.point_data["depth"] = depth
+    grid = grid.clip_box(box, invert=False, crinkle=False)
+    grid = grid.clip_scalar(scalars="depth", invert=True, value=dmax)
+    o = (0.0, 0.0, 0.0)
+    parts = [grid.reflect((1, 0, 0), point=o), grid.reflect((0, 1, 0), point=o)]
+    parts.append(parts[0].reflect((0, 1, 0), point=o))
+    with warnings.catch_warnings():      # pyvista's notice of a future default
+        warnings.filterwarnings("ignore", message="The default value of `algorithm`")
+        return parts[0].merge(parts[1:]).extract_surface()
+
+
+def _peak(c, nu: float, field: str) -> float:
+    from ballrace.analytic import subsurface
+
+    if field == "von_mises":
+        return float(subsurface.von_mises(c, nu=nu).sigma_vm) / 1e6
+    return float(subsurface.max_shear(c, nu=nu).tau_max) / 1e6
+
+
+def _nice_top(v: float) -> tuple[float, float]:
+    """Colour-bar top at or above ``v`` and a round label step giving 4 to 8 steps."""
+    e = 10.0 ** np.floor(np.log10(max(v, 1e-12)))
+    step = next(m * e for m in (0.1, 0.2, 0.25, 0.4, 0.5, 1.0, 2.0) if np.ceil(v / (m * e)) <= 8)
+    return float(np.ceil(v / step) * step), float(step)

@@ -60,8 +60,24 @@ def _outputs(r, render_dir, case_id) -> dict:
                 log.warning("render of %s (%s) failed: %s: %s", case_id, field,
                             type(exc).__name__, exc)
                 break
+        arts.append(_render_3d(r, render_dir, case_id))
     out["_artifacts"] = arts
     return out
+
+
+def _render_3d(r, render_dir, case_id) -> tuple:
+    """("3-D", path) of the pyvista picture, or ("3-D", "") with the reason logged."""
+    from ballrace.fem.render import render_3d
+
+    path = os.path.join(render_dir, f"{case_id}-3d.png")
+    try:
+        return ("3-D von Mises", render_3d(r, path))
+    except ImportError as exc:
+        log.warning("no 3-D render of %s: pyvista is not installed (%s)", case_id, exc)
+        return ("3-D render omitted: pyvista (VTK) is not installed", "")
+    except Exception as exc:  # noqa: BLE001 - a render must not fail the check
+        log.warning("3-D render of %s failed: %s: %s", case_id, type(exc).__name__, exc)
+        return (f"3-D render omitted: {type(exc).__name__}: {exc}", "")
 
 
 @calculation("fem.ball_on_plane", requires=(_FEM + ":ball_on_plane",), fem=True,

@@ -366,7 +366,11 @@ _FEM_CAPTION = ("Section y = 0 through the contact (x rolling, depth z down; the
                 "(ballrace.analytic.subsurface.stress) on the same points and colour scale, "
                 "their difference FE - analytic, and both along depth.  Open circles mark the "
                 "analytic maxima (for tau_xz the Lundberg-Palmgren points +-x0, z0), crosses "
-                "the FE maxima.")
+                "the FE maxima.  The 3-D picture (pyvista, off-screen) shows the FE von Mises "
+                "stress in the lower body near the contact, the quarter model mirrored with "
+                "the quadrant towards the viewer cut away, the FE mesh drawn faintly, the "
+                "Hertz ellipse in red and the analytic and FE depths of the maximum on the "
+                "axis.")
 
 
 def fem_figures(run) -> list[Figure]:
@@ -377,8 +381,10 @@ def fem_figures(run) -> list[Figure]:
     for r in run.results:
         if not r.artifacts:
             continue
+        imgs = tuple(tuple(a) for a in r.artifacts if a[1])
+        note = "; ".join(a[0] for a in r.artifacts if not a[1])   # a picture not drawn
         figs.append(Figure(f"fem-{r.id}", "fem", f"FE against analytic: {r.title}",
-                           caption=_FEM_CAPTION, images=tuple(tuple(a) for a in r.artifacts)))
+                           caption=_FEM_CAPTION, images=imgs, note=note))
     if not figs:
         fem_ran = any(r.area == "fem" and r.status in ("pass", "fail") for r in run.results)
         why = ("the FE cases wrote no pictures" if fem_ran else
