@@ -441,7 +441,7 @@ TABLE.update({
 })
 METHOD_OF = {"bearing.BallBearing": ANGULAR}
 
-#: Known gaps (issue 14 items 7-9) in the solver and life modules, one test id each; they
+#: Known gaps (issue 14 items 7-9) in the solver modules, one test id each; they
 #: are strict xfails, so a fix makes the test XPASS and fail: then delete its line.
 KNOWN = {
     # analytic/bearing.py
@@ -454,39 +454,6 @@ KNOWN = {
     'duplex.axial_deflection-bearing-float-1.0',
     'duplex.axial_load-axial_deflection-1e+308',
     'duplex.axial_load-radial_deflection-1e+308',
-    # analytic/life.py
-    'life.adjusted_life-basic_life-inf',
-    "life.bearing_life-bearing-str-'x'",
-    'life.bearing_life-bearing-float-1.0',
-    "life.bearing_life-result-str-'x'",
-    'life.bearing_life-result-float-1.0',
-    'life.catalog_l10_hours-C-1e+308',
-    'life.catalog_l10_hours-P-1e+308',
-    'life.catalog_l10_hours-speed_rpm-1e+308',
-    'life.equivalent_load-radial_load-1e+308',
-    'life.equivalent_load-axial_load-1e+308',
-    'life.equivalent_load-static_rating-1e+308',
-    "life.equivalent_load-n_rows-str-'1.0'",
-    'life.equivalent_load-n_rows-bool-True',
-    'life.equivalent_load-n_rows-list-[[1.0, 2.0], [3.0]]',
-    'life.equivalent_load_for-radial_load-1e+308',
-    'life.equivalent_load_for-axial_load-1e+308',
-    'life.l10-C-1e+308',
-    'life.l10-P-1e+308',
-    'life.l10_hours-C-1e+308',
-    'life.l10_hours-P-1e+308',
-    'life.l10_hours-speed_rpm-1e+308',
-    "life.xy_factors-n_rows-str-'1.0'",
-    'life.xy_factors-n_rows-bool-True',
-    'life.xy_factors-n_rows-list-[[1.0, 2.0], [3.0]]',
-    'life.catalog_l10_hours-C-P',
-    'life.catalog_l10_hours-P-speed_rpm',
-    'life.equivalent_load-radial_load-axial_load',
-    'life.equivalent_load_for-radial_load-axial_load',
-    'life.l10-C-P',
-    'life.l10_hours-C-P',
-    'life.l10_hours-P-speed_rpm',
-    'life.miner-lives-fractions',
     # analytic/loaddist.py
     "loaddist.ball_stiffness-bearing-str-'x'",
     'loaddist.ball_stiffness-bearing-float-1.0',
