@@ -253,6 +253,12 @@ def operating_clearance(bearing, *, bore, outside_diameter, initial_clearance=No
                               tiny_ok=True, unit="m")))
     shaft_bore = float(check_nonnegative(shaft_bore, "shaft_bore", "m", bounded=True,
                                          tiny_ok=True))
+    housing_diameter = float(as_array(housing_diameter, "housing_diameter", allow_inf=True,
+                                      bounded=True, unit="m"))
+    if not housing_diameter > Do:
+        raise ValueError(f"housing_diameter (the mating_diameter of the outer-ring fit) must be "
+                         f"> outside_diameter = {Do:g} m "
+                         f"(math.inf for a large housing) [m]; got {housing_diameter!r}")
     F = dm - D - 0.5 * P0            # inner raceway diameter
     Er = dm + D + 0.5 * P0           # outer raceway diameter
     if not d < F:
