@@ -55,7 +55,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._checks import as_array, check_positive, check_range
+from ._checks import (as_array, check_choice, check_instance, check_nonnegative,
+                      check_positive, check_range)
 
 __all__ = ["STEEL_EXPANSION", "OperatingClearance", "fit_pressure", "operating_clearance"]
 
@@ -102,11 +103,13 @@ def fit_pressure(interference, seat_diameter, ring_diameter, mating_diameter, *,
     ...                          E_mate=208e9, nu_mate=0.3)) / 1e6, 2)
     32.42
     """
-    I = np.maximum(as_array(interference, "interference"), 0.0)
-    d = float(check_positive(seat_diameter, "seat_diameter", "m"))
-    F = float(check_positive(ring_diameter, "ring_diameter", "m"))
-    Er = float(check_positive(E_ring, "E_ring", "Pa"))
-    Em = float(check_positive(E_mate, "E_mate", "Pa"))
+    check_choice(ring, "ring", ("inner", "outer"))
+    I = np.maximum(as_array(interference, "interference", bounded=True, tiny_ok=True,
+                            unit="m"), 0.0)
+    d = float(check_positive(seat_diameter, "seat_diameter", "m", bounded=True))
+    F = float(check_positive(ring_diameter, "ring_diameter", "m", bounded=True))
+    Er = float(check_positive(E_ring, "E_ring", "Pa", bounded=True))
+    Em = float(check_positive(E_mate, "E_mate", "Pa", bounded=True))
     nr = float(check_range(nu_ring, "nu_ring", -1.0, 0.5, unit="-"))
     nm = float(check_range(nu_mate, "nu_mate", -1.0, 0.5, unit="-"))
     m = float(as_array(mating_diameter, "mating_diameter", allow_inf=True))
@@ -234,12 +237,28 @@ def operating_clearance(bearing, *, bore, outside_diameter, initial_clearance=No
     >>> round(oc.fit_inner * 1e6, 2), round(oc.thermal * 1e6, 2), round(oc.operating * 1e6, 2)
     (11.72, -5.0, 3.28)
     """
+    from .bearing import BallBearing
+    from .materials import Material
+
+    check_instance(bearing, "bearing", BallBearing)
+    for m, n in ((shaft_material, "shaft_material"), (housing_material, "housing_material")):
+        if m is not None:
+            check_instance(m, n, Material)
     D = bearing.ball_diameter
     dm = bearing.pitch_diameter
-    d = float(check_positive(bore, "bore", "m"))
-    Do = float(check_positive(outside_diameter, "outside_diameter", "m"))
+    d = float(check_positive(bore, "bore", "m", bounded=True))
+    Do = float(check_positive(outside_diameter, "outside_diameter", "m", bounded=True))
     P0 = (bearing.diametral_clearance if initial_clearance is None
-          else float(as_array(initial_clearance, "initial_clearance")))
+          else float(as_array(initial_clearance, "initial_clearance", bounded=True,
+                              tiny_ok=True, unit="m")))
+    shaft_bore = float(check_nonnegative(shaft_bore, "shaft_bore", "m", bounded=True,
+                                         tiny_ok=True))
+    housing_diameter = float(as_array(housing_diameter, "housing_diameter", allow_inf=True,
+                                      bounded=True, unit="m"))
+    if not housing_diameter > Do:
+        raise ValueError(f"housing_diameter (the mating_diameter of the outer-ring fit) must be "
+                         f"> outside_diameter = {Do:g} m "
+                         f"(math.inf for a large housing) [m]; got {housing_diameter!r}")
     F = dm - D - 0.5 * P0            # inner raceway diameter
     Er = dm + D + 0.5 * P0           # outer raceway diameter
     if not d < F:
@@ -248,11 +267,12 @@ def operating_clearance(bearing, *, bore, outside_diameter, initial_clearance=No
     if not Do > Er:
         raise ValueError(f"outside_diameter must exceed the outer raceway diameter "
                          f"{Er * 1e3:.4g} mm; got {Do * 1e3:.4g} mm")
-    Ti, Te = (float(check_positive(t, n, "K")) for t, n in
+    Ti, Te = (float(check_positive(t, n, "K", bounded=True)) for t, n in
               ((inner_temperature, "inner_temperature"), (outer_temperature, "outer_temperature")))
-    T0 = float(check_positive(reference_temperature, "reference_temperature", "K"))
+    T0 = float(check_positive(reference_temperature, "reference_temperature", "K",
+                              bounded=True))
     Tb = 0.5 * (Ti + Te) if ball_temperature is None else float(
-        check_positive(ball_temperature, "ball_temperature", "K"))
+        check_positive(ball_temperature, "ball_temperature", "K", bounded=True))
     ar = float(as_array(ring_expansion, "ring_expansion"))
     ab = ar if ball_expansion is None else float(as_array(ball_expansion, "ball_expansion"))
     a_s = ar if shaft_expansion is None else float(as_array(shaft_expansion, "shaft_expansion"))
@@ -261,8 +281,10 @@ def operating_clearance(bearing, *, bore, outside_diameter, initial_clearance=No
     rm = bearing.ring_material
     sm = rm if shaft_material is None else shaft_material
     hm = rm if housing_material is None else housing_material
-    Ii = float(as_array(shaft_interference, "shaft_interference")) + (a_s - ar) * (Ti - T0) * d
-    Ie = float(as_array(housing_interference, "housing_interference")) - (ah - ar) * (Te - T0) * Do
+    Ii = float(as_array(shaft_interference, "shaft_interference", bounded=True,
+                        tiny_ok=True, unit="m")) + (a_s - ar) * (Ti - T0) * d
+    Ie = float(as_array(housing_interference, "housing_interference", bounded=True,
+                        tiny_ok=True, unit="m")) - (ah - ar) * (Te - T0) * Do
     pi_ = float(fit_pressure(Ii, d, F, shaft_bore, E_ring=rm.E, nu_ring=rm.nu, E_mate=sm.E,
                              nu_mate=sm.nu, ring="inner"))
     pe = float(fit_pressure(Ie, Do, Er, housing_diameter, E_ring=rm.E, nu_ring=rm.nu,

@@ -56,7 +56,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._checks import check_choice, check_nonnegative, check_positive, check_range
+from ._checks import (check_choice, check_instance, check_integer, check_nonnegative,
+                      check_positive, check_range)
 
 __all__ = ["ReferenceRatingLife", "raceway_capacities", "reference_rating_life"]
 
@@ -94,14 +95,14 @@ def raceway_capacities(C, n_balls, ball_diameter, pitch_diameter, f_inner, f_out
     >>> round(qi), round(qe)
     (8099, 17585)
     """
-    C = float(check_positive(C, "C", "N"))
-    Z = float(check_positive(n_balls, "n_balls", "-"))
-    D = float(check_positive(ball_diameter, "ball_diameter", "m"))
-    dm = float(check_positive(pitch_diameter, "pitch_diameter", "m"))
+    C = float(check_positive(C, "C", "N", bounded=True))
+    Z = float(check_integer(n_balls, "n_balls", 1))
+    D = float(check_positive(ball_diameter, "ball_diameter", "m", bounded=True))
+    dm = float(check_positive(pitch_diameter, "pitch_diameter", "m", bounded=True))
     fi = float(check_range(f_inner, "f_inner", 0.5, None, unit="-"))
     fo = float(check_range(f_outer, "f_outer", 0.5, None, unit="-"))
     a = float(check_range(contact_angle, "contact_angle", -np.pi / 2, np.pi / 2, unit="rad"))
-    i = float(check_positive(n_rows, "n_rows", "-"))
+    i = float(check_integer(n_rows, "n_rows", 1))
     g = D * np.cos(a) / dm
     T = (1.044 * ((1.0 - g) / (1.0 + g)) ** 1.72
          * (fi * (2.0 * fo - 1.0) / (fo * (2.0 * fi - 1.0))) ** 0.41)
@@ -228,8 +229,10 @@ def reference_rating_life(bearing, result, *, dynamic_rating=None, rotating: str
     >>> round(r.C), round(r.L10r)
     (22381, 11518)
     """
+    from .bearing import BallBearing
     from .ratings import dynamic_rating as _rating
 
+    check_instance(bearing, "bearing", BallBearing)
     check_choice(rotating, "rotating", ("inner", "outer"))
     if hasattr(result, "ball_loads"):
         Qi, Qo = result.ball_loads, getattr(result, "ball_loads_outer", None)
@@ -255,7 +258,7 @@ def reference_rating_life(bearing, result, *, dynamic_rating=None, rotating: str
          else float(check_range(nominal_contact_angle, "nominal_contact_angle", -np.pi / 2,
                                 np.pi / 2, unit="rad")))
     C = (float(_rating(bearing, contact_angle=a)) if dynamic_rating is None
-         else float(check_positive(dynamic_rating, "dynamic_rating", "N")))
+         else float(check_positive(dynamic_rating, "dynamic_rating", "N", bounded=True)))
     Qci, Qce = raceway_capacities(C, bearing.n_balls, bearing.ball_diameter,
                                   bearing.pitch_diameter, bearing.f_inner, bearing.f_outer, a,
                                   getattr(bearing, "n_rows", 1))

@@ -41,7 +41,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._checks import check_choice, check_positive, check_range
+from ._checks import as_array, broadcast, check_choice, check_instance, check_positive, check_range
 
 __all__ = [
     "RELIABILITY_TABLE",
@@ -178,8 +178,9 @@ def reference_viscosity(speed_rpm, pitch_diameter):
     >>> round(float(reference_viscosity(3000.0, 0.0435)) * 1e6, 3)     # mm²/s
     12.457
     """
-    n = check_positive(speed_rpm, "speed_rpm", "rev/min")
-    dpw = check_positive(pitch_diameter, "pitch_diameter", "m") * 1e3
+    n = check_positive(speed_rpm, "speed_rpm", "rev/min", bounded=True)
+    dpw = check_positive(pitch_diameter, "pitch_diameter", "m", bounded=True) * 1e3
+    n, dpw = broadcast(speed_rpm=n, pitch_diameter=dpw)
     nu1 = np.where(n < 1000.0, 45000.0 * n ** -0.83, 4500.0 * n ** -0.5) * dpw ** -0.5
     return _s(nu1 * 1e-6)
 
@@ -206,7 +207,9 @@ def viscosity_ratio(viscosity, speed_rpm, pitch_diameter):
     >>> round(float(viscosity_ratio(20e-6, 3000.0, 0.0435)), 3)
     1.606
     """
-    nu = check_positive(viscosity, "viscosity", "m^2/s")
+    nu = check_positive(viscosity, "viscosity", "m^2/s", bounded=True)
+    broadcast(viscosity=nu, speed_rpm=as_array(speed_rpm, "speed_rpm"),
+              pitch_diameter=as_array(pitch_diameter, "pitch_diameter"))
     return _s(nu / reference_viscosity(speed_rpm, pitch_diameter))
 
 
@@ -236,8 +239,9 @@ def walther_constants(nu40, nu100):
     >>> round(float(A), 4), round(float(B), 4)
     (9.3097, 3.6244)
     """
-    v40 = check_positive(nu40, "nu40", "m^2/s") * 1e6
-    v100 = check_positive(nu100, "nu100", "m^2/s") * 1e6
+    v40 = check_positive(nu40, "nu40", "m^2/s", bounded=True) * 1e6
+    v100 = check_positive(nu100, "nu100", "m^2/s", bounded=True) * 1e6
+    v40, v100 = broadcast(nu40=v40, nu100=v100)
     if np.any(v100 >= v40):
         raise ValueError(f"nu100 must be < nu40 (oil thins when heated); got nu40 = "
                          f"{np.max(v40):g} mm^2/s, nu100 = {np.max(v100):g} mm^2/s")
@@ -282,7 +286,8 @@ def operating_viscosity(nu40, nu100, temperature):
     20.12
     """
     A, B = walther_constants(nu40, nu100)
-    T = check_positive(temperature, "temperature", "K")
+    T = check_positive(temperature, "temperature", "K", bounded=True)
+    broadcast(nu40=as_array(nu40, "nu40"), nu100=as_array(nu100, "nu100"), temperature=T)
     nu = 10.0 ** (10.0 ** (A - B * np.log10(T))) - 0.7
     return _s(nu * 1e-6)
 
@@ -320,8 +325,9 @@ def fatigue_load_limit(static_rating, pitch_diameter):
     >>> round(float(fatigue_load_limit(22000.0, 0.4)), 1)      # (100/400)^0.5 = 0.5
     500.0
     """
-    C0 = check_positive(static_rating, "static_rating", "N")
-    dpw = check_positive(pitch_diameter, "pitch_diameter", "m") * 1e3
+    C0 = check_positive(static_rating, "static_rating", "N", bounded=True)
+    dpw = check_positive(pitch_diameter, "pitch_diameter", "m", bounded=True) * 1e3
+    C0, dpw = broadcast(static_rating=C0, pitch_diameter=dpw)
     return _s(C0 / 22.0 * np.where(dpw > 100.0, np.sqrt(100.0 / np.maximum(dpw, 1e-300)), 1.0))
 
 
@@ -386,8 +392,11 @@ def fatigue_load_limit_hertz(bearing, contact_angle: float = 0.0,
     >>> round(fatigue_load_limit_hertz(brg).C_u)
     1140
     """
+    from .bearing import BallBearing
+
+    check_instance(bearing, "bearing", BallBearing)
     a = float(check_range(contact_angle, "contact_angle", -np.pi / 2, np.pi / 2, unit="rad"))
-    s = float(check_positive(stress_limit, "stress_limit", "Pa"))
+    s = float(check_positive(stress_limit, "stress_limit", "Pa", bounded=True))
     Qref = 1000.0
     Qu = {}
     for race in ("inner", "outer"):
@@ -447,7 +456,7 @@ def contamination_factor(level: str, pitch_diameter, which: str = "mean"):
     """
     check_choice(level, "level", tuple(CONTAMINATION_LEVELS))
     check_choice(which, "which", ("mean", "low", "high"))
-    dpw = float(check_positive(pitch_diameter, "pitch_diameter", "m"))
+    dpw = float(check_positive(pitch_diameter, "pitch_diameter", "m", bounded=True))
     lo, hi = CONTAMINATION_LEVELS[level][0 if dpw < 0.1 else 1]
     return {"low": lo, "high": hi, "mean": round(0.5 * (lo + hi), 12)}[which]
 
@@ -509,6 +518,8 @@ def life_modification_factor(kappa, contamination, fatigue_limit, load, *,
     >>> float(life_modification_factor(0.3, 0.5, 500.0, 500.0, ep_additives=True))
     3.0
     """
+    if not isinstance(bearing_type, str):
+        check_choice(bearing_type, "bearing_type", ("radial ball",))   # TypeError
     if bearing_type != "radial ball":
         raise ValueError(f"bearing_type must be 'radial ball' (the thrust-bearing constants of "
                          f"ISO 281:2007 are not implemented: no second source); got "
@@ -520,9 +531,10 @@ def life_modification_factor(kappa, contamination, fatigue_limit, load, *,
                          f"{float(np.min(k))!r}")
     eC = check_range(contamination, "contamination", 0.0, 1.0, low_inclusive=True,
                      high_inclusive=True, unit="-")
-    Cu = check_positive(fatigue_limit, "fatigue_limit", "N")
-    P = check_positive(load, "load", "N")
+    Cu = check_positive(fatigue_limit, "fatigue_limit", "N", bounded=True)
+    P = check_positive(load, "load", "N", bounded=True)
     cap = float(check_positive(cap, "cap", "-"))
+    k, eC, Cu, P = broadcast(kappa=k, contamination=eC, fatigue_limit=Cu, load=P)
     k = np.minimum(k, KAPPA_MAX)
     ep = np.zeros(np.broadcast(k, eC).shape, dtype=bool)
     if ep_additives:
@@ -575,8 +587,12 @@ def modified_rating_life(C, P, *, kappa, contamination, fatigue_limit, reliabili
     ...                                  fatigue_limit=500.0, reliability=0.99)), 1)
     443.0
     """
-    C = check_positive(C, "C", "N")
-    P = check_positive(P, "P", "N")
+    C = check_positive(C, "C", "N", bounded=True)
+    P = check_positive(P, "P", "N", bounded=True)
+    broadcast(C=C, P=P, kappa=as_array(kappa, "kappa"),
+              contamination=as_array(contamination, "contamination"),
+              fatigue_limit=as_array(fatigue_limit, "fatigue_limit"),
+              reliability=as_array(reliability, "reliability"))
     a1 = reliability_factor(reliability)
     a = life_modification_factor(kappa, contamination, fatigue_limit, P,
                                  ep_additives=ep_additives)
@@ -600,7 +616,9 @@ def modified_rating_life_hours(C, P, *, speed_rpm, kappa, contamination, fatigue
     ...       contamination=0.5, fatigue_limit=500.0)))
     9844
     """
-    n = check_positive(speed_rpm, "speed_rpm", "rev/min")
+    n = check_positive(speed_rpm, "speed_rpm", "rev/min", bounded=True)
+    broadcast(C=as_array(C, "C"), P=as_array(P, "P"), speed_rpm=n,
+              kappa=as_array(kappa, "kappa"))
     L = modified_rating_life(C, P, kappa=kappa, contamination=contamination,
                              fatigue_limit=fatigue_limit, reliability=reliability,
                              ep_additives=ep_additives)

@@ -49,8 +49,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._checks import (as_array, check_choice, check_integer, check_nonnegative, check_positive,
-                      check_range)
+from ._checks import (as_array, broadcast, check_choice, check_instance, check_integer,
+                      check_nonnegative, check_positive, check_range)
 
 __all__ = [
     "ROTATING_LOAD_FACTOR",
@@ -135,8 +135,9 @@ def l10(C, P, exponent: float = 3.0):
     >>> round(float(l10(143.0, 50.0)), 6)         # seed 001's bearing at 50 lb [1e6 rev]
     23.393656
     """
-    C = check_positive(C, "C", "N")
-    P = check_positive(P, "P", "N")
+    C = check_positive(C, "C", "N", bounded=True)
+    P = check_positive(P, "P", "N", bounded=True)
+    C, P = broadcast(C=C, P=P)
     p = float(check_positive(exponent, "exponent", "-"))
     return _s((C / P) ** p)
 
@@ -171,7 +172,8 @@ def l10_hours(C, P, *, speed_rpm, exponent: float = 3.0):
     >>> round(float(l10_hours(143.0, 50.0, speed_rpm=200.0)))   # seed 001's bearing
     1949
     """
-    n = check_positive(speed_rpm, "speed_rpm", "rev/min")
+    n = check_positive(speed_rpm, "speed_rpm", "rev/min", bounded=True)
+    broadcast(C=as_array(C, "C"), P=as_array(P, "P"), speed_rpm=n)
     return _s(1e6 * l10(C, P, exponent) / (60.0 * n))
 
 
@@ -215,9 +217,10 @@ def catalog_l10_hours(C, P, *, speed_rpm, exponent: float = 3.0):
     >>> round(float(catalog_l10_hours(570.0, 100.0, speed_rpm=2000.0, exponent=3.33)))
     246675
     """
-    C = check_positive(C, "C", "N")
-    P = check_positive(P, "P", "N")
-    S = check_positive(speed_rpm, "speed_rpm", "rev/min")
+    C = check_positive(C, "C", "N", bounded=True)
+    P = check_positive(P, "P", "N", bounded=True)
+    S = check_positive(speed_rpm, "speed_rpm", "rev/min", bounded=True)
+    C, P, S = broadcast(C=C, P=P, speed_rpm=S)
     p = float(check_positive(exponent, "exponent", "-"))
     return _s(3000.0 * (C / P) ** p * (500.0 / S))
 
@@ -255,6 +258,7 @@ def miner(lives, fractions):
     L = check_positive(lives, "lives", "h", allow_inf=True)
     t = check_range(fractions, "fractions", 0.0, 1.0, low_inclusive=True, high_inclusive=True,
                     unit="-")
+    broadcast(lives=L, fractions=t)         # names both when the shapes clash
     if L.ndim != 1 or t.shape != L.shape:
         raise ValueError(f"lives and fractions must be 1-D arrays of the same length; got "
                          f"shapes {L.shape} and {t.shape}")
@@ -371,6 +375,14 @@ def _row(angle: float, arg, n_rows: int, standard: str):
             xgt * np.ones_like(a), np.interp(a, nodes, ygt))
 
 
+def _n_rows(n_rows) -> int:
+    """``n_rows`` as an int: a whole number (``TypeError`` for text, booleans, lists)."""
+    if isinstance(n_rows, (list, tuple)) or np.ndim(n_rows) != 0:
+        raise TypeError(f"n_rows must be 1 or 2 (an integer); got {type(n_rows).__name__} "
+                        f"{n_rows!r}")
+    return int(check_integer(n_rows, "n_rows", 1))
+
+
 def xy_factors(relative_axial_load, contact_angle=0.0, n_rows: int = 1,
                standard: str = "ISO 281:2007"):
     r"""e and the X, Y pairs for Fa/Fr <= e and Fa/Fr > e, from the standard's table.
@@ -419,6 +431,7 @@ def xy_factors(relative_axial_load, contact_angle=0.0, n_rows: int = 1,
     arg = check_nonnegative(relative_axial_load, "relative_axial_load", "-")
     deg = float(np.degrees(check_range(contact_angle, "contact_angle", 0.0, np.radians(40.0),
                                        low_inclusive=True, high_inclusive=True, unit="rad")))
+    n_rows = _n_rows(n_rows)
     if n_rows not in (1, 2):
         raise ValueError(f"n_rows must be 1 or 2; got {n_rows!r}")
     if deg <= 15.0:
@@ -499,11 +512,13 @@ def equivalent_load(radial_load, axial_load, *, static_rating, f0=None, contact_
     (5124, 0.56, 1.549, 0.28)
     """
     check_choice(standard, "standard", _STANDARDS)
-    Fr = check_nonnegative(radial_load, "radial_load", "N")
-    Fa = check_nonnegative(axial_load, "axial_load", "N")
-    C0 = float(check_positive(static_rating, "static_rating", "N"))
+    Fr = check_nonnegative(radial_load, "radial_load", "N", bounded=True)
+    Fa = check_nonnegative(axial_load, "axial_load", "N", bounded=True)
+    Fr_b, Fa_b = broadcast(radial_load=Fr, axial_load=Fa)
+    C0 = float(check_positive(static_rating, "static_rating", "N", bounded=True))
     alpha = float(check_range(contact_angle, "contact_angle", 0.0, np.radians(40.0),
                               low_inclusive=True, high_inclusive=True, unit="rad"))
+    n_rows = _n_rows(n_rows)
     if n_rows not in (1, 2):
         raise ValueError(f"n_rows must be 1 or 2; got {n_rows!r}")
     i_factor = n_rows if alpha > 0.0 else 1
@@ -516,7 +531,6 @@ def equivalent_load(radial_load, axial_load, *, static_rating, f0=None, contact_
     else:
         arg = i_factor * Fa / C0
     e, xle, yle, xgt, ygt = xy_factors(arg, alpha, n_rows, standard)
-    Fr_b, Fa_b = np.broadcast_arrays(Fr, Fa)
     with np.errstate(divide="ignore", invalid="ignore"):
         ratio = np.where(Fr_b > 0, Fa_b / np.where(Fr_b > 0, Fr_b, 1.0), np.inf)
     gt = ratio > e
@@ -771,6 +785,12 @@ def bearing_life(bearing, result, rotating: str = "inner") -> LundbergPalmgrenLi
     >>> round(bearing_life(brg, res).L10, 1)
     143.7
     """
+    from .bearing import BallBearing
+
+    check_instance(bearing, "bearing", BallBearing)
+    if not (hasattr(result, "ball_loads") and hasattr(result, "contact_angles")):
+        raise TypeError(f"result must be a load-distribution result with ball_loads [N] and "
+                        f"contact_angles [rad]; got {type(result).__name__}")
     return lundberg_palmgren_life(
         np.asarray(result.ball_loads), np.asarray(result.contact_angles),
         ball_diameter=bearing.ball_diameter, pitch_diameter=bearing.pitch_diameter,
@@ -904,7 +924,8 @@ def adjusted_life(basic_life, *, material=1.0, processing=1.0, lubrication=1.0, 
     Parameters
     ----------
     basic_life : float or array_like
-        L (L10 from a catalog rating or :func:`lundberg_palmgren_life`), > 0.
+        L (L10 from a catalog rating or :func:`lundberg_palmgren_life`), > 0 and finite
+        (an unloaded bearing has no fatigue life to adjust).
     material, processing, lubrication, hardness : float
         D, E, F, G [-] (see :func:`material_factor`, :func:`processing_factor`,
         :func:`lubrication_factor`, :func:`hardness_factor`), > 0.
@@ -918,7 +939,7 @@ def adjusted_life(basic_life, *, material=1.0, processing=1.0, lubrication=1.0, 
     >>> float(adjusted_life(1000.0, material=2.0, processing=3.0, lubrication=1.0))
     6000.0
     """
-    L = check_positive(basic_life, "basic_life", "-", allow_inf=True)
+    L = check_positive(basic_life, "basic_life", "-")
     out = L
     for name, v in (("material", material), ("processing", processing),
                     ("lubrication", lubrication), ("hardness", hardness)):

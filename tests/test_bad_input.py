@@ -59,7 +59,11 @@ RADIAL = loaddist.radial(BEARING, 5000.0)
 #: Modules of ballrace.analytic that are not formula/solver APIs: the command line and the
 #: case-file reader (their input errors are CLI usage errors and CaseFileError, tested in
 #: tests/test_cli*.py and tests/test_bearing_cli.py).
-NOT_API = {"cli", "casefile"}
+NOT_API = {"cli", "casefile", "isocase"}
+# isocase is not a formula API either: ``iso_life`` takes a validated case (BearingCase,
+# checked by the case-file reader) and its load distribution, and ``rows`` formats the
+# dict that ``iso_life`` returns for the report; the numbers they pass on are checked in
+# iso281, iso16281 and clearance, which have rows below.
 MODULES = tuple(sorted(m.name for m in pkgutil.iter_modules(ballrace.analytic.__path__)
                        if not m.name.startswith("_") and m.name not in NOT_API))
 
@@ -68,7 +72,8 @@ NOT_INPUTS = {"Curvature", "HertzContact", "LineContact", "OrthogonalShear", "Ma
               "VonMisesMax", "StressState", "FilmThickness", "BallKinematics",
               "DefectFrequencies", "StaticRatingPressure", "EquivalentLoad",
               "LundbergPalmgrenLife", "LoadDistribution", "ConvergenceError",
-              "DuplexResult", "HighSpeedResult"}
+              "DuplexResult", "HighSpeedResult", "FatigueLoadLimit",
+              "ReferenceRatingLife", "OperatingClearance"}
 
 BAD = {
     "scale": [-1.0, 0.0, math.nan, math.inf, -math.inf, 1e308],
@@ -343,6 +348,91 @@ TABLE.update({
                              speed_outer="signed", control="choice"), ()),
 })
 
+# ISO 281:2007 life modification, ISO/TS 16281 reference rating life, operating clearance
+_ISO = dict(kappa=1.5, contamination=0.5, fatigue_limit=1e3)
+_ISO_ROLES = dict(kappa="pos", contamination="unit", fatigue_limit="scale")
+TABLE.update({
+    "iso281.reliability_factor": (dict(reliability=0.99, method="table"),
+                                  dict(reliability="unit", method="choice"), ()),
+    "iso281.reference_viscosity": (dict(speed_rpm=1500.0, pitch_diameter=65e-3),
+                                   dict(speed_rpm="scale", pitch_diameter="scale"),
+                                   ("speed_rpm", "pitch_diameter")),
+    "iso281.viscosity_ratio": (dict(viscosity=20e-6, speed_rpm=1500.0, pitch_diameter=65e-3),
+                               dict(viscosity="scale", speed_rpm="scale",
+                                    pitch_diameter="scale"),
+                               ("viscosity", "speed_rpm", "pitch_diameter")),
+    "iso281.walther_constants": (dict(nu40=68e-6, nu100=8.7e-6),
+                                 dict(nu40="scale", nu100="scale"), ("nu40", "nu100")),
+    "iso281.operating_viscosity": (dict(nu40=68e-6, nu100=8.7e-6, temperature=343.15),
+                                   dict(nu40="scale", nu100="scale", temperature="scale"),
+                                   ("nu40", "nu100", "temperature")),
+    "iso281.fatigue_load_limit": (dict(static_rating=20e3, pitch_diameter=65e-3),
+                                  dict(static_rating="scale", pitch_diameter="scale"),
+                                  ("static_rating", "pitch_diameter")),
+    "iso281.fatigue_load_limit_hertz": (dict(bearing=BEARING, contact_angle=0.0,
+                                             stress_limit=1.5e9),
+                                        dict(bearing="object", contact_angle="angle",
+                                             stress_limit="scale"), ()),
+    "iso281.contamination_factor": (dict(level="normal cleanliness", pitch_diameter=65e-3,
+                                         which="mean"),
+                                    dict(level="choice", pitch_diameter="scale",
+                                         which="choice"), ()),
+    "iso281.life_modification_factor": ({**_ISO, "load": 3e3, "bearing_type": "radial ball",
+                                         "cap": 50.0},
+                                        {**_ISO_ROLES, "load": "scale",
+                                         "bearing_type": "choice", "cap": "pos"},
+                                        ("kappa", "contamination", "fatigue_limit", "load")),
+    "iso281.modified_rating_life": ({**_ISO, "C": 30e3, "P": 3e3, "reliability": 0.9},
+                                    {**_ISO_ROLES, "C": "scale", "P": "scale",
+                                     "reliability": "unit"},
+                                    ("C", "P", "kappa", "contamination", "fatigue_limit",
+                                     "reliability")),
+    "iso281.modified_rating_life_hours": ({**_ISO, "C": 30e3, "P": 3e3, "speed_rpm": 1500.0,
+                                          "reliability": 0.9},
+                                         {**_ISO_ROLES, "C": "scale", "P": "scale",
+                                          "speed_rpm": "scale", "reliability": "unit"},
+                                         ("C", "P", "speed_rpm", "kappa")),
+    "iso16281.raceway_capacities": (dict(C=30e3, n_balls=9, ball_diameter=12.7e-3,
+                                         pitch_diameter=65e-3, f_inner=0.52, f_outer=0.52,
+                                         contact_angle=0.0, n_rows=1),
+                                    dict(C="scale", n_balls="count", ball_diameter="scale",
+                                         pitch_diameter="scale", f_inner="pos",
+                                         f_outer="pos", contact_angle="angle",
+                                         n_rows="count"), ()),
+    "iso16281.reference_rating_life": (dict(bearing=BEARING, result=RADIAL,
+                                            dynamic_rating=30e3, rotating="inner",
+                                            nominal_contact_angle=0.0),
+                                       dict(bearing="object", result="object",
+                                            dynamic_rating="scale", rotating="choice",
+                                            nominal_contact_angle="angle"), ()),
+    # inner ring on a solid shaft: mating_diameter is the shaft bore (>= 0); a negative
+    # interference is a loose fit (zero pressure), so interference is "signed"
+    "clearance.fit_pressure": (dict(interference=15e-6, seat_diameter=0.025,
+                                    ring_diameter=0.03, mating_diameter=0.0, E_ring=208e9,
+                                    nu_ring=0.3, E_mate=208e9, nu_mate=0.3, ring="inner"),
+                               dict(interference="signed", seat_diameter="scale",
+                                    ring_diameter="scale", mating_diameter="load",
+                                    E_ring="scale", nu_ring="unit", E_mate="scale",
+                                    nu_mate="unit", ring="choice"), ()),
+    "clearance.operating_clearance": (
+        dict(bearing=BEARING, bore=0.04, outside_diameter=0.09, initial_clearance=20e-6,
+             shaft_interference=15e-6, housing_interference=0.0, shaft_bore=0.0,
+             housing_diameter=0.12,
+             inner_temperature=313.15, outer_temperature=303.15, ball_temperature=308.15,
+             reference_temperature=293.15, ring_expansion=11.5e-6, ball_expansion=11.5e-6,
+             shaft_expansion=11.5e-6, housing_expansion=11.5e-6, shaft_material=STEEL,
+             housing_material=STEEL),
+        dict(bearing="object", bore="scale", outside_diameter="scale",
+             initial_clearance="signed", shaft_interference="signed",
+             housing_interference="signed", shaft_bore="load",
+             housing_diameter="radius",      # refuses 0, NaN, 1e308 (inf: a large housing)
+             inner_temperature="scale",
+             outer_temperature="scale", ball_temperature="scale",
+             reference_temperature="scale", ring_expansion="finite", ball_expansion="finite",
+             shaft_expansion="finite", housing_expansion="finite", shaft_material="object",
+             housing_material="object"), ()),
+})
+
 # methods of input classes (called on the instance in METHOD_OF)
 TABLE.update({
     "bearing.BallBearing.contacts": (dict(ball_loads=np.full(9, 500.0), contact_angles=0.4,
@@ -355,7 +445,7 @@ TABLE.update({
 })
 METHOD_OF = {"bearing.BallBearing": ANGULAR}
 
-#: Known gaps (issue 14 items 7-9) in the solver and life modules, one test id each; they
+#: Known gaps (issue 14 items 7-9) in the solver modules, one test id each; they
 #: are strict xfails, so a fix makes the test XPASS and fail: then delete its line.
 KNOWN = {
     # analytic/bearing.py
@@ -368,39 +458,6 @@ KNOWN = {
     'duplex.axial_deflection-bearing-float-1.0',
     'duplex.axial_load-axial_deflection-1e+308',
     'duplex.axial_load-radial_deflection-1e+308',
-    # analytic/life.py
-    'life.adjusted_life-basic_life-inf',
-    "life.bearing_life-bearing-str-'x'",
-    'life.bearing_life-bearing-float-1.0',
-    "life.bearing_life-result-str-'x'",
-    'life.bearing_life-result-float-1.0',
-    'life.catalog_l10_hours-C-1e+308',
-    'life.catalog_l10_hours-P-1e+308',
-    'life.catalog_l10_hours-speed_rpm-1e+308',
-    'life.equivalent_load-radial_load-1e+308',
-    'life.equivalent_load-axial_load-1e+308',
-    'life.equivalent_load-static_rating-1e+308',
-    "life.equivalent_load-n_rows-str-'1.0'",
-    'life.equivalent_load-n_rows-bool-True',
-    'life.equivalent_load-n_rows-list-[[1.0, 2.0], [3.0]]',
-    'life.equivalent_load_for-radial_load-1e+308',
-    'life.equivalent_load_for-axial_load-1e+308',
-    'life.l10-C-1e+308',
-    'life.l10-P-1e+308',
-    'life.l10_hours-C-1e+308',
-    'life.l10_hours-P-1e+308',
-    'life.l10_hours-speed_rpm-1e+308',
-    "life.xy_factors-n_rows-str-'1.0'",
-    'life.xy_factors-n_rows-bool-True',
-    'life.xy_factors-n_rows-list-[[1.0, 2.0], [3.0]]',
-    'life.catalog_l10_hours-C-P',
-    'life.catalog_l10_hours-P-speed_rpm',
-    'life.equivalent_load-radial_load-axial_load',
-    'life.equivalent_load_for-radial_load-axial_load',
-    'life.l10-C-P',
-    'life.l10_hours-C-P',
-    'life.l10_hours-P-speed_rpm',
-    'life.miner-lives-fractions',
     # analytic/loaddist.py
     "loaddist.ball_stiffness-bearing-str-'x'",
     'loaddist.ball_stiffness-bearing-float-1.0',
