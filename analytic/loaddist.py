@@ -940,10 +940,12 @@ def _result(bearing, model, psi, x0, z0, Pd, u, applied, imposed, arm, iters, sh
             f"{what} did not reach equilibrium: relative residual {rel[i]:.3e} "
             f"(> {tol:g}) after {int(np.max(iters, initial=0))} iterations in load case {i}; "
             f"loads {app[i].tolist()}, displacements {u[i].tolist()}")
-    beta = st.beta.copy()                         # loaded balls have x > 0: |beta| < pi/2
-    out = np.abs(beta) > 0.5 * np.pi
-    beta = np.where(out, beta - np.copysign(np.pi, beta), beta)
-    beta = np.where(beta <= -0.5 * np.pi, beta + np.pi, beta)
+    # loaded balls have x > 0: |beta| <= pi/2 as it is; fold the unloaded ones only (a
+    # loaded ball at beta = -pi/2 in floating point must keep its sign)
+    beta = st.beta.copy()
+    unl = ~(st.Q > 0)
+    beta = np.where(unl & (np.abs(beta) > 0.5 * np.pi), beta - np.copysign(np.pi, beta), beta)
+    beta = np.where(unl & (beta <= -0.5 * np.pi), beta + np.pi, beta)
     return LoadDistribution(
         bearing=bearing, azimuths=psi,
         displacements=u.reshape(shape + (5,)), loads=st.F.reshape(shape + (5,)),

@@ -656,3 +656,17 @@ def test_issue14_item4_near_zero_loads_with_clearance():
     assert np.allclose(r.loads, r.applied, rtol=0, atol=1e-9 * 44e-3)
     r = ricci218().eccentric_thrust([2e-3, 5e-3], 0.01)       # 2-3e-12 vs rtol 1e-12 before
     assert np.all(r.relative_residual < RTOL_EQ)
+
+
+def test_issue14_fuzz_loaded_ball_at_minus_90_degrees_keeps_its_sign():
+    # found by `make fuzz`: 3 balls, pure tilting moment; balls 2 and 3 loaded at
+    # beta = -/+ pi/2 in floating point; folding -pi/2 to +pi/2 flipped a thrust component
+    brg = BallBearing(0.004153618540158789, 3, 0.004886610047245634, 0.505, 0.505,
+                      free_contact_angle=1.470628905633337,
+                      ball_material=ballrace.SILICON_NITRIDE)
+    r = brg.solve(My=254.5472428465776, moment_arm="contact")
+    Q, b = r.ball_loads, r.contact_angles
+    arm = 0.5 * (brg.pitch_diameter - brg.ball_diameter * np.cos(b))
+    assert np.sum(arm * Q * np.sin(b) * np.sin(r.azimuths)) == pytest.approx(254.5472428465776,
+                                                                             rel=1e-9)
+    assert np.all(np.abs(b) <= np.pi / 2)
