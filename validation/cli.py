@@ -206,9 +206,6 @@ def _summary(console, run) -> None:
     t.add_row("[bold]total[/]", *[f"[bold]{total[s]}[/]" for s in STATUSES],
               f"{sum(r.duration for r in run.results):.2f}", end_section=True)
     console.print(t)
-    if not str(run.scheduler).startswith("serial"):
-        console.print("case times are the sum of each case's own run time; run in parallel, "
-                      "they can add up to more than the wall-clock time", style="dim")
     bad = [r for r in run.results if not r.ok]
     if bad:
         # a list, not a table: the reasons are sentences that must not be cut into columns
