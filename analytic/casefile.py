@@ -376,6 +376,41 @@ def parse_inf(q, value, where):
     return q(value, "[length]", where)
 
 
+def validate_spec(model, data: dict, source: str):
+    """``model.model_validate(data)``; pydantic's errors as one :class:`CaseFileError`.
+
+    Each error becomes a line ``SOURCE: [table].key: message`` (shared by the bearing and
+    FE case-file loaders).
+    """
+    from pydantic import ValidationError
+
+    try:
+        return model.model_validate(data)
+    except ValidationError as exc:
+        lines = []
+        for err in exc.errors():
+            loc = [str(p) for p in err["loc"]]
+            key = f"[{loc[0]}]." + ".".join(loc[1:]) if len(loc) > 1 else (loc[0] if loc else "")
+            lines.append(f"{source}: {key}: {err['msg']}")
+        raise CaseFileError("\n".join(lines)) from None
+
+
+def quantity_reader(source: str):
+    """``q(value, dimension, where)``: a unit string to SI, ``None`` kept; a bad string is a
+    :class:`CaseFileError` naming ``source`` and ``where``."""
+    from ballrace.units import parse_quantity
+
+    def q(value, dim, where):
+        if value is None:
+            return None
+        try:
+            return parse_quantity(value, dim, where)
+        except ValueError as exc:
+            raise CaseFileError(f"{source}: {exc}") from None
+
+    return q
+
+
 def parse_case(data: dict, source: str = "<case>") -> BearingCase:
     """Validate a case dictionary (parsed TOML) and convert it to SI.
 
@@ -408,29 +443,10 @@ def parse_case(data: dict, source: str = "<case>") -> BearingCase:
     ...
     ballrace.analytic.casefile.CaseFileError: <case>: [bearing].ball_diameter: Field required...
     """
-    from pydantic import ValidationError
-
     import ballrace
-    from ballrace.units import parse_quantity
 
-    CaseSpec = _models()
-    try:
-        spec = CaseSpec.model_validate(data)
-    except ValidationError as exc:
-        lines = []
-        for err in exc.errors():
-            loc = [str(p) for p in err["loc"]]
-            key = f"[{loc[0]}]." + ".".join(loc[1:]) if len(loc) > 1 else (loc[0] if loc else "")
-            lines.append(f"{source}: {key}: {err['msg']}")
-        raise CaseFileError("\n".join(lines)) from None
-
-    def q(value, dim, where, allow_none=False):
-        if value is None:
-            return None
-        try:
-            return parse_quantity(value, dim, where)
-        except ValueError as exc:
-            raise CaseFileError(f"{source}: {exc}") from None
+    spec = validate_spec(_models(), data, source)
+    q = quantity_reader(source)
 
     b = spec.bearing
     mats = {}

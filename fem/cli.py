@@ -170,11 +170,8 @@ def parse_fe_case(data: dict, source: str = "<case>", **overrides) -> FECaseFile
     ...
     ballrace.analytic.casefile.CaseFileError: x.toml: [case].lod: Extra inputs are not permitted
     """
-    from pydantic import ValidationError
-
     import ballrace
-    from ballrace.analytic.casefile import CaseFileError
-    from ballrace.units import parse_quantity
+    from ballrace.analytic.casefile import CaseFileError, quantity_reader, validate_spec
 
     from . import api
 
@@ -182,23 +179,8 @@ def parse_fe_case(data: dict, source: str = "<case>", **overrides) -> FECaseFile
     if msg:
         raise CaseFileError(msg)
     data = _merge(data, overrides)
-    try:
-        spec = _models().model_validate(data)
-    except ValidationError as exc:
-        lines = []
-        for err in exc.errors():
-            loc = [str(p) for p in err["loc"]]
-            key = f"[{loc[0]}]." + ".".join(loc[1:]) if len(loc) > 1 else (loc[0] if loc else "")
-            lines.append(f"{source}: {key}: {err['msg']}")
-        raise CaseFileError("\n".join(lines)) from None
-
-    def q(value, dim, where):
-        if value is None:
-            return None
-        try:
-            return parse_quantity(value, dim, where)
-        except ValueError as exc:
-            raise CaseFileError(f"{source}: {exc}") from None
+    spec = validate_spec(_models(), data, source)
+    q = quantity_reader(source)
 
     c = spec.case
     mats = {}

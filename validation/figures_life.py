@@ -208,4 +208,4 @@ if __name__ == "__main__":  # pragma: no cover - documentation images
     import sys
 
     for p in write_pngs(sys.argv[1] if len(sys.argv) > 1 else "."):
-        print(p)
+        sys.stdout.write(f"{p}\n")
