@@ -10,7 +10,6 @@ Two kinds of reference data are kept apart (STYLE.md §9):
 
 Stresses are compared in units of p_max, lengths in units of b (or a for the circle).
 """
-import time
 
 import mpmath as mp
 import numpy as np
@@ -293,15 +292,12 @@ class TestAxis:
         ref = -1 / np.sqrt((1 + (z / c.semi_axis_x) ** 2) * (1 + (z / c.semi_axis_y) ** 2))
         assert np.allclose(s.szz / c.p_max, ref, rtol=1e-14, atol=0)
 
-    def test_depth_search_vectorized_and_fast(self):
+    def test_depth_search_vectorized(self):
+        # speed is measured in benchmarks/bench_subsurface.py, not here
         Q = np.linspace(100, 5000, 10**4)
         c = elliptical_contact(Q, 0.005, np.logspace(np.log10(0.005), 0, 10**4), E_PRIME)
-        subsurface.max_shear(circle())          # warm-up (imports, caches)
-        t0 = time.perf_counter()
         m = subsurface.max_shear(c)
         v = subsurface.von_mises(c)
-        elapsed = time.perf_counter() - t0
-        assert elapsed < 2.0, elapsed           # measured ~0.4 s for both on 2 cores
         assert m.tau_max.shape == (10**4,)
         # spot-check against scalar calls and a brute-force grid
         for i in (0, 4321, 9999):
@@ -402,14 +398,12 @@ class TestField:
             tr.append((s.sxx + s.syy + s.szz) / c.p_max / (1 + nu))
         assert np.max(np.abs(tr[0] - tr[1])) < 5e-15
 
-    def test_field_100x100_fast(self):
+    def test_field_100x100_shape(self):
+        # speed is measured in benchmarks/bench_subsurface.py, not here
         c = contact(20.0)
         X, Z = np.meshgrid(np.linspace(-3, 3, 100) * c.b, np.linspace(0, 3, 100) * c.b)
-        t0 = time.perf_counter()
         s = subsurface.stress(c, X, 0.3 * c.a, Z)
-        elapsed = time.perf_counter() - t0
-        assert s.sxx.shape == (100, 100)
-        assert elapsed < 3.0, elapsed        # measured ~0.3 s on 2 cores
+        assert s.sxx.shape == (100, 100) and np.all(np.isfinite(s.sxx))
 
     def test_slender_and_far_points_finite(self):
         c = contact(1e8)                     # k ~ 3.3e4
