@@ -40,18 +40,18 @@ RACES = ("inner", "outer")
 
 
 def _positive_float(value, name: str, unit: str) -> float:
-    arr = check_positive(value, name, unit)
+    arr = check_positive(value, name, unit, bounded=True)
     if arr.ndim:
         raise TypeError(f"{name} must be a scalar [{unit}]; got an array of shape {arr.shape}")
     return float(arr)
 
 
 def _integer(value, name: str, low: int) -> int:
-    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
-        if isinstance(value, numbers.Real) and float(value).is_integer():
-            value = int(value)
-        else:
-            raise TypeError(f"{name} must be an integer; got {type(value).__name__} {value!r}")
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise TypeError(f"{name} must be an integer; got {type(value).__name__} {value!r}")
+    if not isinstance(value, numbers.Integral):
+        if not float(value).is_integer():
+            raise ValueError(f"{name} must be a whole number >= {low}; got {value!r}")
     value = int(value)
     if value < low:
         raise ValueError(f"{name} must be an integer >= {low}; got {value}")

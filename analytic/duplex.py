@@ -138,8 +138,8 @@ def axial_load(bearing: BallBearing, axial_deflection, radial_deflection=0.0):
     """
     if not isinstance(bearing, BallBearing):
         raise TypeError(f"bearing must be a ballrace.BallBearing; got {type(bearing).__name__}")
-    da = as_array(axial_deflection, "axial_deflection")
-    dr = as_array(radial_deflection, "radial_deflection")
+    da = as_array(axial_deflection, "axial_deflection", bounded=True, tiny_ok=True)
+    dr = as_array(radial_deflection, "radial_deflection", bounded=True, tiny_ok=True)
     Fa, _, _, _ = _forces(bearing, da, dr)
     return Fa[()] if np.ndim(Fa) == 0 else Fa
 
@@ -184,7 +184,9 @@ def axial_deflection(bearing: BallBearing, Fa, rtol: float = 1e-13, max_iter: in
     >>> round(axial_deflection(brg, 17800.0) * 1e6, 4)
     36.7922
     """
-    F = float(check_nonnegative(Fa, "Fa", "N"))
+    if not isinstance(bearing, BallBearing):
+        raise TypeError(f"bearing must be a ballrace.BallBearing; got {type(bearing).__name__}")
+    F = float(check_nonnegative(Fa, "Fa", "N", bounded=True, tiny_ok=True))
     return _inverse(bearing, F, rtol, max_iter)
 
 
@@ -344,7 +346,7 @@ class DuplexPair:
             raise TypeError("bearing must be a ballrace.BallBearing; got "
                             f"{type(self.bearing).__name__}")
         check_choice(self.arrangement, "arrangement", ARRANGEMENTS)
-        p = check_nonnegative(self.preload, "preload", "N")
+        p = check_nonnegative(self.preload, "preload", "N", bounded=True, tiny_ok=True)
         if p.ndim:
             raise TypeError("preload must be a scalar [N]")
         object.__setattr__(self, "preload", float(p))

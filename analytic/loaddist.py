@@ -57,8 +57,8 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from . import hertz
-from ._checks import (as_array, broadcast, check_choice, check_nonnegative, check_positive,
-                      check_range)
+from ._checks import (as_array, broadcast, check_choice, check_integer, check_nonnegative,
+                      check_positive, check_range)
 from .bearing import BallBearing
 
 __all__ = [
@@ -244,7 +244,10 @@ def ball_stiffness(bearing: BallBearing, contact_angle):
     >>> round(float(Kn) / 1e9, 4), bool(np.isclose(Kn, brg.contact_stiffness(np.radians(40))[2]))
     (14.2471, True)
     """
-    b = as_array(contact_angle, "contact_angle")
+    if not isinstance(bearing, BallBearing):
+        raise TypeError(f"bearing must be a ballrace.BallBearing; got {type(bearing).__name__}")
+    b = check_range(contact_angle, "contact_angle", -np.pi, np.pi, low_inclusive=True,
+                    high_inclusive=True, unit="rad")
     Kn, d = _kn_exact(_Model.of(bearing), b)
     return hertz._scalar(Kn), hertz._scalar(d)
 
@@ -888,7 +891,8 @@ def _loaded_zone(model, x0, z0, u):
 
 # =========================================================================== public solvers
 def _loads_array(Fa, Fy, Fz, My, Mz):
-    arrs = [as_array(v, n) for v, n in ((Fa, "Fa"), (Fy, "Fy"), (Fz, "Fz"), (My, "My"), (Mz, "Mz"))]
+    arrs = [as_array(v, n, bounded=True, tiny_ok=True)
+            for v, n in ((Fa, "Fa"), (Fy, "Fy"), (Fz, "Fz"), (My, "My"), (Mz, "Mz"))]
     b = np.broadcast_arrays(*arrs)
     return np.stack(b, axis=-1)
 
@@ -1205,6 +1209,7 @@ def radial(bearing: BallBearing, Fr, clearance=None, azimuth_offset: float = 0.0
     90.0
     """
     Fr = check_nonnegative(Fr, "Fr", "N")
+    Fr = as_array(Fr, "Fr", bounded=True, tiny_ok=True)          # named before it becomes Fy
     d = np.array([0.0, np.nan, np.nan, 0.0, 0.0])
     return solve(bearing, Fy=Fr, displacements=d, clearance=clearance,
                  azimuth_offset=azimuth_offset, _centered=True, **kwargs)
@@ -1248,6 +1253,8 @@ def combined(bearing: BallBearing, Fr, Fa, azimuth_offset: float = 0.0,
     >>> round(float(r.max_ball_load)), round(float(np.degrees(r.loaded_zone)), 2)
     (3275, 180.0)
     """
+    Fr, Fa = broadcast(Fr=as_array(Fr, "Fr", bounded=True, tiny_ok=True),   # named before
+                       Fa=as_array(Fa, "Fa", bounded=True, tiny_ok=True))   # Fr becomes Fy
     d = np.array([np.nan, np.nan, np.nan, 0.0, 0.0])
     return solve(bearing, Fa=Fa, Fy=Fr, displacements=d, azimuth_offset=azimuth_offset, **kwargs)
 
@@ -1302,7 +1309,7 @@ def thrust(bearing: BallBearing, Fa, *, rtol: float = 1e-13, max_iter: int = 100
     if not isinstance(bearing, BallBearing):
         raise TypeError(f"bearing must be a ballrace.BallBearing; got {type(bearing).__name__}")
     model = _Model.of(bearing)
-    Fa_ = check_nonnegative(Fa, "Fa", "N")
+    Fa_ = check_nonnegative(Fa, "Fa", "N", bounded=True, tiny_ok=True)
     rtol = float(check_range(rtol, "rtol", 0.0, 1e-3, high_inclusive=True, unit="-"))
     shape = Fa_.shape
     Fv = Fa_.ravel()
@@ -1502,7 +1509,7 @@ def jones_radial_factor(clearance_ratio):
     >>> round(float(jones_radial_factor(0.0)), 4)
     4.3671
     """
-    c = check_range(clearance_ratio, "clearance_ratio", None, 1.0, unit="-")
+    c = check_range(clearance_ratio, "clearance_ratio", 0.0, 1.0, low_inclusive=True, unit="-")
     q = 1.0 - c
     return hertz._scalar(np.pi * q**1.5 / (2.491 * (np.sqrt(1.0 + (q / 1.23) ** 2) - 1.0)))
 
@@ -1533,8 +1540,8 @@ def stribeck_max_ball_load(Fr, n_balls, factor: float = 5.0):
     >>> float(stribeck_max_ball_load(1000.0, 10))
     500.0
     """
-    Fr = check_nonnegative(Fr, "Fr", "N")
-    Z = float(check_range(n_balls, "n_balls", 1.0, None, low_inclusive=True, unit="-"))
+    Fr = check_nonnegative(Fr, "Fr", "N", bounded=True, tiny_ok=True)
+    Z = float(check_integer(n_balls, "n_balls", 1))
     f = float(check_range(factor, "factor", 0.0, None, unit="-"))
     return hertz._scalar(f * Fr / Z)
 
@@ -1573,10 +1580,10 @@ def jones_max_ball_load(Fr, n_balls, Kn, clearance=0.0):
     >>> round(float(Q / 100.0), 4)   # = Z_w(0) F_r / Z
     4.3671
     """
-    Fr = check_positive(Fr, "Fr", "N")
-    Z = float(check_range(n_balls, "n_balls", 1.0, None, low_inclusive=True, unit="-"))
-    Kn = float(check_positive(Kn, "Kn", "N/m^1.5"))
-    Pd = float(as_array(clearance, "clearance"))
+    Fr = check_positive(Fr, "Fr", "N", bounded=True)
+    Z = float(check_integer(n_balls, "n_balls", 1))
+    Kn = float(check_positive(Kn, "Kn", "N/m^1.5", bounded=True))
+    Pd = float(as_array(clearance, "clearance", bounded=True, tiny_ok=True, unit="m"))
     half = 0.5 * Pd
     # bisection on ln t, t = delta_r - P_d/2 > 0 (LHS - RHS increases with t)
     lo = np.full(Fr.shape, -60.0)

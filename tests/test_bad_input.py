@@ -313,7 +313,7 @@ TABLE.update({
                                         dict(Fr="load", n_balls="count", factor="pos"), ()),
     "loaddist.jones_max_ball_load": (dict(Fr=5000.0, n_balls=9, Kn=1e10, clearance=0.0),
                                      dict(Fr="load", n_balls="count", Kn="scale",
-                                          clearance="load"), ()),
+                                          clearance="signed"), ()),   # < 0: interference
     "bearing.BallBearing": (dict(ball_diameter=12.7e-3, n_balls=9, pitch_diameter=65e-3,
                                  f_inner=0.52, f_outer=0.52, diametral_clearance=0.0,
                                  material=STEEL),
@@ -447,45 +447,7 @@ METHOD_OF = {"bearing.BallBearing": ANGULAR}
 
 #: Known gaps (issue 14 items 7-9) in the solver modules, one test id each; they
 #: are strict xfails, so a fix makes the test XPASS and fail: then delete its line.
-KNOWN = {
-    # analytic/bearing.py
-    'bearing.BallBearing-n_balls-2.5',
-    'bearing.BallBearing-n_balls-bool-True',
-    'bearing.BallBearing-pitch_diameter-1e+308',
-    # analytic/duplex.py
-    'duplex.DuplexPair-preload-1e+308',
-    "duplex.axial_deflection-bearing-str-'x'",
-    'duplex.axial_deflection-bearing-float-1.0',
-    'duplex.axial_load-axial_deflection-1e+308',
-    'duplex.axial_load-radial_deflection-1e+308',
-    # analytic/loaddist.py
-    "loaddist.ball_stiffness-bearing-str-'x'",
-    'loaddist.ball_stiffness-bearing-float-1.0',
-    'loaddist.ball_stiffness-contact_angle-10.0',
-    'loaddist.combined-Fr-nan',
-    'loaddist.combined-Fr-inf',
-    'loaddist.combined-Fr--inf',
-    'loaddist.combined-Fr-1e+308',
-    "loaddist.combined-Fr-str-'1.0'",
-    'loaddist.combined-Fr-bool-True',
-    'loaddist.combined-Fr-list-[[1.0, 2.0], [3.0]]',
-    'loaddist.combined-Fa-1e+308',
-    'loaddist.jones_max_ball_load-Fr-1e+308',
-    'loaddist.jones_max_ball_load-n_balls-2.5',
-    'loaddist.jones_max_ball_load-Kn-1e+308',
-    'loaddist.jones_max_ball_load-clearance--1.0',
-    'loaddist.jones_max_ball_load-clearance-1e+308',
-    'loaddist.jones_radial_factor-clearance_ratio--1.0',
-    'loaddist.radial-Fr-1e+308',
-    'loaddist.solve-Fa-1e+308',
-    'loaddist.solve-Fy-1e+308',
-    'loaddist.solve-Fz-1e+308',
-    'loaddist.solve-My-1e+308',
-    'loaddist.solve-Mz-1e+308',
-    'loaddist.stribeck_max_ball_load-Fr-1e+308',
-    'loaddist.stribeck_max_ball_load-n_balls-2.5',
-    'loaddist.thrust-Fa-1e+308',
-}
+KNOWN: set[str] = set()   # none left (issue 14); add an id here only with an issue for it
 
 
 def _public():

@@ -176,8 +176,10 @@ def test_invalid_geometry_names_argument(kw, name):
 
 
 def test_type_errors():
+    with pytest.raises(ValueError, match="n_balls must be a whole number"):
+        ricci218(n_balls=12.5)                  # a number, but not a count: a bad value
     with pytest.raises(TypeError, match="n_balls"):
-        ricci218(n_balls=12.5)
+        ricci218(n_balls=True)
     with pytest.raises(TypeError, match="material"):
         ricci218(ball_material="steel")
     with pytest.raises(TypeError, match="ball_diameter"):

@@ -540,10 +540,14 @@ def test_issue14_nan_is_not_convergence():
         brg.solve(Fa=17800.0, initial=1e308)
     with pytest.raises(ValueError, match=r"e = 1e\+308 m .* e < d_e/2 = 0.06263 m"):
         brg.eccentric_thrust(17800.0, 1e308)
-    with pytest.raises(ValueError, match="beyond the load-deflection range"):
-        brg.solve(Fy=1e308)
-    with pytest.raises(ValueError, match="beyond the load-deflection range"):
+    with pytest.raises(ValueError, match="Fy must have a physical magnitude"):
+        brg.solve(Fy=1e308)                     # named at the boundary
+    with pytest.raises(ValueError, match="Fa must have a physical magnitude"):
         brg.thrust(1e300)
+    with pytest.raises(ValueError, match="beyond the load-deflection range"):
+        brg.solve(Fy=1e9)                       # physical number, far beyond the bearing
+    with pytest.raises(ValueError, match="beyond the load-deflection range"):
+        brg.thrust(1e9)
 
 
 @pytest.mark.parametrize("bf", [np.pi / 2 - 1e-14, np.pi / 2 - 1e-8, np.pi / 2 - 1e-4])
