@@ -308,3 +308,13 @@ def test_cli_baseline_that_is_not_a_results_json(tmp_path, content):
     out = " ".join(r.output.split())
     assert "picture.png" in out and "is not a results JSON" in out, r.output
     assert "UnicodeDecodeError" not in r.output and "Traceback" not in r.output
+
+
+def test_case_glob_ignores_folders(tmp_path, monkeypatch):
+    """'fem*' run from the repository root also matched the fem/ folder (IsADirectoryError)."""
+    from ballrace.validation.schema import load_cases
+
+    (tmp_path / "fem").mkdir()
+    monkeypatch.chdir(tmp_path)
+    cases = load_cases("fem*")
+    assert cases and all(c.area == "fem" for c in cases)

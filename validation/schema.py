@@ -502,7 +502,8 @@ def load_cases(pattern: str | None = None) -> list[Case]:
     if pattern is None:
         files = sorted(default_case_dir().glob("*.toml"))
     else:
-        files = sorted(Path(p) for p in _glob.glob(pattern))
+        # files only: 'fem*' run from a checkout also matches the fem/ package folder
+        files = sorted(Path(p) for p in _glob.glob(pattern) if os.path.isfile(p))
         if not files and not os.path.isabs(pattern):
             pat = pattern if pattern.endswith(".toml") else pattern + ".toml"
             files = sorted(default_case_dir().glob(pat))
