@@ -48,7 +48,8 @@ import numpy as np
 
 from ._checks import as_array, check_choice, check_nonnegative, check_positive
 from .bearing import BallBearing
-from .loaddist import MAX_APPROACH_RATIO, ConvergenceError, _Model, ball_stiffness
+from .loaddist import (MAX_APPROACH_RATIO, ConvergenceError, _fold_unloaded, _Model,
+                       ball_stiffness)
 
 __all__ = ["ARRANGEMENTS", "DuplexPair", "DuplexResult", "axial_load", "axial_deflection",
            "power_law_unloading_ratio"]
@@ -59,26 +60,32 @@ ARRANGEMENTS = ("DB", "DF", "DT")
 
 
 # =========================================================================== one bearing
+def _groove_centres(bearing, da, dr):
+    """(A, psi, x, z): radial and axial components of each ball's line of groove centres [m]
+    at ring displacements (da, dr), vectorized over their leading axes (Jones 1960;
+    H&D 1981 eqs. 3.61-3.63)."""
+    A = bearing.curvature_center_distance
+    bf = bearing.free_contact_angle
+    psi = bearing.azimuths(0.0)
+    z = A * np.sin(bf) + np.asarray(da, float)[..., None]
+    x = A * np.cos(bf) + np.asarray(dr, float)[..., None] * np.cos(psi)
+    return A, psi, x, z
+
+
 def _forces(bearing, da, dr):
     """(Fa, Fr, ball loads, contact angles) of one bearing at ring displacements (da, dr).
 
     Vectorized over leading axes of ``da`` and ``dr`` (broadcast); Jones combined-load
     model (H&D 1981 eqs. 3.61-3.70) with K_n at each ball's own angle.
     """
-    A = bearing.curvature_center_distance
-    bf = bearing.free_contact_angle
-    psi = bearing.azimuths(0.0)
-    da = np.asarray(da, float)[..., None]
-    dr = np.asarray(dr, float)[..., None]
-    z = A * np.sin(bf) + da
-    x = A * np.cos(bf) + dr * np.cos(psi)
+    A, psi, x, z = _groove_centres(bearing, da, dr)
     s = np.hypot(x, z)
     b = np.arctan2(z, x)
     Kn, _ = ball_stiffness(bearing, b)
-    # half-torus grooves: no contact where the groove-centre line points inwards (x <= 0),
-    # whose angle is reported folded into (-pi/2, pi/2] (as in loaddist)
+    # half-torus grooves: no contact where the groove-centre line points inwards (x <= 0);
+    # unloaded balls report that line's angle folded into (-pi/2, pi/2] (as in loaddist)
     Q = np.where(x > 0, Kn * np.maximum(s - A, 0.0) ** 1.5, 0.0)
-    b = np.where(b > 0.5 * np.pi, b - np.pi, np.where(b <= -0.5 * np.pi, b + np.pi, b))
+    b = _fold_unloaded(b, Q)
     Fa = np.sum(Q * np.sin(b), axis=-1)
     Fr = np.sum(Q * np.cos(b) * np.cos(psi), axis=-1)
     return Fa, Fr, Q, b
@@ -86,21 +93,13 @@ def _forces(bearing, da, dr):
 
 def _approach(bearing, da, dr):
     """Largest ball approach s - A of one bearing at ring displacements (da, dr) [m]."""
-    A = bearing.curvature_center_distance
-    bf = bearing.free_contact_angle
-    psi = bearing.azimuths(0.0)
-    z = A * np.sin(bf) + np.asarray(da, float)[..., None]
-    x = A * np.cos(bf) + np.asarray(dr, float)[..., None] * np.cos(psi)
+    A, _, x, z = _groove_centres(bearing, da, dr)
     return float(np.max(np.hypot(x, z) - A))
 
 
 def _past_groove(bearing, da, dr):
     """True if a ball is pressed past 90 deg (x <= 0 with s > A) at displacements (da, dr)."""
-    A = bearing.curvature_center_distance
-    bf = bearing.free_contact_angle
-    psi = bearing.azimuths(0.0)
-    z = A * np.sin(bf) + np.asarray(da, float)[..., None]
-    x = A * np.cos(bf) + np.asarray(dr, float)[..., None] * np.cos(psi)
+    A, _, x, z = _groove_centres(bearing, da, dr)
     return bool(np.any((x <= 0) & (np.hypot(x, z) > A)))
 
 

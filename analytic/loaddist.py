@@ -890,6 +890,19 @@ def _loaded_zone(model, x0, z0, u):
 
 
 # =========================================================================== public solvers
+def _fold_unloaded(beta, Q):
+    """Contact angles with those of unloaded balls folded into (-pi/2, pi/2] [rad].
+
+    An unloaded ball reports the angle of its line of groove centres (a line has no sense,
+    so atan2's pi on the far side becomes 0).  Loaded balls have x > 0 and |beta| <= pi/2
+    already; they are left alone, so a loaded ball at beta = -pi/2 in floating point keeps
+    its sign (and its thrust).
+    """
+    unl = ~(np.asarray(Q) > 0)
+    beta = np.where(unl & (np.abs(beta) > 0.5 * np.pi), beta - np.copysign(np.pi, beta), beta)
+    return np.where(unl & (beta <= -0.5 * np.pi), beta + np.pi, beta)
+
+
 def _loads_array(Fa, Fy, Fz, My, Mz):
     arrs = [as_array(v, n, bounded=True, tiny_ok=True)
             for v, n in ((Fa, "Fa"), (Fy, "Fy"), (Fz, "Fz"), (My, "My"), (Mz, "Mz"))]
@@ -944,12 +957,7 @@ def _result(bearing, model, psi, x0, z0, Pd, u, applied, imposed, arm, iters, sh
             f"{what} did not reach equilibrium: relative residual {rel[i]:.3e} "
             f"(> {tol:g}) after {int(np.max(iters, initial=0))} iterations in load case {i}; "
             f"loads {app[i].tolist()}, displacements {u[i].tolist()}")
-    # loaded balls have x > 0: |beta| <= pi/2 as it is; fold the unloaded ones only (a
-    # loaded ball at beta = -pi/2 in floating point must keep its sign)
-    beta = st.beta.copy()
-    unl = ~(st.Q > 0)
-    beta = np.where(unl & (np.abs(beta) > 0.5 * np.pi), beta - np.copysign(np.pi, beta), beta)
-    beta = np.where(unl & (beta <= -0.5 * np.pi), beta + np.pi, beta)
+    beta = _fold_unloaded(st.beta, st.Q)
     return LoadDistribution(
         bearing=bearing, azimuths=psi,
         displacements=u.reshape(shape + (5,)), loads=st.F.reshape(shape + (5,)),
