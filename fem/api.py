@@ -55,18 +55,29 @@ class MeshLevel:
         docs/fem.md).  The quick level keeps 1.4: at 5 elements per semi-axis a
         1-element tent spacing puts a pressure oscillation into the shallowest
         stress samples.
+    column, layer : float
+        Depth grading of a long ellipse [minor semi-axes]: the full refinement depth
+        (1.6 minor semi-axes) only for y <= ``column`` minor semi-axes (the stress
+        sections and the axis, where the subsurface field is measured), a surface
+        layer ``layer`` deep along the rest of the ellipse.  209 inner race, standard
+        level: 268k -> 172k DOFs, 57 -> 21 s, 4.6 -> 2.6 GB, every error within 0.8 %
+        of where it was (docs/fem.md).  ``inf`` refines the whole box.
     """
 
     n: float
     max_stretch: float = 4.0
     tents_per_axis: float = 16.0
     tent_floor: float = 1.0
+    column: float = 4.0
+    layer: float = 0.5
 
     def __post_init__(self):
         check_range(self.n, "n", 0.0, None, unit="-")
         check_range(self.max_stretch, "max_stretch", 1.0, None, low_inclusive=True, unit="-")
         check_positive(self.tents_per_axis, "tents_per_axis", "-", allow_inf=True)
         check_range(self.tent_floor, "tent_floor", 0.5, None, low_inclusive=True, unit="-")
+        check_positive(self.column, "column", "-", allow_inf=True)
+        check_positive(self.layer, "layer", "-", allow_inf=True)
 
 
 #: Named mesh levels (:class:`MeshLevel`); ``run_case(level=MeshLevel(...))`` for others.
@@ -475,7 +486,7 @@ def _level(level) -> tuple[str, MeshLevel]:
     """(name, MeshLevel) of a level name or a :class:`MeshLevel`."""
     if isinstance(level, MeshLevel):
         return (f"n={level.n:g},s<={level.max_stretch:g},tents<={level.tents_per_axis:g},"
-                f"floor={level.tent_floor:g}",
+                f"floor={level.tent_floor:g},column={level.column:g},layer={level.layer:g}",
             level)
     check_choice(level, "level", tuple(LEVELS))
     return level, LEVELS[level]
@@ -505,7 +516,10 @@ def sizing(case: ContactCase, level, cover: ContactCase | None = None) -> _Sizin
     dx = max(ax / lv.tents_per_axis, lv.tent_floor * h)
     dy = max(ay / lv.tents_per_axis, lv.tent_floor * h * s)
     grid = PressureGrid(Lx, Ly, max(3, int(round(Lx / dx))), max(3, int(round(Ly / dy))))
-    fine = (Lx + 2 * h, Ly + 2 * h * s, 1.6 * min(cx, cy))
+    cminor = min(cx, cy)
+    fine = (Lx + 2 * h, Ly + 2 * h * s, 1.6 * cminor)
+    if np.isfinite(lv.column) and np.isfinite(lv.layer):
+        fine = fine + (min(fine[1], lv.column * cminor), min(fine[2], lv.layer * cminor))
     return _Sizing(h=h, stretch=s, fine=fine, grid=grid, zq=3.0 * minor)
 
 
@@ -647,8 +661,12 @@ def run_case(case: ContactCase, level: str = "standard", mode: str = "half-space
     I = sz.grid.integrals(g0)
     C = compliance(states)
     shared["compliance"] = time.perf_counter() - t0
-    out = [_solve_load(cs, states, meshes, sz, I, C, level, mode, gap, approach, shared, step)
-           for cs in cases]
+    try:
+        out = [_solve_load(cs, states, meshes, sz, I, C, level, mode, gap, approach, shared,
+                           step) for cs in cases]
+    finally:
+        for st in states:          # the factors are the bulk of the memory
+            st.release()
     return out if loads is not None else out[0]
 
 
@@ -752,7 +770,7 @@ def _solve_load(case, states, meshes, sz, I, C, level, mode, gap, approach, shar
     fields = {"section_x": xs, "section_z": zs, "tau_xz": tau,
               "max_shear": tres.reshape(Xs.shape), "von_mises": vm.reshape(Xs.shape),
               "grid": sz.grid, "lam": sol.lam, "axis_z": za, "axis_tresca": tr_a,
-              "axis_von_mises": vm_a, "states": states}
+              "axis_von_mises": vm_a, "states": states, "u": us}
     info = {"approach_hertz": float(c.approach), "depth_point": zq,
             "halfspace_w_depth_points": w_sum,
             "rigid_approach_error": sol.Delta / float(c.approach) - 1.0,

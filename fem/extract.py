@@ -24,8 +24,9 @@ COMPONENTS = ("sxx", "syy", "szz", "sxy", "sxz", "syz")
 
 
 def displacement(state, lam) -> np.ndarray:
-    """Full displacement vector ``u = X lambda`` of a body [m]."""
-    return state.X @ np.asarray(lam)
+    """Full displacement vector ``u = K^{-1} F lambda`` of a body [m] (one solve with the
+    body's factor, :meth:`ballrace.fem.model.BodyState.displacement`)."""
+    return state.displacement(lam)
 
 
 def _locator(state):

@@ -9,8 +9,9 @@ Formulation (docs/fem.md; Kalker's variational principle in a discrete form):
   its far plane held in z) gets the load matrix
   ``F_i[:, k] = s_i int phi_k |n_z| v_z dA`` over its candidate contact facets
   (s_i = +1 for the ball, pushed up, -1 for the lower body, pushed down); the
-  stiffness is factorised once and ``X_i = K_i^{-1} F_i`` is one multi-RHS solve;
-* compliance ``C = sum_i F_i^T X_i`` (small, symmetric positive definite);
+  stiffness is factorised once;
+* compliance ``C = sum_i F_i^T K_i^{-1} F_i`` (small, symmetric positive definite;
+  PARDISO's partial solve computes only the contact-surface rows of ``K_i^{-1} F_i``);
 * weighted gap ``G_k = G0_k + (C lambda)_k - Delta m_k`` with ``G0_k = int phi_k g0 dA``
   from the analytic surfaces and ``m_k = int phi_k dA``; Delta is the rigid approach
   of the bodies' far planes;
@@ -175,16 +176,35 @@ class Body:
 
 @dataclass
 class BodyState:
-    """A body after assembly and solve: basis, ``X = K^{-1} F`` (all DOFs), F."""
+    """A body after assembly and factorisation: basis, load matrix F, the body's
+    compliance ``C = F^T K^{-1} F`` and the factor for the displacements."""
 
     body: Body
     basis: object
     scalar_basis: object
     F: object               # sparse (n_dofs, n_tents)
-    X: np.ndarray           # dense (n_dofs, n_tents)
+    C: np.ndarray           # dense (n_tents, n_tents) [m^5/N]
+    free: np.ndarray        # free DOFs
+    factor: object          # fem.solvers.Factor on the free DOFs (None once released)
     n_dofs: int
     solver: str
     timings: dict = field(default_factory=dict)
+
+    def displacement(self, lam) -> np.ndarray:
+        """Displacement vector ``u = K^{-1} F lambda`` on all DOFs [m] for tent pressures
+        ``lam`` [Pa]: one solve with the stored factor."""
+        if self.factor is None:
+            raise RuntimeError(f"{self.body.name}: the factor was released; use the "
+                               "displacements stored in FEResult.fields['u']")
+        u = np.zeros(self.n_dofs)
+        u[self.free] = self.factor(np.asarray(self.F[self.free] @ np.asarray(lam)).ravel())
+        return u
+
+    def release(self) -> None:
+        """Free the factor's memory."""
+        if self.factor is not None:
+            self.factor.free()
+            self.factor = None
 
     @property
     def mesh(self):
@@ -273,7 +293,7 @@ def elasticity_p2(points, tets, element_dofs, n_dofs, E, nu, chunk: int = 20000)
     M = _p2_gradient_products().transpose(0, 2, 1, 3).reshape(100, 16)   # (ab, kl)
     comp = np.arange(3)
     itype = np.int32 if n_dofs < 2**31 - 1 else np.int64
-    data, rows, cols = [], [], []
+    K = None
     for s0 in range(0, tets.shape[1], chunk):
         t = tets[:, s0:s0 + chunk]
         P = points[:, t]                                                  # (3, 4, e)
@@ -289,12 +309,13 @@ def elasticity_p2(points, tets, element_dofs, n_dofs, E, nu, chunk: int = 20000)
         Ke = Ke.transpose(0, 1, 3, 2, 4).reshape(-1, 30, 30)             # (e, (a,i), (b,j))
         d = (3 * element_dofs[:, s0:s0 + chunk].T[:, :, None] + comp).reshape(-1, 30)
         d = d.astype(itype)
-        rows.append(np.repeat(d, 30, axis=1).ravel())
-        cols.append(np.tile(d, (1, 30)).ravel())
-        data.append(Ke.ravel())
-    # COO -> CSR sums the duplicate (shared-DOF) entries
-    return sp.csr_matrix((np.concatenate(data), (np.concatenate(rows), np.concatenate(cols))),
-                         shape=(n_dofs, n_dofs))
+        # COO -> CSR per chunk sums the duplicate (shared-DOF) entries; summing the chunks
+        # keeps the peak memory at one chunk's triplets
+        Kc = sp.csr_matrix((Ke.ravel(), (np.repeat(d, 30, axis=1).ravel(),
+                                         np.tile(d, (1, 30)).ravel())), shape=(n_dofs, n_dofs))
+        del Ke, A, H
+        K = Kc if K is None else K + Kc
+    return K
 
 
 def assemble_body(body: Body, grid: PressureGrid, solver: str | None = None) -> BodyState:
@@ -367,28 +388,28 @@ def assemble_body(body: Body, grid: PressureGrid, solver: str | None = None) -> 
         raise RuntimeError(f"{body.name}: a symmetry or support plane was not found in the mesh")
     free = np.setdiff1d(np.arange(basis.N), D)
     t0 = time.perf_counter()
-    Kff = K[free][:, free].tocsc()
+    Kff = K[free][:, free].tocsr()
     del K
+    Ff = F[free].tocsc()
+    rows = np.flatnonzero(np.diff(Ff.tocsr().indptr))       # contact-surface DOFs
     nns = None
     if chosen_solver(solver) == "amg":
         nns = rigid_body_modes(sbasis.doflocs[:, free // 3].T, free % 3)
-    solve, name = factorize(Kff, solver, near_nullspace=nns)
+    fac, name = factorize(Kff, solver, near_nullspace=nns, rows=rows)
+    del Kff
     tm["factorize"] = time.perf_counter() - t0
     t0 = time.perf_counter()
-    Ff = F[free].toarray()
-    Xf = solve(Ff)
-    X = np.zeros((basis.N, grid.n_tents))
-    X[free] = Xf
+    C = fac.inner(Ff)
     tm["solve"] = time.perf_counter() - t0
     log.info("%s: %d DOFs, %d contact facets, %d tents; %s", body.name, basis.N, facets.size,
              grid.n_tents, ", ".join(f"{k} {v:.2f} s" for k, v in tm.items()))
-    return BodyState(body=body, basis=basis, scalar_basis=sbasis, F=F, X=X, n_dofs=basis.N,
-                     solver=name, timings=tm)
+    return BodyState(body=body, basis=basis, scalar_basis=sbasis, F=F, C=C, free=free,
+                     factor=fac, n_dofs=basis.N, solver=name, timings=tm)
 
 
 def compliance(states) -> np.ndarray:
-    """Compliance matrix ``C = sum_i F_i^T X_i`` (symmetrised) [m^5/N]."""
-    C = sum(np.asarray(s.F.T @ s.X) for s in states)
+    """Compliance matrix ``C = sum_i F_i^T K_i^{-1} F_i`` (symmetrised) [m^5/N]."""
+    C = sum(s.C for s in states)
     return 0.5 * (C + C.T)
 
 

@@ -291,7 +291,7 @@ def nodal_stress(state, u) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     state : BodyState
         An assembled body (``r.fields["states"][i]``).
     u : ndarray
-        Its displacement vector (``state.X @ lam``) [m].
+        Its displacement vector (``r.fields["u"][i]``) [m].
 
     Returns
     -------
@@ -375,7 +375,7 @@ def render_3d(r, path: str = "out-3d.png", *, field: str = "von_mises",
     from ballrace.analytic import subsurface
     from ballrace.analytic._checks import check_choice
 
-    from .extract import displacement, tresca_von_mises
+    from .extract import tresca_von_mises
 
     check_choice(field, "field", FIELDS_3D)
     offscreen_vtk()
@@ -384,7 +384,7 @@ def render_3d(r, path: str = "out-3d.png", *, field: str = "von_mises",
     f = r.fields
     state = f["states"][-1]
     c = r.analytic
-    pts, cells, S = nodal_stress(state, displacement(state, f["lam"]))
+    pts, cells, S = nodal_stress(state, f["u"][-1])
     tres, vm = tresca_von_mises(S)
     val = (vm if field == "von_mises" else tres) / 1e6
 

@@ -11,8 +11,9 @@ local contact frame of :mod:`ballrace.meshes.geometry`:
   ``z = R`` is a symmetry plane of a ball squeezed between two races.
 
 Local refinement: a size field ``h = min(h_far, h_c + g d)`` with ``d`` the distance
-to a refinement box over the quarter contact ellipse and down to the depth of the
-subsurface stress peak.  Anisotropy: when the ellipse is long (a/b >> 1) each body is
+to a refinement region over the quarter contact ellipse: down to the depth of the
+subsurface stress peak near y = 0, and a thin surface layer along the rest of a long
+ellipse.  Anisotropy: when the ellipse is long (a/b >> 1) each body is
 meshed in coordinates compressed along y by ``stretch`` and the nodes are then
 stretched back, which gives elements elongated along the ellipse's major axis (the
 stress gradients along y scale with a, across with b).  For the ball, the compressed
@@ -45,7 +46,7 @@ __all__ = ["MeshSpec", "TetMesh", "block_mesh", "ball_mesh", "morph_block", "cac
 log = logging.getLogger(__name__)
 
 #: Bump when the generated meshes change for the same parameters (invalidates the cache).
-MESHER_VERSION = "ballrace-mesh-3"
+MESHER_VERSION = "ballrace-mesh-4"
 
 
 @dataclass(frozen=True)
@@ -57,7 +58,8 @@ class MeshSpec:
     kind : "block" or "ball".
     size : (Lx, Ly, H) for a block; (R, R, R) for a ball (radius R).
     fine : (fx, fy, fz) extent of the refinement box from the contact point
-        (fz: depth into the body).
+        (fz: depth into the body); or (fx, fy, fz, fy_deep, fz_shallow): the full depth
+        fz only for y <= fy_deep, a layer fz_shallow deep elsewhere.
     h_contact : element size in the refinement box (across the ellipse, x and z) [m].
     h_far : largest element size [m].
     growth : size growth per unit distance from the refinement box [-].
@@ -125,13 +127,28 @@ def _gmsh_version() -> str:
 
 
 # --------------------------------------------------------------------------- gmsh helpers
-def _size_field(gmsh, fx: float, fy: float, fz: float, zsign: float, z0: float,
+def _size_field(gmsh, fine, s: float, zsign: float, z0: float,
                 hc: float, hf: float, g: float) -> None:
-    """Background size field min(hf, hc + g * dist(refinement box)) (computational coords)."""
+    """Background size field ``min(hf, hc + g * dist(refinement region))`` in the
+    computational coordinates (y compressed by ``s``).
+
+    ``fine = (fx, fy, fz)``: the region is the box ``[0, fx] x [0, fy] x depth fz``;
+    ``fine = (fx, fy, fz, fy_deep, fz_shallow)``: the union of the deep box
+    ``[0, fx] x [0, fy_deep] x depth fz`` (the stress sections near y = 0) and the
+    shallow layer ``[0, fx] x [0, fy] x depth fz_shallow`` (the rest of the contact
+    surface) [m, physical]."""
     def pos(e):  # positive part, written with Abs for gmsh's MathEval
         return f"(({e})+Abs({e}))/2"
-    dz = f"{zsign}*(z-({z0!r}))-{fz!r}"
-    d = (f"Sqrt(({pos(f'x-{fx!r}')})^2+({pos(f'y-{fy!r}')})^2+({pos(dz)})^2)")
+
+    def dist(bx, by, bz):
+        dz = f"{zsign}*(z-({z0!r}))-{bz!r}"
+        return f"Sqrt(({pos(f'x-{bx!r}')})^2+({pos(f'y-{by / s!r}')})^2+({pos(dz)})^2)"
+    fx, fy, fz = fine[:3]
+    d = dist(fx, fy, fz)
+    if len(fine) == 5:
+        fy_deep, fz_shallow = min(fine[3], fy), min(fine[4], fz)
+        if fy_deep < fy and fz_shallow < fz:
+            d = f"Min({dist(fx, fy_deep, fz)},{dist(fx, fy, fz_shallow)})"
     f = gmsh.model.mesh.field.add("MathEval")
     gmsh.model.mesh.field.setString(f, "F", f"Min({hf!r}, {hc!r}+{g!r}*{d})")
     gmsh.model.mesh.field.setAsBackgroundMesh(f)
@@ -177,7 +194,6 @@ def _generate(spec: MeshSpec) -> tuple[np.ndarray, np.ndarray]:
     import gmsh
 
     s = float(spec.stretch)
-    fx, fy, fz = spec.fine
     gmsh.initialize(interruptible=False)
     try:
         _options(gmsh)
@@ -187,7 +203,7 @@ def _generate(spec: MeshSpec) -> tuple[np.ndarray, np.ndarray]:
             Lx, Ly, H = spec.size
             occ.addBox(0.0, 0.0, -H, Lx, Ly / s, H)
             occ.synchronize()
-            _size_field(gmsh, fx, fy / s, fz, -1.0, 0.0, spec.h_contact, spec.h_far, spec.growth)
+            _size_field(gmsh, spec.fine, s, -1.0, 0.0, spec.h_contact, spec.h_far, spec.growth)
         elif spec.kind == "ball":
             R = spec.size[0]
             sph = occ.addSphere(0.0, 0.0, R, R)
@@ -200,7 +216,7 @@ def _generate(spec: MeshSpec) -> tuple[np.ndarray, np.ndarray]:
             box = occ.addBox(0.0, 0.0, 0.0, R, R, R)
             occ.intersect([(3, sph)], [(3, box)])
             occ.synchronize()
-            _size_field(gmsh, fx, fy / s, fz, 1.0, 0.0, spec.h_contact, spec.h_far, spec.growth)
+            _size_field(gmsh, spec.fine, s, 1.0, 0.0, spec.h_contact, spec.h_far, spec.growth)
         else:
             raise ValueError(f"kind must be 'block' or 'ball'; got {spec.kind!r}")
         gmsh.model.mesh.generate(3)
@@ -245,8 +261,11 @@ def block_mesh(size, fine, h_contact: float, h_far: float | None = None, *,
     ----------
     size : (Lx, Ly, H)
         Block extent [m].
-    fine : (fx, fy, fz)
-        Refinement box ``[0, fx] x [0, fy] x [-fz, 0]`` [m].
+    fine : (fx, fy, fz) or (fx, fy, fz, fy_deep, fz_shallow)
+        Refinement box ``[0, fx] x [0, fy] x [-fz, 0]`` [m]; with five values the
+        depth fz is refined only for ``y <= fy_deep`` and a layer ``fz_shallow`` deep
+        elsewhere (a long contact ellipse needs its full-depth resolution only near the
+        stress sections at y = 0).
     h_contact : float
         Element size in the refinement box (x and z; along y it is ``stretch`` times
         larger) [m].
