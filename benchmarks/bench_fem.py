@@ -29,6 +29,16 @@ CASES = {
     "plane-hs": ("plane", None, 2000.0, "half-space", "hertz"),
     "plane-2b": ("plane", None, 2000.0, "two-body", "hertz"),
     "inner-exact": ("race", "inner", 4450.0, "half-space", "exact"),
+    # the curved two-body departure from Hertz against the contact size (a/R, a/(f D)):
+    # the mesh scales with the ellipse, so the discretisation error is the same at every
+    # load and what changes with the load is the geometry's departure from half-spaces
+    "ball-2b-500": ("ball", None, 500.0, "two-body", "hertz"),
+    "ball-2b-125": ("ball", None, 125.0, "two-body", "hertz"),
+    "ball-2b-31": ("ball", None, 31.25, "two-body", "hertz"),
+    "inner-2b-556": ("race", "inner", 556.0, "two-body", "hertz"),
+    "inner-2b-70": ("race", "inner", 69.5, "two-body", "hertz"),
+    "outer-2b-556": ("race", "outer", 556.0, "two-body", "hertz"),
+    "outer-2b-70": ("race", "outer", 69.5, "two-body", "hertz"),
     # a load list on one mesh and one factorisation (run_case(..., loads=...)); the mesh is
     # sized by the smallest load, the pressure grid covers the largest
     "inner-hs-loads": ("race", "inner", [3000.0, 3700.0, 4450.0], "half-space", "hertz"),
@@ -53,6 +63,8 @@ d["per_load"] = [x.timings["per_load"] for x in rs]
 d["errors_per_load"] = {x.case.load: {row["quantity"]: row["error"] for row in x.comparison}
                         for x in rs}
 d["wall"] = time.perf_counter() - t0
+# contact size against the lower body's radius: the groove radius f D of a race, the ball's R
+d["a_over_R"] = rs[-1].a / (0.52 * 12.7e-3 if kind == "race" else 6.35e-3)
 d["peak_gb"] = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1e6
 print("RESULT" + json.dumps(d))
 """
@@ -69,7 +81,7 @@ def main(argv=None) -> int:
     q = ("a", "b", "p_max", "approach", "tau0", "z0", "max_shear", "max_shear_depth",
          "von_mises", "von_mises_depth")
     short = ("a", "b", "p0", "delta", "tau0", "z0", "tmax", "z_tmax", "vm", "z_vm")
-    head = (f"{'case':<15}{'DOFs':>9}{'wall s':>8}{'peak GB':>8}  "
+    head = (f"{'case':<15}{'a/R':>6}{'DOFs':>9}{'wall s':>8}{'peak GB':>8}  "
             + "".join(f"{x:>9}" for x in short) + "  solver")
     print(head)
     print("-" * len(head))
@@ -86,7 +98,7 @@ def main(argv=None) -> int:
         out[name] = d
         rows = {r["quantity"]: r for r in d["comparison"]}
         errs = "".join(f"{100 * rows[x]['error']:>+8.2f}%" for x in q)
-        print(f"{name:<15}{d['n_dofs']:>9,}{d['wall']:>8.1f}{d['peak_gb']:>8.2f}  {errs}  "
+        print(f"{name:<15}{d['a_over_R']:>6.3f}{d['n_dofs']:>9,}{d['wall']:>8.1f}{d['peak_gb']:>8.2f}  {errs}  "
               f"{d['solver']}", flush=True)
         if len(d["per_load"]) > 1:
             for load, e in d["errors_per_load"].items():

@@ -347,3 +347,83 @@ def test_load_list_shares_mesh_and_factorisation():
     assert rs[1].approach / rs[0].approach == pytest.approx(2.0 ** (2 / 3), rel=0.01)
     with pytest.raises(ValueError, match="loads"):
         fem.run_case(fem.plane_case(12.7e-3, 1.0), level="quick", loads=[1000.0, -1.0])
+
+
+def test_factor_inner_partial_solve_matches_full_solve():
+    """Factor.inner(F) = F^T A^-1 F: PARDISO's partial solve (rows of F only) against
+    SuperLU's full solves, on a small P2 elasticity matrix; the full solve after a
+    partial-solve factorisation still returns the whole solution."""
+    import scipy.sparse as sp
+    from skfem import Basis, ElementTetP2, ElementVector, MeshTet
+
+    from ballrace.fem.model import elasticity_p2
+    from ballrace.fem.solvers import available_solvers, factorize
+
+    m = MeshTet().refined(2)
+    b = Basis(m, ElementVector(ElementTetP2()), intorder=1)
+    sb = b.with_element(ElementTetP2())
+    K = elasticity_p2(m.p, m.t, sb.element_dofs, b.N, 200e9, 0.3)
+    free = np.setdiff1d(np.arange(b.N), b.get_dofs(lambda x: x[2] == 0.0).all())
+    A = K[free][:, free].tocsr()
+    rng = np.random.default_rng(3)
+    rows = rng.choice(A.shape[0], 40, replace=False)          # a "contact surface"
+    F = sp.csc_matrix((rng.standard_normal(120), (np.repeat(rows, 3),
+                       rng.integers(0, 7, 120))), shape=(A.shape[0], 7))
+    ref, _ = factorize(A.tocsc(), "superlu")
+    C_ref = F.T @ ref(F.toarray())
+    C_lu = ref.inner(F)
+    assert np.allclose(C_lu, C_ref, rtol=1e-12, atol=1e-12 * np.abs(C_ref).max())
+    if "pardiso" not in available_solvers():
+        pytest.skip("pypardiso not installed")
+    fac, name = factorize(A, "pardiso", rows=np.flatnonzero(np.diff(F.tocsr().indptr)))
+    assert name == "pardiso" and fac._iparm[30] == 1            # partial solve prepared
+    C = fac.inner(F)
+    assert np.allclose(C, C_ref, rtol=0, atol=1e-9 * np.abs(C_ref).max())
+    rhs = rng.standard_normal(A.shape[0])
+    assert np.allclose(fac(rhs), ref(rhs), rtol=0, atol=1e-9 * np.abs(ref(rhs)).max())
+    fac.free()
+
+
+@pytest.mark.parametrize("kind", ["plane", "inner", "outer"])
+def test_tent_spacing_never_below_one_element(kind):
+    """Tents closer than one surface element make the pressures oscillate (inf-sup):
+    the grid rounds its cell count down when rounding to nearest would cross that."""
+    import ballrace
+    from ballrace.fem import api
+
+    brg = ballrace.BallBearing(12.7e-3, 9, 65e-3, 0.52, 0.52, free_contact_angle=0.0)
+    for q in np.geomspace(30.0, 6000.0, 23):
+        case = (api.plane_case(12.7e-3, q) if kind == "plane"
+                else api.race_case(brg, q, kind, 0.0))
+        for name in ("quick", "standard", "fine"):
+            sz = api.sizing(case, name)
+            assert sz.grid.dx >= sz.h * (1 - 1e-9), (q, name)
+            assert sz.grid.dy >= sz.h * sz.stretch * (1 - 1e-9), (q, name)
+
+
+def test_graded_refinement_region(tmp_path, monkeypatch):
+    """A five-value refinement region (full depth only near y = 0, a thin layer along the
+    rest) meshes fewer elements than the full box, with the same size at the surface."""
+    pytest.importorskip("gmsh")
+    from ballrace.meshes import contact as mc
+
+    monkeypatch.setenv("BALLRACE_CACHE", str(tmp_path))
+    box = (0.3, 1.2, 0.3)
+    full = mc.block_mesh((2.0, 2.0, 2.0), box, 0.05, 0.5, stretch=2.0, use_cache=False)
+    graded = mc.block_mesh((2.0, 2.0, 2.0), box + (0.3, 0.1), 0.05, 0.5, stretch=2.0,
+                           use_cache=False)
+    assert graded.tets.shape[0] < 0.8 * full.tets.shape[0]
+
+    def surface_edge(msh, ylo, yhi):   # mean edge length of the top faces in a y band
+        p, t = msh.points, msh.tets
+        e = []
+        for i, j in ((0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)):
+            a, b = p[t[:, i]], p[t[:, j]]
+            top = (np.abs(a[:, 2]) < 1e-12) & (np.abs(b[:, 2]) < 1e-12)
+            mid = 0.5 * (a[:, 1] + b[:, 1])
+            sel = top & (mid > ylo) & (mid < yhi) & (np.maximum(a[:, 0], b[:, 0]) < 0.3)
+            e.append(np.abs(a[sel, 0] - b[sel, 0]))
+        return np.concatenate(e).mean()
+    for lo, hi in ((0.0, 0.3), (0.7, 1.1)):
+        assert surface_edge(graded, lo, hi) == pytest.approx(surface_edge(full, lo, hi),
+                                                             rel=0.25)
