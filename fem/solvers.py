@@ -1,32 +1,34 @@
 """Sparse symmetric positive-definite solvers with a run-time fallback chain.
 
-The FE check factorises one stiffness matrix per body and solves it for 30–200
-right-hand sides (the pressure tents).  Measured on this project's 2-core machine
-(docs/fem.md; P2 elasticity, 209 inner race, quick level: 51k free DOFs, 4.0M
-non-zeros; factorisation / 20 right-hand sides):
+The FE check factorises one stiffness matrix per body and needs, per body, the
+compliance ``F^T K^{-1} F`` of 30-300 pressure tents (F lives on the contact-surface
+DOFs only) and one full solve per load for the displacement field.  Measured on this
+project's 2-core machine (docs/fem.md; P2 elasticity, 209 inner race, standard level,
+depth-graded mesh: 172k DOFs; idle machine):
 
-==============================  ==================  ================================
-solver                          51k DOFs            install
-==============================  ==================  ================================
-CHOLMOD (scikit-sparse 0.4.16)  3.9 s / 0.3 s       apt libsuitesparse-dev +
-+ OpenBLAS                                          libopenblas0-pthread, then pip
-                                                    (``make cholmod``)
-pypardiso (MKL)                 6.3 s / 1.6 s       pip only: in ``ballrace[fem]`` on
-                                                    Linux and Windows x86-64
-pyamg SA + CG, rigid-body       3.5 s / 44 CG       pip only; opt-in
-near-nullspace                  iterations, ~10 s
-                                per RHS
-scipy SuperLU (``splu``)        ~100x CHOLMOD,      always present: last resort
-                                ~10x memory
-==============================  ==================  ================================
+==============================  ==========================  ============================
+solver                          factorise / 286 tents       install
+==============================  ==========================  ============================
+PARDISO (MKL) through           ~16 s / 0.2 s (partial      pip only: pypardiso in
+:class:`PardisoFactor`          solve of the surface rows)  ``ballrace[fem]`` on Linux and
+                                                            Windows x86-64
+CHOLMOD (scikit-sparse 0.4.16)  11.4 s / 5.8 s (full        apt libsuitesparse-dev +
++ OpenBLAS                      solves in blocks)           libopenblas0-pthread, then pip
+                                                            (``make cholmod``)
+pyamg SA + CG, rigid-body       44 CG iterations, ~10 s     pip only; opt-in
+near-nullspace                  per tent (51k DOFs)
+scipy SuperLU (``splu``)        ~100x CHOLMOD, ~10x memory  always present: last resort
+==============================  ==========================  ============================
 
-:func:`factorize` tries ``cholmod, pardiso, superlu`` (:data:`CHAIN`); ``amg`` is
-used only when asked for (``solver="amg"`` or the environment variable
-``BALLRACE_SOLVER=amg``): even with the six rigid-body modes as near-nullspace
-(:func:`rigid_body_modes`, which cut the CG iterations to ~44 at rtol 1e-10) one
-solve per pressure tent makes it slower than a direct factorisation for every mesh
-of the FE check.  :func:`slow_solver_hint` tells the user at the start of a run when
-only a slow solver is available, with the install line.
+:func:`factorize` tries ``cholmod, pardiso, superlu`` (:data:`CHAIN`) and returns a
+:class:`Factor`: ``factor(B)`` solves, ``factor.inner(F)`` gives ``F^T A^{-1} F``
+(PARDISO: partial solve; the others: full solves in column blocks, never a dense
+n x (tents) copy), ``factor.free()`` releases the memory.  ``amg`` is used only when
+asked for (``solver="amg"`` or ``BALLRACE_SOLVER=amg``): even with the six rigid-body
+modes as near-nullspace (:func:`rigid_body_modes`) one CG solve per pressure tent makes
+it slower than a factorisation for every mesh of the FE check.
+:func:`slow_solver_hint` tells the user at the start of a run when only a slow solver is
+available, with the install line.
 """
 from __future__ import annotations
 
