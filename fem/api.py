@@ -68,10 +68,11 @@ class MeshLevel:
         but ~0.5 b and deeper under a long ellipse, so n = 9 puts only 3.2 elements
         above the orthogonal-shear peak of a ball on a plane, where the tent pressure
         near the edge of the contact and the element stresses within 2-3 layers of the
-        surface tilt the flat peak (docs/fem.md).  4.2 gives n = 12 for circular
-        contacts and leaves long ellipses at n = 9; measured at the standard level it
-        moved z0 of a ball on a plane from +0.80 to -1.06 % (half-space) and from +1.11
-        to -1.81 % (two bodies) for twice the DOFs, so the named levels do not use it.
+        surface tilt the flat peak (docs/fem.md).  The pressure grid keeps its b/n
+        spacing.  4.2 gives n = 12 for circular contacts and leaves long ellipses at
+        n = 9; with n = 9 it gave z0 of two balls in two-body mode -5.7 % at 2000 N and
+        -1.7 % at 250 N (against -9.6 / -2.4 % without it) for twice the DOFs (322k,
+        5.0 GB), so the named levels do not use it.
     """
 
     n: float
@@ -520,8 +521,9 @@ def sizing(case: ContactCase, level, cover: ContactCase | None = None) -> _Sizin
     minor = min(ax, ay)
     cc = (cover or case).analytic
     cx, cy = max(ax, float(cc.semi_axis_x)), max(ay, float(cc.semi_axis_y))
-    h = minor / lv.n
+    h = h_tents = minor / lv.n
     if lv.per_z0 > 0:
+        # a finer mesh where z0 is shallow; the pressure grid keeps the b/n spacing
         from ballrace.analytic.subsurface import orthogonal_shear
 
         h = min(h, float(orthogonal_shear(c).z0) / lv.per_z0)
@@ -530,8 +532,8 @@ def sizing(case: ContactCase, level, cover: ContactCase | None = None) -> _Sizin
     ext = 1.3
     Lx, Ly = ext * cx, ext * cy
     # tent spacing: fine enough for the moments, >= tent_floor surface elements (inf-sup)
-    dx = max(ax / lv.tents_per_axis, lv.tent_floor * h)
-    dy = max(ay / lv.tents_per_axis, lv.tent_floor * h * s)
+    dx = max(ax / lv.tents_per_axis, lv.tent_floor * h_tents)
+    dy = max(ay / lv.tents_per_axis, lv.tent_floor * h_tents * s)
     # the nearest whole number of cells, but never closer than one element (inf-sup; the
     # 209 inner race in two bodies at 556 N rounded to 0.975 elements: the tent pressures
     # swung by +-50 % and the on-axis max shear peaked at the surface, docs/fem.md)
