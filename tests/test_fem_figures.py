@@ -87,7 +87,7 @@ def test_limits_figures_draw_the_map_and_mark_the_1_percent_line():
     assert not beyond.note and not errors.note
     titles = [p["title"] for p in beyond.panels]
     assert titles[0] == "a: within 1 % below a/(fD) = 0.16"
-    assert titles[1].startswith("approach delta") and titles[1].endswith("> 0.3")
+    assert titles[1].startswith("delta") and titles[1].endswith("> 0.3")
     assert titles[-1].startswith("Hertz p0 of the points")
     a = beyond.panels[0]
     assert a["hband"] == 1.0                                  # the +/-1 % band
@@ -99,7 +99,7 @@ def test_limits_figures_draw_the_map_and_mark_the_1_percent_line():
     assert a["series"][0]["color"] == a["series"][2]["color"] != a["series"][1]["color"]
     assert a["series"][2]["y"] == pytest.approx([-0.4, -0.9, -1.6, -3.6])
     assert beyond.panels[-1]["hlines"][0]["y"] == pytest.approx(4.2)
-    assert "a 0.16" in beyond.caption and "approach delta > 0.3" in beyond.caption
+    assert "a 0.16" in beyond.caption and "delta > 0.3" in beyond.caption
     # the discretisation panels carry the level's tolerance band
     assert errors.panels[0]["hband"] == pytest.approx(100 * ballrace_fem_tol("quick", "a"))
     assert errors.panels[0]["series"][0]["y"] == pytest.approx([0.3] * 4)

@@ -118,7 +118,7 @@ def _sweep_figures(run) -> list[Figure]:
 # --------------------------------------------------------------------------- Hertz limits
 #: (output stem, panel title) of the Hertz-limits panels (outputs ``stem_beyond``,
 #: ``stem_vs_hertz`` of ``fem.hertz_limits``).
-LIMIT_PANELS = (("a", "a"), ("b", "b"), ("p_max", "p0"), ("approach", "approach delta"),
+LIMIT_PANELS = (("a", "a"), ("b", "b"), ("p_max", "p0"), ("approach", "delta"),
                 ("tau0", "LP tau0"), ("z0", "LP depth z0"))
 #: ISO 76 static-rating contact stress of ball bearings [Pa] (marked on the load panel).
 STATIC_RATING_STRESS = 4.2e9
@@ -252,7 +252,7 @@ def limits_figures(run=None) -> list[Figure]:
     p0 = limits_series(pts, "p_max_hertz", scale=1e-9)
     load = {"kind": "lines", "title": "Hertz p0 of the points (dashed: 4.2 GPa, ISO 76)",
             "xlabel": "a / (f D)",
-            "ylabel": "p0 [GPa]", "series": p0, "logy": True, "legend": "none",
+            "ylabel": "p0 [GPa]", "series": p0, "legend": "none",
             "hlines": [{"y": STATIC_RATING_STRESS * 1e-9,
                         "label": "4.2 GPa (ISO 76 static rating)"}]}
     where = ", ".join(src)
