@@ -45,6 +45,11 @@ def test_case_file_loads_and_is_on_demand():
         if e.name.startswith("max_err_"):
             tol = fem.TOLERANCES["quick"][e.name.removeprefix("max_err_")]
             assert e.max == pytest.approx(tol)       # the level's tolerance, not looser
+    (std,) = [c for c in cases if c.fem_levels == ("standard",)]
+    assert ON_DEMAND in std.tags and std.sweep.axes[-1][0] == "a_over_fD"
+    for e in std.expected:
+        if e.name.startswith("max_err_"):
+            assert e.max == pytest.approx(fem.TOLERANCES["standard"][e.name[8:]])
     # the default selection (make validate) leaves the long sweep out
     ids = {c.id for c in load_cases()}
     assert not ids & {c.id for c in cases}

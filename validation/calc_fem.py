@@ -141,6 +141,31 @@ def limits_load(brg, race: str, contact_angle: float, a_over_fD=None, p_max=None
 
     Hertz's semi-axes grow as Q^(1/3) and p_max as Q^(1/3) (Hamrock & Dowson 1981 eqs.
     (3.8)-(3.16)), so Q = (x / x_1)^3 with x_1 the value at Q = 1 N.
+
+    Parameters
+    ----------
+    brg : ballrace.BallBearing
+        Bearing (groove conformities f_inner, f_outer [-], ball diameter D [m]).
+    race : {"inner", "outer"}
+        Race whose contact sets the load.
+    contact_angle : float
+        Contact angle [rad].
+    a_over_fD : float, optional
+        Semi-major axis over groove radius of the Hertz contact, in (0, 1) [-].
+    p_max : float, optional
+        Hertz maximum pressure [Pa], > 0.
+
+    Returns
+    -------
+    float
+        Ball load Q [N].
+
+    Examples
+    --------
+    >>> import ballrace
+    >>> brg = ballrace.BallBearing(12.7e-3, 9, 65e-3, 0.52, 0.52, free_contact_angle=0.0)
+    >>> round(limits_load(brg, "inner", 0.0, p_max=4.2e9))     # 209 inner race, ISO 76
+    12150
     """
     from ballrace import fem
 
