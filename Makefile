@@ -6,7 +6,7 @@ STAMP  := $(VENV)/.installed
 export PYVISTA_OFF_SCREEN := true
 export MPLBACKEND := Agg
 
-.PHONY: all venv cholmod validate test test-fem test-all bench docs test-docs fuzz clean
+.PHONY: all venv cholmod validate validate-sweep test test-fem test-all bench docs test-docs fuzz clean
 
 all: test
 
@@ -40,6 +40,14 @@ cholmod: $(STAMP)
 ## The main job: analytic reference checks (and quick FE checks), summary table, report in reports/latest/
 validate: $(STAMP)
 	$(BIN)/ballrace validate --report reports/latest
+
+## On-demand FE sweep "where Hertz holds" (Hertz vs exact gap over conformity x a/(fD) x race,
+## validation/cases/fem_hertz_limits.toml; docs/fem-sweep.md), 2 dask workers, report in
+## reports/out/sweep/; SWEEP_LEVEL=standard for the standard mesh (longer)
+SWEEP_LEVEL ?= quick
+validate-sweep: $(STAMP)
+	$(BIN)/ballrace validate --cases fem_hertz_limits.toml --fem $(SWEEP_LEVEL) --workers 2 \
+	  --report reports/out/sweep
 
 ## Default test suite (analytic + quick FE level), well under 15 minutes
 test: $(STAMP)

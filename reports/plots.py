@@ -26,8 +26,12 @@ def _pyplot():
 def _lines(ax, p) -> None:
     for s in p["series"]:
         style = s.get("style", "markers" if p.get("markers_only") else "line")
+        kw = {"color": s["color"]} if s.get("color") is not None else {}   # fixed colour
         if style == "markers":
-            ax.plot(s["x"], s["y"], "o-", ms=4, lw=0.8, label=s.get("label"))
+            ax.plot(s["x"], s["y"], "o-", ms=4, lw=0.8, label=s.get("label"), **kw)
+        elif style == "dashed-markers":
+            ax.plot(s["x"], s["y"], "s--", ms=3.5, lw=0.8, mfc="none", label=s.get("label"),
+                    **kw)
         elif style == "published":
             ax.plot(s["x"], s["y"], "o", ms=9, mfc="none", mec="tab:red", mew=1.6,
                     label=s.get("label"), zorder=5)
@@ -36,7 +40,7 @@ def _lines(ax, p) -> None:
                     zorder=5)
         else:
             ax.plot(s["x"], s["y"], "--" if style == "dashed" else "-", lw=1.4,
-                    label=s.get("label"))
+                    label=s.get("label"), **kw)
     for h, ls in zip(p.get("hlines", ()), ("--", ":", "-.", (0, (5, 1, 1, 1)))):
         ax.axhline(h["y"], ls=ls, lw=0.9, color="k", alpha=0.7, label=h["label"])
     for v in p.get("vlines", ()):
@@ -52,7 +56,9 @@ def _lines(ax, p) -> None:
     if p.get("invert_y"):
         ax.invert_yaxis()
     ax.grid(alpha=0.3)
-    if p.get("legend") == "below":
+    if p.get("legend") == "none":
+        pass
+    elif p.get("legend") == "below":
         ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=1,
                   frameon=False)
     else:

@@ -126,3 +126,105 @@ def ball_on_race(load, race, contact_angle, mode, gap, level, render_dir, case_i
         r = fem.ball_on_race(brg, load, race=race, contact_angle=contact_angle, level=level,
                              mode=mode, gap=gap)
         return _outputs(r, render_dir, case_id)   # renders (VTK) under the lock too
+
+
+#: Quantities of the Hertz-limits sweep: (output stem, FEResult attribute).
+LIMIT_QUANTITIES = ("a", "b", "p_max", "approach", "tau0", "z0")
+_LIMITS_OUT = {"load": "[force]", "p_max_hertz": "[pressure]", "a_over_fD": "",
+               "a_over_b": "", "n_dofs": "", "wall_time": "[time]",
+               **{f"{q}_{kind}": "" for q in LIMIT_QUANTITIES
+                  for kind in ("vs_hertz", "exact_vs_hertz", "beyond")}}
+
+
+def limits_load(brg, race: str, contact_angle: float, a_over_fD=None, p_max=None) -> float:
+    """Ball load Q [N] that gives a Hertz contact of a/(f D) = ``a_over_fD`` or ``p_max`` [Pa].
+
+    Hertz's semi-axes grow as Q^(1/3) and p_max as Q^(1/3) (Hamrock & Dowson 1981 eqs.
+    (3.8)-(3.16)), so Q = (x / x_1)^3 with x_1 the value at Q = 1 N.
+
+    Parameters
+    ----------
+    brg : ballrace.BallBearing
+        Bearing (groove conformities f_inner, f_outer [-], ball diameter D [m]).
+    race : {"inner", "outer"}
+        Race whose contact sets the load.
+    contact_angle : float
+        Contact angle [rad].
+    a_over_fD : float, optional
+        Semi-major axis over groove radius of the Hertz contact, in (0, 1) [-].
+    p_max : float, optional
+        Hertz maximum pressure [Pa], > 0.
+
+    Returns
+    -------
+    float
+        Ball load Q [N].
+
+    Examples
+    --------
+    >>> import ballrace
+    >>> brg = ballrace.BallBearing(12.7e-3, 9, 65e-3, 0.52, 0.52, free_contact_angle=0.0)
+    >>> round(limits_load(brg, "inner", 0.0, p_max=4.2e9))     # 209 inner race, ISO 76
+    12150
+    """
+    from ballrace import fem
+
+    if (a_over_fD is None) == (p_max is None):
+        raise ValueError("give exactly one of a_over_fD [-] and p_max [Pa] for the load")
+    c1 = fem.race_case(brg, 1.0, race, contact_angle).analytic
+    if p_max is not None:
+        if not 0 < p_max < math.inf:
+            raise ValueError(f"p_max must be > 0 [Pa]; got {p_max!r}")
+        return float((p_max / float(c1.p_max)) ** 3)
+    f = float(brg.f_inner if race == "inner" else brg.f_outer)
+    if not 0 < a_over_fD < 1:
+        raise ValueError(f"a_over_fD must be in (0, 1) [-] (the ellipse inside the groove); "
+                         f"got {a_over_fD!r}")
+    return float((a_over_fD * f * float(brg.ball_diameter) / float(c1.a)) ** 3)
+
+
+@calculation("fem.hertz_limits", requires=(_FEM + ":ball_on_race",), fem=True,
+             inputs={"ball_diameter": Param("[length]"), "pitch_diameter": Param("[length]"),
+                     "f": Param(""), "race": Param("str", "inner", choices=("inner", "outer")),
+                     "contact_angle": Param("[angle]", 0.0), "E": Param("[pressure]", 200e9),
+                     "nu": Param("", 0.3), "a_over_fD": Param("", None),
+                     "p_max": Param("[pressure]", None),
+                     "mode": _OPTIONS["mode"], "level": _CONTEXT["level"]},
+             outputs=_LIMITS_OUT)
+def hertz_limits(ball_diameter, pitch_diameter, f, race, contact_angle, E, nu, a_over_fD,
+                 p_max, mode, level):
+    """FE ball on a race with Hertz's gap and with the exact sphere-torus gap, same mesh.
+
+    The load is set by the Hertz a/(f D) or p_max it gives (:func:`limits_load`).  Outputs
+    per quantity q of :data:`LIMIT_QUANTITIES`: ``q_vs_hertz`` (Hertz-gap FE against the
+    analytic value: the discretisation error), ``q_exact_vs_hertz`` (exact-gap FE against
+    the analytic value) and ``q_beyond`` = exact-gap FE / Hertz-gap FE - 1 (both on one
+    mesh, so the discretisation error cancels and the geometric departure from Hertz's
+    quadratic gap is left).
+    """
+    from ballrace import Material, fem
+    from ballrace.analytic.bearing import BallBearing
+
+    brg = BallBearing(ball_diameter, 9, pitch_diameter, f, f,
+                      free_contact_angle=contact_angle, material=Material(E=E, nu=nu))
+    load = limits_load(brg, race, contact_angle, a_over_fD, p_max)
+    c = fem.race_case(brg, load, race, contact_angle).analytic
+    res = {}
+    with FE_LOCK:
+        for gap in ("hertz", "exact"):       # the mesh depends on the Hertz ellipse only
+            res[gap] = fem.ball_on_race(brg, load, race=race, contact_angle=contact_angle,
+                                        level=level, mode=mode, gap=gap)
+    h, e = res["hertz"], res["exact"]
+    if h.info.get("mesh_digests") != e.info.get("mesh_digests"):
+        raise RuntimeError("the Hertz-gap and exact-gap models were meshed differently; "
+                           "their difference would not cancel the discretisation error")
+    out = {"load": load, "p_max_hertz": float(c.p_max),
+           "a_over_fD": float(c.a) / (f * ball_diameter), "a_over_b": float(c.a / c.b),
+           "n_dofs": float(h.n_dofs),
+           "wall_time": float(h.timings["total"] + e.timings["total"])}
+    rows = {g: {row["quantity"]: row for row in r.comparison} for g, r in res.items()}
+    for q in LIMIT_QUANTITIES:
+        out[f"{q}_vs_hertz"] = float(rows["hertz"][q]["error"])
+        out[f"{q}_exact_vs_hertz"] = float(rows["exact"][q]["error"])
+        out[f"{q}_beyond"] = float(getattr(e, q) / getattr(h, q) - 1.0)
+    return out

@@ -9,16 +9,30 @@ f, contact angle and gap.  Hertz's half-space assumption degrades as a/(f D) gro
 (docs/fem.md), so this is where the map shows it.  Without a run, or without sweep
 points, the figure comes back with ``note`` set and no panels.
 
+:func:`limits_figures` does the same for the "where Hertz holds" sweep
+(``fem.hertz_limits``, validation/cases/fem_hertz_limits.toml, docs/fem-sweep.md): the
+departure of the exact sphere–torus gap from Hertz's quadratic gap on the same mesh
+(``*_beyond``) against a/(f D), one line per race and conformity, with the +/-1 % band
+and the a/(f D) where the first line leaves it (:func:`one_percent_limit`), and beside it
+the Hertz-gap errors (the discretisation error) with the level's tolerance.
+
 >>> fem_figures()[0].note.startswith("no FE sweep")
 True
+>>> pts = [{"race": "inner", "f": 0.52, "a_over_fD": s, "a_beyond": -0.16 * s * s}
+...        for s in (0.1, 0.2, 0.3)]
+>>> round(one_percent_limit(pts, "a_beyond")[0], 4)   # 0.16 s^2 = 1 % at s = 0.25
+0.25
 """
 from __future__ import annotations
+
+import math
 
 import numpy as np
 
 from .figures import Figure
 
-__all__ = ["fem_figures", "sweep_series"]
+__all__ = ["fem_figures", "sweep_series", "limits_figures", "limits_series",
+           "one_percent_limit"]
 
 #: (output key, panel title) of the error panels; keys missing from a run are skipped.
 QUANTITIES = (("a_vs_hertz", "a"), ("b_vs_hertz", "b"), ("p_max_vs_hertz", "p0"),
@@ -70,7 +84,12 @@ def sweep_series(points, key: str) -> list[dict]:
 
 
 def fem_figures(run=None) -> list[Figure]:
-    """Error maps of the FE sweep cases in ``run`` (a :class:`validation.runner.Run`)."""
+    """Error maps of the FE sweep cases in ``run`` (a :class:`validation.runner.Run`): the
+    ``fem.ball_on_race`` sweeps, then the Hertz-limits figures (:func:`limits_figures`)."""
+    return _sweep_figures(run) + limits_figures(run)
+
+
+def _sweep_figures(run) -> list[Figure]:
     pts, src = [], []
     for r in getattr(run, "results", ()) or ():
         if r.calculation == "fem.ball_on_race" and r.points:
@@ -94,3 +113,167 @@ def fem_figures(run=None) -> list[Figure]:
                            "dask).  The mesh level sets the discretisation error; a "
                            "growing trend with a/(f D) is the half-space assumption.",
                    panels=tuple(panels))]
+
+
+# --------------------------------------------------------------------------- Hertz limits
+#: (output stem, panel title) of the Hertz-limits panels (outputs ``stem_beyond``,
+#: ``stem_vs_hertz`` of ``fem.hertz_limits``).
+LIMIT_PANELS = (("a", "a"), ("b", "b"), ("p_max", "p0"), ("approach", "delta"),
+                ("tau0", "LP tau0"), ("z0", "LP depth z0"))
+#: ISO 76 static-rating contact stress of ball bearings [Pa] (marked on the load panel).
+STATIC_RATING_STRESS = 4.2e9
+_LIMITS_ID = "fem-hertz-limits"
+#: One colour per conformity (colour-blind-safe sequence), cycled.
+_F_COLOURS = ("#0072B2", "#009E73", "#E69F00", "#CC79A7", "#D55E00", "#56B4E9", "#000000")
+
+
+def limits_series(points, key: str, scale: float = 100.0) -> list[dict]:
+    """Lines of one ``fem.hertz_limits`` output against a/(f D), one per (race, f).
+
+    Parameters
+    ----------
+    points : sequence of dict
+        Sweep points (inputs and outputs): ``race``, ``f`` [-], ``a_over_fD`` [-], ``key``.
+    key : str
+        Output, e.g. ``"a_beyond"`` (relative difference [-]).
+    scale : float
+        Factor applied to the values (100: per cent) [-].
+
+    Returns
+    -------
+    list of dict
+        ``{"x": a/(f D) [-], "y": value x scale, "label", "color", "style"}``; inner race
+        solid with dots, outer race dashed with squares, one colour per f; x ascending.
+    """
+    groups: dict = {}
+    for p in points:
+        v = p.get(key, np.nan)
+        if v is None or not np.isfinite(v):
+            continue
+        groups.setdefault((p.get("race", "inner"), float(p["f"])), []).append(
+            (float(p["a_over_fD"]), scale * float(v)))
+    fs = sorted({f for _, f in groups})
+    out = []
+    for (race, f), xy in sorted(groups.items()):
+        xy.sort()
+        out.append({"x": np.array([v[0] for v in xy]), "y": np.array([v[1] for v in xy]),
+                    "label": f"{race}, f = {f:.3f}",
+                    "color": _F_COLOURS[fs.index(f) % len(_F_COLOURS)],
+                    "style": "markers" if race == "inner" else "dashed-markers"})
+    return out
+
+
+def one_percent_limit(points, key: str, level: float = 0.01) -> tuple[float, str]:
+    """Largest a/(f D) below which every (race, f) line of ``key`` stays within ``level``.
+
+    Along each line (ascending a/(f D)) the first crossing of ``|value| = level`` is
+    interpolated between the last point inside and the first outside, linearly in
+    (a/(f D))² (the departure of the exact gap grows as (a/(f D))², docs/fem-sweep.md, so a
+    pure square law is recovered exactly); the limit is the smallest crossing over the
+    lines.
+
+    Parameters
+    ----------
+    points : sequence of dict
+        ``fem.hertz_limits`` sweep points (``race``, ``f``, ``a_over_fD``, ``key``).
+    key : str
+        Output, e.g. ``"a_beyond"`` [-].
+    level : float
+        Bound on ``|value|`` [-] (0.01: 1 %).
+
+    Returns
+    -------
+    (float, str)
+        The limit a/(f D) [-] (NaN without data) and its text: ``"0.22"``, ``"< 0.1"``
+        (already outside at the smallest a/(f D) swept) or ``"> 0.6"`` (never outside).
+    """
+    lines = limits_series(points, key, scale=1.0)
+    if not lines:
+        return math.nan, "n/a"
+    lo = min(float(s["x"][0]) for s in lines)
+    hi = max(float(s["x"][-1]) for s in lines)
+    best = math.inf
+    for s in lines:
+        x, y = s["x"], np.abs(s["y"])
+        out = np.nonzero(y >= level)[0]
+        if not out.size:
+            continue
+        i = int(out[0])
+        if i == 0:
+            return float(x[0]), f"< {x[0]:.2g}"
+        x0, x1, y0, y1 = x[i - 1] ** 2, x[i] ** 2, y[i - 1], y[i]
+        best = min(best, float(np.sqrt(x0 + (level - y0) / (y1 - y0) * (x1 - x0))))
+    if best == math.inf:
+        return math.nan, f"> {hi:.2g}"
+    return best, f"{best:.2f}" if best >= lo else f"< {lo:.2g}"
+
+
+def _tolerances(level: str) -> dict:
+    try:
+        from ballrace.fem import TOLERANCES
+    except ImportError:  # pragma: no cover - fem is part of the package
+        return {}
+    return TOLERANCES.get(level, {})
+
+
+def limits_figures(run=None) -> list[Figure]:
+    """The "where Hertz holds" figures of the ``fem.hertz_limits`` cases in ``run``."""
+    pts, src = [], []
+    for r in getattr(run, "results", ()) or ():
+        if r.calculation == "fem.hertz_limits" and r.points:
+            pts.extend(r.points)
+            src.append(r.id)
+    title = "Where Hertz holds: exact sphere-torus gap against Hertz's gap"
+    if not pts:
+        return [Figure(_LIMITS_ID, _SECTION, title,
+                       note="no Hertz-limits sweep in this run (it is long and runs on "
+                            "demand: make validate-sweep, docs/fem-sweep.md)")]
+    level = getattr(run, "fem", "quick")
+    limits, beyond, errors = [], [], []
+    for i, (stem, name) in enumerate(LIMIT_PANELS):
+        series = limits_series(pts, f"{stem}_beyond")
+        if not series:
+            continue
+        x1, text = one_percent_limit(pts, f"{stem}_beyond")
+        limits.append(f"{name} {text}")
+        beyond.append({"kind": "lines", "title": f"{name}: within 1 % below a/(fD) = {text}",
+                       "xlabel": "a / (f D)", "ylabel": "exact / Hertz-gap FE - 1 [%]",
+                       "series": series, "hband": 1.0,
+                       "vlines": [{"x": x1}] if np.isfinite(x1) else [],
+                       "legend": "best" if i == 0 else "none"})
+        tol = _tolerances(level).get(stem)
+        err = {"kind": "lines", "title": f"{name}: Hertz-gap error ({level} mesh)",
+               "xlabel": "a / (f D)", "ylabel": "FE - analytic [%]",
+               "series": limits_series(pts, f"{stem}_vs_hertz"),
+               "legend": "best" if i == 0 else "none"}
+        if tol:
+            err["hband"] = 100.0 * tol
+        errors.append(err)
+    p0 = limits_series(pts, "p_max_hertz", scale=1e-9)
+    load = {"kind": "lines", "title": "Hertz p0 of the points (dashed: 4.2 GPa, ISO 76)",
+            "xlabel": "a / (f D)",
+            "ylabel": "p0 [GPa]", "series": p0, "legend": "none",
+            "hlines": [{"y": STATIC_RATING_STRESS * 1e-9,
+                        "label": "4.2 GPa (ISO 76 static rating)"}]}
+    where = ", ".join(src)
+    size = (14.0, 7.4)
+    return [
+        Figure(_LIMITS_ID, _SECTION, title, panels=tuple(beyond) + (load,), size=size,
+               caption="Half-space FE models of a ball in a race groove (inner race: dots, "
+                       "solid; outer race: squares, dashed; one colour per conformity f) "
+                       "with the exact sphere-torus gap against the same model with Hertz's "
+                       "quadratic gap on the same mesh, so the discretisation error cancels "
+                       "and the geometric departure from Hertz is left.  Grey: +/-1 %; "
+                       "dotted line: the a/(f D) (semi-major axis over groove radius) where "
+                       "the first line leaves it.  Half-space Hertz is good to 1 % below "
+                       f"a/(f D) = {'; '.join(limits)}.  Last panel: the Hertz p0 of each "
+                       "point and the ISO 76 static-rating stress 4.2 GPa.  Case(s) "
+                       f"{where}, --fem {level}."),
+        Figure(_LIMITS_ID + "-discretisation", _SECTION,
+               "Where Hertz holds: the Hertz-gap errors (discretisation) of the same sweep",
+               panels=tuple(errors), size=size,
+               caption="The Hertz-gap FE against the analytic Hertz / Lundberg-Palmgren "
+                       "values at the same points: the mesh's discretisation error, which "
+                       "the self-similar Hertz-gap problem keeps independent of the load; "
+                       f"grey: the {level} level's tolerance (fem.TOLERANCES)."),
+    ]

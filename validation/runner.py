@@ -184,9 +184,22 @@ def reduce_points(case: Case, outs: list) -> dict:
     res = {}
     for new, how, name in case.sweep.reduce:
         v = np.array([o[name] for o in outs], dtype=float)
+        if how == "min_rise":
+            res[new] = _min_rise(case, v)
+            continue
         res[new] = float({"max_abs": lambda x: np.max(np.abs(x)), "max": np.max,
                           "min": np.min, "mean": np.mean}[how](v))
     return res
+
+
+def _min_rise(case: Case, v):
+    """Smallest step of |v| along the last sweep axis (NaN when it has one value)."""
+    import numpy as np
+
+    shape = tuple(len(vals) for _, vals in case.sweep.axes)
+    if shape[-1] < 2:
+        return math.nan
+    return float(np.min(np.diff(np.abs(v.reshape(shape)), axis=-1)))
 
 
 def _finish(case: Case, outputs: dict, duration: float, points=(), artifacts=()) -> CaseResult:

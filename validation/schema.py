@@ -30,8 +30,13 @@ cannot fail).  A ``[case.sweep]`` table turns a case into a parameter sweep: eac
 key is an input with a list of values (or ``{linspace = [lo, hi, n]}`` /
 ``{logspace = [lo_exp, hi_exp, n]}``), the calculation runs on the Cartesian grid
 (through dask), and ``[case.reduce]`` maps new output names to ``"max_abs(name)"``,
-``"max(name)"``, ``"min(name)"`` or ``"mean(name)"`` over the grid; the expectations
-then refer to those reduced names.
+``"max(name)"``, ``"min(name)"`` or ``"mean(name)"`` over the grid, or
+``"min_rise(name)"``: the smallest change of ``|name|`` from one grid point to the next
+along the *last* sweep axis (``min = 0`` then checks that ``|name|`` never falls along
+that axis); the expectations then refer to those reduced names.  A case tagged
+``"on-demand"`` (``tags = ["on-demand"]``, e.g. a long FE sweep) is left out of the
+default selection (all packaged cases) and runs only when its file is named with
+``--cases``.
 
 Loading checks everything that can be checked without running: unknown calculation,
 missing or unknown fields, unit strings of the wrong dimension, tolerances without a
@@ -83,7 +88,9 @@ _CASE_KEYS = {"id", "title", "kind", "calculation", "source", "inputs", "expecte
               "reduce", "notes", "fem_levels", "tags"}
 _SOURCE_KEYS = {"author", "year", "reference", "url", "note"}
 _EXPECT_KEYS = {"value", "rtol", "atol", "max", "min", "reason"}
-_REDUCERS = ("max_abs", "max", "min", "mean")
+_REDUCERS = ("max_abs", "max", "min", "mean", "min_rise")
+#: Cases with this tag run only when their file is selected with ``--cases``.
+ON_DEMAND = "on-demand"
 _FEM_LEVELS = ("quick", "standard")
 _ID_RE = re.compile(r"^[a-z0-9][a-z0-9._-]*$")
 
@@ -495,6 +502,8 @@ def default_case_dir() -> Path:
 def load_cases(pattern: str | None = None) -> list[Case]:
     """Load every case file matching ``pattern`` (default: all packaged cases), sorted by path.
 
+    The default selection leaves out the cases tagged :data:`ON_DEMAND`.
+
     ``pattern`` is a glob; a relative pattern that matches nothing in the working
     directory is tried inside the packaged case directory (``--cases 'hertz*'``).
     Case ids must be unique.
@@ -517,5 +526,7 @@ def load_cases(pattern: str | None = None) -> list[Case]:
             if case.id in seen:
                 raise CaseFileError(f"{f}: case id {case.id!r} already used in {seen[case.id]}")
             seen[case.id] = os.fspath(f)
+            if pattern is None and ON_DEMAND in case.tags:
+                continue
             out.append(case)
     return out
