@@ -768,8 +768,8 @@ def _solve_load(case, states, meshes, sz, I, C, level, mode, gap, approach, shar
     tau_at = abs(float(ex.to_depth_frame(ex.stresses(low, ul, ptx, hs))[0, 4]))
     # the whole section profile against the analytic one on the same points: a measure of
     # the discretisation error that, unlike the depth of the flat peak, is well conditioned
-    tau_an = sub.stress(c, Xs, 0.0 * Xs, Zs, nu=nu_low).tau_xz
-    dprof = (prof - np.max(np.abs(tau_an), axis=0)) / float(osh.tau0)
+    s_an = sub.stress(c, Xs, 0.0 * Xs, Zs, nu=nu_low)
+    dprof = (prof - np.max(np.abs(s_an.tau_xz), axis=0)) / float(osh.tau0)
     msa = sub.max_shear(c, nu=nu_low)
     vma = sub.von_mises(c, nu=nu_low)
     timings["extract"] = time.perf_counter() - t0
@@ -802,7 +802,11 @@ def _solve_load(case, states, meshes, sz, I, C, level, mode, gap, approach, shar
     fields = {"section_x": xs, "section_z": zs, "tau_xz": tau,
               "max_shear": tres.reshape(Xs.shape), "von_mises": vm.reshape(Xs.shape),
               "grid": sz.grid, "lam": sol.lam, "axis_z": za, "axis_tresca": tr_a,
-              "axis_von_mises": vm_a, "states": states, "u": us}
+              "axis_von_mises": vm_a, "states": states, "u": us,
+              # the analytic field on the same section points (render draws it beside)
+              "analytic": {"tau_xz": np.asarray(s_an.tau_xz, dtype=float),
+                           "max_shear": np.asarray(s_an.tresca, dtype=float),
+                           "von_mises": np.asarray(s_an.von_mises, dtype=float)}}
     info = {"approach_hertz": float(c.approach), "depth_point": zq,
             "halfspace_w_depth_points": w_sum,
             "rigid_approach_error": sol.Delta / float(c.approach) - 1.0,

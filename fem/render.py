@@ -40,7 +40,8 @@ def section_comparison(r, field: str):
     Parameters
     ----------
     r : FEResult
-        A solved case (``r.fields`` holds the section).
+        A solved case (``r.fields`` holds the FE section and the analytic field on the
+        same points, ``fields["analytic"]``, computed once by the solve).
     field : {"von_mises", "max_shear", "tau_xz"}
         Which stress.
 
@@ -50,18 +51,15 @@ def section_comparison(r, field: str):
         x from -x_max to x_max [m] (the FE quarter section mirrored), depth z [m], and the
         FE and analytic fields of shape (x.size, z.size) [Pa].
     """
-    from ballrace.analytic import subsurface
-
     f = r.fields
     xs, zs = np.asarray(f["section_x"]), np.asarray(f["section_z"])
-    V = np.asarray(f[field])
-    sgn = -1.0 if field == "tau_xz" else 1.0
+    sgn = -1.0 if field == "tau_xz" else 1.0        # tau_xz is odd in x, the others even
     x = np.concatenate([-xs[:0:-1], xs])
-    fe = np.concatenate([sgn * V[:0:-1], V], axis=0)
-    X, Z = np.meshgrid(x, zs, indexing="ij")
-    s = subsurface.stress(r.analytic, X, 0.0 * X, Z, nu=_nu(r))
-    an = {"von_mises": s.von_mises, "max_shear": s.tresca, "tau_xz": s.sxz}[field]
-    return x, zs, fe, np.asarray(an, dtype=float)
+
+    def mirrored(V):
+        V = np.asarray(V, dtype=float)
+        return np.concatenate([sgn * V[:0:-1], V], axis=0)
+    return x, zs, mirrored(f[field]), mirrored(f["analytic"][field])
 
 
 def _nu(r) -> float:
@@ -354,7 +352,7 @@ def render_3d(r, path: str = "out-3d.png", *, field: str = "von_mises",
     Parameters
     ----------
     r : FEResult
-        A solved case (``r.fields`` holds ``states`` and the contact pressures ``lam``).
+        A solved case (``r.fields`` holds ``states`` and the displacements ``u``).
     path : str
         Output PNG path.
     field : {"von_mises", "max_shear"}

@@ -224,7 +224,6 @@ class PardisoFactor(Factor):
         self._perm = np.zeros(self.n, dtype=np.int32)
         self._rows = None
         self._factored = False
-        self._A = U
 
     def _call(self, phase, B=None, X=None, nrhs=1):
         ct = self._ct

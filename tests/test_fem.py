@@ -427,3 +427,21 @@ def test_graded_refinement_region(tmp_path, monkeypatch):
     for lo, hi in ((0.0, 0.3), (0.7, 1.1)):
         assert surface_edge(graded, lo, hi) == pytest.approx(surface_edge(full, lo, hi),
                                                              rel=0.25)
+
+
+def test_per_z0_refines_the_mesh_not_the_pressure_grid():
+    """MeshLevel.per_z0: h = min(b/n, z0/per_z0); the tents keep the b/n spacing (to the
+    nearest whole number of cells, which the finer mesh no longer has to round down)."""
+    from ballrace.analytic.subsurface import orthogonal_shear
+    from ballrace.fem import api
+
+    case = api.plane_case(12.7e-3, 2000.0)
+    b = float(case.analytic.semi_axis_x)
+    z0 = float(orthogonal_shear(case.analytic).z0)
+    base = api.sizing(case, api.MeshLevel(9, 2.3))
+    fine = api.sizing(case, api.MeshLevel(9, 2.3, per_z0=4.2))
+    assert base.h == pytest.approx(b / 9)
+    assert fine.h == pytest.approx(min(b / 9, z0 / 4.2)) and fine.h < base.h   # z0 = 0.35 b
+    for sz in (base, fine):
+        assert sz.grid.dx == pytest.approx(b / 9, rel=0.1)
+    assert fine.grid.dx > 1.2 * fine.h                          # tents ~1.33 elements apart
