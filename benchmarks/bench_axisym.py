@@ -26,9 +26,9 @@ import json
 import resource
 import time
 
-QUANTITIES = ("a", "p_max", "approach", "tau0", "z0", "max_shear", "max_shear_depth",
-              "von_mises", "von_mises_depth")
-SHORT = {"a": "a", "p_max": "p0", "approach": "δ", "tau0": "τ0", "z0": "z0",
+QUANTITIES = ("a", "p_max", "approach", "tau0", "z0", "z0_tangent_plane", "max_shear",
+              "max_shear_depth", "von_mises", "von_mises_depth")
+SHORT = {"a": "a", "p_max": "p0", "approach": "δ", "tau0": "τ0", "z0": "z0", "z0_tangent_plane": "z0 (tangent plane)",
          "max_shear": "max shear", "max_shear_depth": "depth", "von_mises": "von Mises",
          "von_mises_depth": "depth"}
 D = 12.7e-3

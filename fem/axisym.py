@@ -127,7 +127,11 @@ class AxisymResult:
     approach : FE estimate of Hertz's approach: the approach of two on-axis points 3 a deep
         (one per body) plus their half-space displacements under the Hertz pressure
         (as ``FEResult.approach``) [m].
-    tau0, z0 : peak of ``max_r |tau_rz|`` over depth and its depth [Pa], [m].
+    tau0, z0 : peak of ``max_r |tau_rz|`` over depth and its depth [Pa], [m]; depth is
+        measured below the undeformed surface at the same r (as in the 3-D model).
+    z0_tangent_plane : the same peak's depth measured below the tangent plane at the
+        contact point instead [m] (differs from z0 of a curved lower body by about
+        x0^2/(2 R_2): the definition of "depth" matters at the order of a/R).
     tau_x0z0 : |tau_rz| at Lundberg–Palmgren's (x0, z0) [Pa].
     max_shear, max_shear_depth : on-axis Tresca maximum [Pa] and its depth [m].
     von_mises, von_mises_depth : on-axis von Mises maximum [Pa] and its depth [m].
@@ -153,6 +157,7 @@ class AxisymResult:
     approach: float
     tau0: float
     z0: float
+    z0_tangent_plane: float
     tau_x0z0: float
     max_shear: float
     max_shear_depth: float
@@ -166,13 +171,24 @@ class AxisymResult:
     profiles: dict = field(default_factory=dict, repr=False, compare=False)
 
     def error(self, quantity: str, against: str = "exact") -> float:
-        """Relative error FE/analytic - 1 of a quantity [-] (``against="fit"``: the analytic
-        field through the same sampling and peak fit)."""
-        for row in self.comparison:
-            if row["quantity"] == quantity:
-                return row["error" if against == "exact" else "error_fit"]
-        raise ValueError(f"quantity must be one of {', '.join(r['quantity'] for r in self.comparison)}; "
-                         f"got {quantity!r}")
+        """Relative error FE/analytic - 1 of a quantity [-].
+
+        Parameters
+        ----------
+        quantity : str
+            A row of :attr:`comparison` ("a", "p_max", "approach", "tau0", "tau_x0z0",
+            "z0", "z0_tangent_plane", "max_shear", "max_shear_depth", "von_mises",
+            "von_mises_depth").
+        against : {"exact", "fit"}
+            The exact analytic value, or the analytic field through the same sampling
+            and peak fit.
+        """
+        check_choice(against, "against", ("exact", "fit"))
+        names = [r["quantity"] for r in self.comparison]
+        if quantity not in names:
+            raise ValueError(f"quantity must be one of {', '.join(names)}; got {quantity!r}")
+        row = self.comparison[names.index(quantity)]
+        return row["error" if against == "exact" else "error_fit"]
 
     @property
     def errors(self) -> dict:
@@ -594,6 +610,13 @@ def run_axisym(case, n: float = 20, mode: str = "two-body", gap: str = "hertz", 
     tau = S[:, 3].reshape(Rg.shape)
     prof = np.max(np.abs(tau), axis=0)
     z0_fe, tau0_fe = peak_fit(zs, prof, **FIT)
+    if math.isinf(lower.radius):
+        z0_tp = z0_fe
+    else:                                      # depth below the tangent plane z = 0
+        inside = (-Zg < lower.height(Rg)).ravel()          # points below the surface
+        tp = np.zeros(Rg.size)
+        tp[inside] = lower.stresses(ul, np.stack([Rg.ravel(), -Zg.ravel()], axis=1)[inside])[:, 3]
+        z0_tp = peak_fit(zs, np.max(np.abs(tp.reshape(Rg.shape)), axis=0), **FIT)[0]
     s_an = sub.stress(c, Rg, 0.0 * Rg, Zg, nu=nu_low)
     prof_an = np.max(np.abs(np.asarray(s_an.tau_xz, dtype=float)), axis=0)
     z0_fit, tau0_fit = peak_fit(zs, prof_an, **FIT)
@@ -630,6 +653,7 @@ def run_axisym(case, n: float = 20, mode: str = "two-body", gap: str = "hertz", 
     row("tau0", "Pa", tau0_fe, float(osh.tau0), tau0_fit)
     row("tau_x0z0", "Pa", tau_at, float(osh.tau0))
     row("z0", "m", z0_fe, z0, z0_fit)
+    row("z0_tangent_plane", "m", z0_tp, z0, z0_fit)
     row("max_shear", "Pa", ms, float(msa.tau_max), ms_fit[1])
     row("max_shear_depth", "m", ms_d, float(msa.depth), ms_fit[0])
     row("von_mises", "Pa", vmx, float(vma.sigma_vm), vm_fit[1])
@@ -646,6 +670,7 @@ def run_axisym(case, n: float = 20, mode: str = "two-body", gap: str = "hertz", 
              case.name, mode, gap, n, n_dofs, len(tents), seconds)
     return AxisymResult(name=case.name, mode=mode, gap=gap, load=float(case.load), n=n, h=h,
                         a=a_fe, p_max=p_fe, approach=d_fe + w_sum, tau0=tau0_fe, z0=z0_fe,
+                        z0_tangent_plane=z0_tp,
                         tau_x0z0=tau_at, max_shear=ms, max_shear_depth=ms_d, von_mises=vmx,
                         von_mises_depth=vm_d, n_dofs=n_dofs, n_tents=len(tents),
                         seconds=seconds, comparison=tuple(rows), analytic=c,

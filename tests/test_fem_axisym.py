@@ -21,8 +21,8 @@ def _has_fem() -> bool:
 
 needs_fem = pytest.mark.skipif(not _has_fem(), reason="needs the fem extra (skfem, gmsh)")
 
-QUANTITIES = ("a", "p_max", "approach", "tau0", "tau_x0z0", "z0", "max_shear",
-              "max_shear_depth", "von_mises", "von_mises_depth")
+QUANTITIES = ("a", "p_max", "approach", "tau0", "tau_x0z0", "z0", "z0_tangent_plane",
+              "max_shear", "max_shear_depth", "von_mises", "von_mises_depth")
 
 
 # --------------------------------------------------------------------------- formulas
@@ -103,7 +103,12 @@ def test_half_space_verification():
     for q in QUANTITIES:
         assert abs(r.error(q)) < 2e-3, (q, r.error(q))
     assert r.a == pytest.approx(float(r.analytic.a), rel=2e-3)
+    assert r.z0_tangent_plane == r.z0            # a flat lower body: one definition of depth
     assert r.n_tents == 53 and r.profiles["complementarity"] < 1e-8
+    with pytest.raises(ValueError, match="quantity"):
+        r.error("z1")
+    with pytest.raises(ValueError, match="against"):
+        r.error("z0", against="exactly")
 
 
 @needs_fem
