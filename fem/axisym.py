@@ -531,7 +531,10 @@ def run_axisym(case, n: float = 20, mode: str = "two-body", gap: str = "hertz", 
     n = float(check_range(n, "n", 4.0, None, low_inclusive=True, unit="-"))
     check_choice(mode, "mode", MODES)
     check_choice(gap, "gap", GAPS)
-    if isinstance(tent_stride, bool) or int(tent_stride) != tent_stride or tent_stride < 1:
+    if isinstance(tent_stride, bool) or not isinstance(tent_stride, (int, float, np.integer)):
+        raise TypeError(f"tent_stride must be a whole number [-]; got "
+                        f"{type(tent_stride).__name__}")
+    if not math.isfinite(tent_stride) or int(tent_stride) != tent_stride or tent_stride < 1:
         raise ValueError(f"tent_stride must be a whole number >= 1 [-]; got {tent_stride!r}")
     tent_stride = int(tent_stride)
     growth = float(check_range(growth, "growth", 0.0, 1.0, high_inclusive=True, unit="-"))
@@ -544,7 +547,7 @@ def run_axisym(case, n: float = 20, mode: str = "two-body", gap: str = "hertz", 
     R1 = float(case.ball_radius)
     R2 = float(case.lower_radii[0]) if case.lower_kind == "ball" else math.inf
     h = a_h / n
-    n_surf = tent_stride * int(math.ceil(GRID_EXTENT * a_h / (h * tent_stride)))
+    n_surf = tent_stride * int(math.ceil(GRID_EXTENT * n / tent_stride - 1e-9))
     r_nodes = _surface_nodes(n_surf, h)
     tents = r_nodes[::tent_stride]
     fine = (float(r_nodes[-1]) + 2 * h, REFINE_DEPTH * a_h)

@@ -10,6 +10,8 @@ import importlib
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from scipy.integrate import quad
 
 from ballrace.fem import axisym
@@ -48,6 +50,17 @@ def test_pressure_moment_radius_broadcasts_and_rejects_bad_input():
         axisym.pressure_moment_radius(1.0, -1.0)
 
 
+@settings(max_examples=50, deadline=None)
+@given(a=st.floats(1e-6, 1e-1), p0=st.floats(1e6, 1e10), s=st.floats(0.1, 10.0))
+def test_pressure_moment_radius_scales(a, p0, s):
+    # a depends on the shape of p(r) only: scaling the pressure leaves it, stretching r by
+    # s (M2 ~ s^4, Q ~ s^2) multiplies it by s
+    Q, M2 = 2 / 3 * np.pi * a**2 * p0, 4 / 15 * np.pi * p0 * a**4
+    assert float(axisym.pressure_moment_radius(3.7 * Q, 3.7 * M2)) == pytest.approx(a, rel=1e-12)
+    assert float(axisym.pressure_moment_radius(s**2 * Q, s**4 * M2)) == pytest.approx(s * a,
+                                                                                  rel=1e-12)
+
+
 def test_tent_integrals_are_exact_for_polynomials():
     L, n = 1.3e-3, 13
     tents = np.linspace(0.0, L, n + 1)
@@ -79,6 +92,8 @@ def test_bad_input():
             axisym.run_axisym(case, **kwargs)
     with pytest.raises(TypeError, match="mode"):
         axisym.run_axisym(case, mode=2)
+    with pytest.raises(TypeError, match="tent_stride"):
+        axisym.run_axisym(case, tent_stride="2")
     with pytest.raises(TypeError, match="case"):
         axisym.run_axisym("ball on ball")
     import ballrace
