@@ -79,7 +79,7 @@ def convergence_study(case, sizes=(4, 6, 8, 11), mode: str = "half-space",
         Called before each run.
     max_stretch : float, optional
         Element elongation cap (:class:`ballrace.fem.MeshLevel`); default the standard
-        level's.
+        level's.  The tent smoothing is the standard level's too.
     """
     from . import api
 
@@ -89,7 +89,8 @@ def convergence_study(case, sizes=(4, 6, 8, 11), mode: str = "half-space",
     for n in sizes:
         if progress:
             progress(f"n = {n}")
-        level = api.MeshLevel(float(n), cap, tents_per_axis=float("inf"))
+        level = api.MeshLevel(float(n), cap, tents_per_axis=float("inf"),
+                              smoothing=api.LEVELS["standard"].smoothing)
         r = api.run_case(case, level=level, mode=mode, **kwargs)
         rows = {row["quantity"]: row for row in r.comparison}
         for q in QUANTITIES:
