@@ -13,7 +13,9 @@ Importing this package is cheap: gmsh, meshio, scikit-fem and pyvista are import
 only when a model is run or rendered.  Frame: x rolling, y transverse, z depth;
 Lundberg–Palmgren's "tau_yz" (their y = rolling) is ``tau_xz`` here, and both names
 are accepted by :func:`render`; :func:`render_3d` draws a 3-D pyvista picture
-off-screen.
+off-screen.  :mod:`ballrace.fem.axisym` is an axisymmetric model of circular contacts
+(ball on ball, ball on a plane) resolved far beyond the 3-D model: the reference for
+what real curved balls do (docs/fem-axisym.md).
 """
 from __future__ import annotations
 

@@ -17,7 +17,10 @@ Formulation (docs/fem.md; Kalker's variational principle in a discrete form):
   of the bodies' far planes;
 * for fixed Delta, ``min 1/2 l^T C l + (G0 - Delta m)^T l, l >= 0`` is the NNLS problem
   ``min |L^T l + L^{-1}(G0 - Delta m)|`` with ``C = L L^T``; an outer root-find on
-  Delta matches ``m^T lambda`` to the (quarter) load.
+  Delta matches ``m^T lambda`` to the (quarter) load;
+* optionally C is replaced by ``C + P`` in the energy, P a curvature penalty on the tent
+  pressures (:meth:`PressureGrid.curvature_penalty`) that damps the tent checkerboard
+  of a pressure grid as fine as the mesh (``MeshLevel.smoothing``).
 
 Everything heavy (scikit-fem) is imported inside the functions.
 """
