@@ -774,8 +774,6 @@ def _solve_load(case, states, meshes, sz, I, C, level, mode, gap, approach, shar
     zs = np.linspace(0.04, 1.6, 61) * minor
     Xs, Zs = np.meshgrid(xs, zs, indexing="ij")
     surf = low.body.surface
-    # the section y = 0 and parallel ones up to SECTION_SPREAD element lengths along y:
-    # tau_xz is even in y, ex.even_fit averages the element scatter of the P2 stresses
     pts = np.stack([Xs.ravel() + eps, np.full(Xs.size, eps),
                     (surf.height(Xs, 0.0 * Xs) - Zs).ravel()], axis=1)
     S = ex.to_depth_frame(ex.stresses(low, ul, pts, hs))             # the section y = 0

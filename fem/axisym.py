@@ -212,14 +212,11 @@ def _gmsh_body(kind: str, size: tuple, r_nodes, fine: tuple, hc: float, hf: floa
     """
     import gmsh
 
+    from ballrace.meshes.contact import _options
+
     gmsh.initialize(interruptible=False)
     try:
-        for name, value in {"General.Terminal": 0, "General.NumThreads": 1,
-                            "Mesh.Algorithm": 6, "Mesh.MeshSizeExtendFromBoundary": 0,
-                            "Mesh.MeshSizeFromPoints": 0, "Mesh.MeshSizeFromCurvature": 0,
-                            "Mesh.ElementOrder": 1, "Mesh.RandomSeed": 1,
-                            "Mesh.Optimize": 1}.items():
-            gmsh.option.setNumber(name, value)
+        _options(gmsh)          # the 3-D meshes' deterministic settings (one thread, ...)
         gmsh.model.add(kind)
         geo = gmsh.model.geo
         if kind == "ball":
@@ -516,7 +513,7 @@ def run_axisym(case, n: float = 20, mode: str = "two-body", gap: str = "hertz", 
     from ballrace.analytic import subsurface as sub
 
     from . import halfspace
-    from .extract import peak_fit
+    from .extract import peak_fit, tresca_von_mises
     from .model import solve_contact
 
     t_start = time.perf_counter()
@@ -630,10 +627,9 @@ def run_axisym(case, n: float = 20, mode: str = "two-body", gap: str = "hertz", 
     # axis: Tresca and von Mises (s_rr = s_tt, tau_rz = 0 on the axis)
     za = np.linspace(0.02, 2.5, 497) * a_h
     Sa = lower.stresses(ul, np.stack([np.zeros_like(za), -za], axis=1))
-    princ = np.sort(Sa[:, :3], axis=1)
-    tr_a = 0.5 * (princ[:, 2] - princ[:, 0])
-    vm_a = np.sqrt(0.5 * ((Sa[:, 0] - Sa[:, 1]) ** 2 + (Sa[:, 1] - Sa[:, 2]) ** 2
-                          + (Sa[:, 2] - Sa[:, 0]) ** 2) + 3 * Sa[:, 3] ** 2)
+    zero = np.zeros(za.size)            # (rr, zz, tt, rz) as (xx, yy, zz, xy, xz, yz)
+    tr_a, vm_a = tresca_von_mises(np.stack([Sa[:, 0], Sa[:, 2], Sa[:, 1], zero, Sa[:, 3],
+                                            zero], axis=1))
     ms_d, ms = peak_fit(za, tr_a, **FIT)
     vm_d, vmx = peak_fit(za, vm_a, **FIT)
     ax_an = sub.axis_stress(c, za, nu=nu_low)

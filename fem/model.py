@@ -145,8 +145,8 @@ class PressureGrid:
 
     def curvature_penalty(self) -> np.ndarray:
         """Dense (n_tents, n_tents) matrix ``R = Dx^T Dx + Dy^T Dy`` of the tents' second
-        differences along x and y (mirrored at the symmetry edges x = 0, y = 0, one-sided
-        at the outer edges) [-].  ``lam^T R lam`` is 16 per tent for the checkerboard
+        differences along x and y (the grid mirrored about its first and last tents: the
+        symmetry edges x = 0, y = 0 and the outer edges, where the pressure is zero) [-].  ``lam^T R lam`` is 16 per tent for the checkerboard
         ``lam_ij = (-1)^(i+j)`` and of order ``(spacing / wavelength)^4`` for a smooth
         pressure (used by :func:`solve_contact` to damp the tent oscillation: a
         Tikhonov (1963) penalty on the discrete multiplier, in the spirit of the
