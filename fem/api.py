@@ -85,6 +85,17 @@ class MeshLevel:
         from that pressure alone); kappa = 1 damps it to < 8 % and z0 to -0.6 %.  A
         smooth pressure's second differences scale with (spacing / size)^2, so the
         penalty vanishes as the mesh is refined (docs/fem.md).
+    probe : float
+        Refinement factor of a probe box over the region the orthogonal shear is sampled
+        in (0: none) [-]: x from 0.6 to 1.4 x-semi-axes, y over the section spread,
+        ``PROBE_DEPTH`` minor semi-axes deep, meshed at ``h / probe`` in the lower body
+        only; the tents keep their spacing and the sections their count, spread over
+        SECTION_SPREAD probe elements.  At n = 9 the depth of the flat orthogonal-shear
+        peak scatters by +-2-4 % from mesh to mesh (element-scale error of the P2
+        stress, ~0.5 % of tau0); probe = 2 cut that scatter to +-0.55 % on eight
+        half-space meshes (docs/fem.md) for 1.2-1.8x the DOFs, which puts the
+        long-ellipse half-space cases over the 30 s / 3 GB budget (209 inner race:
+        23 s, 2.5 GB -> 43 s, 3.1 GB), so the named levels do not use it yet.
     """
 
     n: float
@@ -95,6 +106,7 @@ class MeshLevel:
     layer: float = 0.5
     per_z0: float = 0.0
     smoothing: float = 0.0
+    probe: float = 0.0
 
     def __post_init__(self):
         check_range(self.n, "n", 0.0, None, unit="-")
@@ -105,6 +117,7 @@ class MeshLevel:
         check_positive(self.layer, "layer", "-", allow_inf=True)
         check_range(self.per_z0, "per_z0", 0.0, None, low_inclusive=True, unit="-")
         check_range(self.smoothing, "smoothing", 0.0, None, low_inclusive=True, unit="-")
+        check_range(self.probe, "probe", 0.0, None, low_inclusive=True, unit="-")
 
 
 #: Named mesh levels (:class:`MeshLevel`); ``run_case(level=MeshLevel(...))`` for others.
@@ -148,6 +161,13 @@ SECTION_SPREAD = 3.5
 SECTION_COUNT = 9
 #: x-range of the orthogonal-shear peak search, in x-semi-axes.
 SECTION_WINDOW = (0.6, 1.4)
+#: Depth of the probe box (MeshLevel.probe) [minor semi-axes]: the top 10 % of the
+#: orthogonal-shear profile spans 0.19-0.56 b under a circular contact, 0.27-0.87 b
+#: under a long ellipse.
+PROBE_DEPTH = 1.0
+#: Size growth per unit distance from the probe box [-] (twice the refinement box's 0.3:
+#: the shell in which h/probe grows back to h costs as many elements as the box itself).
+PROBE_GROWTH = 0.6
 
 #: Extent of the lower body (half-space block, plane block), in semi-major axes.
 BLOCK_EXTENT = 8.0
@@ -518,6 +538,7 @@ class _Sizing:
     fine: tuple
     grid: object
     zq: float
+    probe: tuple = ()
 
 
 def _level(level) -> tuple[str, MeshLevel]:
@@ -573,7 +594,14 @@ def sizing(case: ContactCase, level, cover: ContactCase | None = None) -> _Sizin
     fine = (Lx + 2 * h, Ly + 2 * h * s, 1.6 * cminor)
     if np.isfinite(lv.column) and np.isfinite(lv.layer):
         fine = fine + (min(fine[1], lv.column * cminor), min(fine[2], lv.layer * cminor))
-    return _Sizing(h=h, stretch=s, fine=fine, grid=grid, zq=3.0 * minor)
+    probe = ()
+    if lv.probe > 0:
+        # the region the orthogonal shear is sampled in: SECTION_WINDOW along x, the
+        # section spread (in probe elements) along y, PROBE_DEPTH minor semi-axes deep
+        hp = h / lv.probe
+        probe = (max(0.0, SECTION_WINDOW[0] * ax - hp), SECTION_WINDOW[1] * cx + hp,
+                 (SECTION_SPREAD + 1.0) * hp * s, PROBE_DEPTH * min(cx, cy), hp, PROBE_GROWTH)
+    return _Sizing(h=h, stretch=s, fine=fine, grid=grid, zq=3.0 * minor, probe=probe)
 
 
 def _bodies(case: ContactCase, mode: str, sz: _Sizing, use_cache: bool):
@@ -590,7 +618,7 @@ def _bodies(case: ContactCase, mode: str, sz: _Sizing, use_cache: bool):
         E_hs = 0.5 * float(c.E_prime) * (1.0 - m2.nu**2)       # E/(1-nu^2) = E* = E'/2
         L = BLOCK_EXTENT * major
         blk = mc.block_mesh((L, L, L), sz.fine, sz.h, L / 5, stretch=sz.stretch,
-                            use_cache=use_cache)
+                            probe=sz.probe, use_cache=use_cache)
         cn = blk.points[:, 2] == 0.0
         bodies.append(Body("half-space", blk.points, blk.tets, E_hs, m2.nu, -1, -L, cn,
                            geo.Plane()))
@@ -607,7 +635,8 @@ def _bodies(case: ContactCase, mode: str, sz: _Sizing, use_cache: bool):
     m2 = case.material2
     if case.lower_kind == "ball":
         R2 = case.lower_radii[0]
-        b2 = mc.ball_mesh(R2, sz.fine, sz.h, R2 / 4, stretch=sz.stretch, use_cache=use_cache)
+        b2 = mc.ball_mesh(R2, sz.fine, sz.h, R2 / 4, stretch=sz.stretch, probe=sz.probe,
+                          use_cache=use_cache)
         q = b2.points.copy()
         ctr2 = np.array([0.0, 0.0, R2])
         r2 = np.linalg.norm(q - ctr2, axis=1)
@@ -628,7 +657,7 @@ def _bodies(case: ContactCase, mode: str, sz: _Sizing, use_cache: bool):
         Ly = min(L, case.lower.shoulder_y + RACE_LAND_WIDTH * abs(ry2))
     H = max(Lx, Ly)
     blk = mc.block_mesh((Lx, Ly, H), sz.fine, sz.h, H / 5, stretch=sz.stretch,
-                        use_cache=use_cache)
+                        probe=sz.probe, use_cache=use_cache)
     cn = blk.points[:, 2] == 0.0
     if case.lower_kind == "race":
         blk = mc.morph_block(blk, case.lower, H)
@@ -784,7 +813,8 @@ def _solve_load(case, states, meshes, sz, I, C, level, mode, gap, approach, shar
     # parallel sections up to SECTION_SPREAD element lengths along y, and ex.even_fit
     # (tau_xz is even in y) averages the element scatter of the P2 stresses
     win = (xs >= SECTION_WINDOW[0] * ax_) & (xs <= SECTION_WINDOW[1] * ax_)
-    ysec = np.linspace(0.0, SECTION_SPREAD * sz.h * sz.stretch, SECTION_COUNT)[1:]
+    h_sec = sz.probe[4] if sz.probe else sz.h           # element length where sampled
+    ysec = np.linspace(0.0, SECTION_SPREAD * h_sec * sz.stretch, SECTION_COUNT)[1:]
     X3, Y3, Z3 = np.meshgrid(xs[win], ysec, zs, indexing="ij")
     p3 = np.stack([X3.ravel() + eps, Y3.ravel() + eps, (surf.height(X3, Y3) - Z3).ravel()],
                   axis=1)
@@ -844,7 +874,8 @@ def _solve_load(case, states, meshes, sz, I, C, level, mode, gap, approach, shar
     row("von_mises", "Pa", vmx, float(vma.sigma_vm))
     row("von_mises_depth", "m", vm_d, float(vma.depth))
 
-    fields = {"section_x": xs, "section_z": zs, "tau_xz": tau,
+    fields = {"section_x": xs, "section_z": zs, "tau_xz": tau, "tau_xz_y0": tau_fit,
+              "section_window": win, "tau_profile": prof,
               "max_shear": tres.reshape(Xs.shape), "von_mises": vm.reshape(Xs.shape),
               "grid": sz.grid, "lam": sol.lam, "axis_z": za, "axis_tresca": tr_a,
               "axis_von_mises": vm_a, "states": states, "u": us,

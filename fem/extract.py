@@ -57,6 +57,7 @@ def locate(state, pts, k: int = 24):
     X = np.zeros((n, 3))
     todo = np.arange(n)
     best = np.full(n, -np.inf)
+    k_max = min(64 * k, cache["inv"].shape[0])
     while todo.size:
         kk = min(k, cache["inv"].shape[0])
         _, cand = cache["tree"].query(pts[todo], k=kk)
@@ -73,8 +74,9 @@ def locate(state, pts, k: int = 24):
         best[sel] = lm[better]
         done = best[todo] > -1e-9
         todo = todo[~done]
-        if todo.size and kk >= min(4 * k * 8, cache["inv"].shape[0]):
-            raise ValueError(f"{todo.size} probe points lie outside the mesh of {state.body.name}")
+        if todo.size and kk >= k_max:
+            raise ValueError(f"{todo.size} probe points lie outside the mesh of "
+                             f"{state.body.name} (e.g. {pts[todo[0]].tolist()} [m])")
         k *= 4
     return tind, X
 

@@ -64,6 +64,9 @@ class MeshSpec:
     h_far : largest element size [m].
     growth : size growth per unit distance from the refinement box [-].
     stretch : element elongation along y (>= 1) [-].
+    probe : () or (x_lo, px, py, pz, hp, gp): a finer box ``[x_lo, px] x [0, py] x depth pz``
+        of element size hp inside the refinement box, where the subsurface stresses are
+        sampled, graded to the surrounding size with growth gp [m, m, m, m, m, -].
     """
 
     kind: str
@@ -73,10 +76,13 @@ class MeshSpec:
     h_far: float
     growth: float = 0.3
     stretch: float = 1.0
+    probe: tuple = ()
 
     def key(self) -> str:
         """Cache key: SHA-256 over the parameters, the mesher and gmsh versions."""
         d = asdict(self)
+        if not d["probe"]:
+            del d["probe"]          # keys of meshes without a probe box are unchanged
         d = {k: ([float(f"{x:.12g}") for x in v] if isinstance(v, tuple) else
                  (float(f"{v:.12g}") if isinstance(v, float) else v)) for k, v in d.items()}
         return hashlib.sha256(json.dumps([MESHER_VERSION, _gmsh_version(), d],
@@ -128,7 +134,7 @@ def _gmsh_version() -> str:
 
 # --------------------------------------------------------------------------- gmsh helpers
 def _size_field(gmsh, fine, s: float, zsign: float, z0: float,
-                hc: float, hf: float, g: float) -> None:
+                hc: float, hf: float, g: float, probe: tuple = ()) -> None:
     """Background size field ``min(hf, hc + g * dist(refinement region))`` in the
     computational coordinates (y compressed by ``s``).
 
@@ -136,7 +142,8 @@ def _size_field(gmsh, fine, s: float, zsign: float, z0: float,
     ``fine = (fx, fy, fz, fy_deep, fz_shallow)``: the union of the deep box
     ``[0, fx] x [0, fy_deep] x depth fz`` (the stress sections near y = 0) and the
     shallow layer ``[0, fx] x [0, fy] x depth fz_shallow`` (the rest of the contact
-    surface) [m, physical]."""
+    surface) [m, physical].  ``probe = (x_lo, px, py, pz, hp, gp)`` adds
+    ``min(.., hp + gp * dist(probe box))``."""
     def pos(e):  # positive part, written with Abs for gmsh's MathEval
         return f"(({e})+Abs({e}))/2"
 
@@ -149,8 +156,14 @@ def _size_field(gmsh, fine, s: float, zsign: float, z0: float,
         fy_deep, fz_shallow = min(fine[3], fy), min(fine[4], fz)
         if fy_deep < fy and fz_shallow < fz:
             d = f"Min({dist(fx, fy_deep, fz)},{dist(fx, fy, fz_shallow)})"
+    expr = f"Min({hf!r}, {hc!r}+{g!r}*{d})"
+    if probe:
+        x_lo, px, py, pz, hp, gp = probe
+        dp = (f"Sqrt(({pos(f'{x_lo!r}-x')}+{pos(f'x-{px!r}')})^2+({pos(f'y-{py / s!r}')})^2"
+              f"+({pos(f'{zsign}*(z-({z0!r}))-{pz!r}')})^2)")
+        expr = f"Min({expr}, {hp!r}+{gp!r}*{dp})"
     f = gmsh.model.mesh.field.add("MathEval")
-    gmsh.model.mesh.field.setString(f, "F", f"Min({hf!r}, {hc!r}+{g!r}*{d})")
+    gmsh.model.mesh.field.setString(f, "F", expr)
     gmsh.model.mesh.field.setAsBackgroundMesh(f)
 
 
@@ -203,7 +216,8 @@ def _generate(spec: MeshSpec) -> tuple[np.ndarray, np.ndarray]:
             Lx, Ly, H = spec.size
             occ.addBox(0.0, 0.0, -H, Lx, Ly / s, H)
             occ.synchronize()
-            _size_field(gmsh, spec.fine, s, -1.0, 0.0, spec.h_contact, spec.h_far, spec.growth)
+            _size_field(gmsh, spec.fine, s, -1.0, 0.0, spec.h_contact, spec.h_far, spec.growth,
+                        spec.probe)
         elif spec.kind == "ball":
             R = spec.size[0]
             sph = occ.addSphere(0.0, 0.0, R, R)
@@ -216,7 +230,8 @@ def _generate(spec: MeshSpec) -> tuple[np.ndarray, np.ndarray]:
             box = occ.addBox(0.0, 0.0, 0.0, R, R, R)
             occ.intersect([(3, sph)], [(3, box)])
             occ.synchronize()
-            _size_field(gmsh, spec.fine, s, 1.0, 0.0, spec.h_contact, spec.h_far, spec.growth)
+            _size_field(gmsh, spec.fine, s, 1.0, 0.0, spec.h_contact, spec.h_far, spec.growth,
+                        spec.probe)
         else:
             raise ValueError(f"kind must be 'block' or 'ball'; got {spec.kind!r}")
         gmsh.model.mesh.generate(3)
@@ -254,7 +269,8 @@ def _build(spec: MeshSpec, use_cache: bool) -> TetMesh:
 
 
 def block_mesh(size, fine, h_contact: float, h_far: float | None = None, *,
-               growth: float = 0.3, stretch: float = 1.0, use_cache: bool = True) -> TetMesh:
+               growth: float = 0.3, stretch: float = 1.0, probe=(),
+               use_cache: bool = True) -> TetMesh:
     """Quarter block ``[0, Lx] x [0, Ly] x [-H, 0]`` refined at the origin.
 
     Parameters
@@ -285,12 +301,13 @@ def block_mesh(size, fine, h_contact: float, h_far: float | None = None, *,
     size = tuple(float(v) for v in size)
     spec = MeshSpec("block", size, tuple(float(v) for v in fine), float(h_contact),
                     float(h_far if h_far is not None else min(size) / 4), float(growth),
-                    float(stretch))
+                    float(stretch), tuple(float(v) for v in probe))
     return _build(spec, use_cache)
 
 
 def ball_mesh(radius: float, fine, h_contact: float, h_far: float | None = None, *,
-              growth: float = 0.3, stretch: float = 1.0, use_cache: bool = True) -> TetMesh:
+              growth: float = 0.3, stretch: float = 1.0, probe=(),
+              use_cache: bool = True) -> TetMesh:
     """One eighth of a ball (x, y >= 0, z <= R), centre (0, 0, R), touching the origin.
 
     Parameters are as in :func:`block_mesh`; ``fine = (fx, fy, fz)`` is the box
@@ -298,7 +315,8 @@ def ball_mesh(radius: float, fine, h_contact: float, h_far: float | None = None,
     """
     R = float(radius)
     spec = MeshSpec("ball", (R, R, R), tuple(float(v) for v in fine), float(h_contact),
-                    float(h_far if h_far is not None else R / 4), float(growth), float(stretch))
+                    float(h_far if h_far is not None else R / 4), float(growth), float(stretch),
+                    tuple(float(v) for v in probe))
     return _build(spec, use_cache)
 
 

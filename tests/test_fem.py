@@ -447,6 +447,47 @@ def test_per_z0_refines_the_mesh_not_the_pressure_grid():
     assert fine.grid.dx > 1.2 * fine.h                          # tents ~1.33 elements apart
 
 
+def test_probe_box_refines_where_the_stresses_are_sampled(tmp_path, monkeypatch):
+    """MeshLevel.probe: a box of size h/probe over the stress sections (x from 0.6 to
+    1.4 semi-axes, y over the section spread, 1 minor semi-axis deep); elsewhere the
+    refinement box keeps h, the tents keep their spacing, and a mesh without a probe
+    keeps its cache key."""
+    pytest.importorskip("gmsh")
+    from ballrace.fem import api
+    from ballrace.meshes import contact as mc
+
+    monkeypatch.setenv("BALLRACE_CACHE", str(tmp_path))
+    case = api.plane_case(12.7e-3, 2000.0)
+    b = float(case.analytic.semi_axis_x)
+    base = api.sizing(case, api.MeshLevel(6, 2.3))
+    sz = api.sizing(case, api.MeshLevel(6, 2.3, probe=2.0))
+    assert base.probe == () and sz.h == base.h == pytest.approx(b / 6)
+    x_lo, x_hi, y_hi, z_hi, hp, gp = sz.probe
+    assert hp == pytest.approx(b / 12)
+    assert x_lo == pytest.approx(0.6 * b - hp) and x_hi == pytest.approx(1.4 * b + hp)
+    assert y_hi == pytest.approx((api.SECTION_SPREAD + 1) * hp) and z_hi == pytest.approx(b)
+    assert sz.grid.dx == pytest.approx(base.grid.dx)
+    assert mc.MeshSpec("block", (1.0, 1.0, 1.0), (0.1, 0.1, 0.1), 0.01, 0.2).key() != \
+        mc.MeshSpec("block", (1.0, 1.0, 1.0), (0.1, 0.1, 0.1), 0.01, 0.2,
+                    probe=(0.0, 0.1, 0.1, 0.1, 0.005, 0.6)).key()
+
+    L = 8 * b
+    msh = {k: mc.block_mesh((L, L, L), s.fine, s.h, L / 5, probe=s.probe, use_cache=False)
+           for k, s in (("base", base), ("probe", sz))}
+
+    def edge(m, box):     # median edge length of the tets whose centroid lies in box
+        p, t = m.points, m.tets
+        c = p[t].mean(axis=1)
+        sel = np.all([(c[:, i] > lo) & (c[:, i] < hi) for i, (lo, hi) in enumerate(box)], 0)
+        e = [np.linalg.norm(p[t[sel, i]] - p[t[sel, j]], axis=1)
+             for i, j in ((0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3))]
+        return float(np.median(np.concatenate(e)))
+    inside = ((0.7 * b, 1.3 * b), (0.0, 0.3 * b), (-0.8 * b, -0.2 * b))
+    outside = ((0.0, 1.2 * b), (0.9 * b, 1.2 * b), (-0.8 * b, -0.2 * b))
+    assert edge(msh["probe"], inside) == pytest.approx(0.5 * edge(msh["base"], inside), rel=0.2)
+    assert edge(msh["probe"], outside) == pytest.approx(edge(msh["base"], outside), rel=0.2)
+
+
 def test_even_fit_returns_the_value_at_y0_of_an_even_quartic():
     """extract.even_fit is exact for c0 + c2 y^2 + c4 y^4 (any coefficients, any shape of
     the leading axes) and averages zero-mean scatter instead of following it."""
@@ -497,3 +538,25 @@ def test_tent_smoothing_damps_a_checkerboard_the_compliance_does_not_resist():
     assert s1.load == pytest.approx(0.05, rel=1e-9)
     assert s0.load == pytest.approx(0.05, rel=1e-9)
     assert oscillation(s1.lam) < 0.25 * oscillation(s0.lam)
+
+
+def test_locate_finds_inside_points_and_names_outside_ones():
+    """extract.locate: barycentric coordinates of inside points; a point outside the mesh
+    raises a ValueError naming it (the search widens 64-fold at most, it does not grow
+    over the whole mesh: an offset bug once asked it for 6 GB)."""
+    from types import SimpleNamespace
+
+    from skfem import MeshTet
+
+    from ballrace.fem import extract as ex
+
+    m = MeshTet().refined(3)
+    state = SimpleNamespace(mesh=m, body=SimpleNamespace(name="cube"))
+    pts = np.array([[0.21, 0.33, 0.47], [0.9, 0.05, 0.5]])
+    tind, X = ex.locate(state, pts)
+    P = m.p[:, m.t[:, tind]]                                  # (3, 4, n)
+    back = P[:, 0] + np.einsum("ikn,nk->in", P[:, 1:] - P[:, :1], X)
+    np.testing.assert_allclose(back.T, pts, atol=1e-12)
+    assert np.all(X >= -1e-9) and np.all(X.sum(axis=1) <= 1 + 1e-9)
+    with pytest.raises(ValueError, match=r"1 probe points lie outside the mesh of cube"):
+        ex.locate(state, np.array([[0.5, 0.5, 0.5], [5.0, 5.0, 5.0]]))
