@@ -9,7 +9,7 @@ is ``3 r`` in h.
 from __future__ import annotations
 
 import logging
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -79,7 +79,9 @@ def convergence_study(case, sizes=(4, 6, 8, 11), mode: str = "half-space",
         Called before each run.
     max_stretch : float, optional
         Element elongation cap (:class:`ballrace.fem.MeshLevel`); default the standard
-        level's.  The tent smoothing is the standard level's too.
+        level's.  Everything else (tent smoothing, refinement column and layer, the
+        probe box at h/probe over the sampled region) is the standard level's too, so
+        the point n = 9 is the standard level with its tents one element apart.
     """
     from . import api
 
@@ -89,8 +91,8 @@ def convergence_study(case, sizes=(4, 6, 8, 11), mode: str = "half-space",
     for n in sizes:
         if progress:
             progress(f"n = {n}")
-        level = api.MeshLevel(float(n), cap, tents_per_axis=float("inf"),
-                              smoothing=api.LEVELS["standard"].smoothing)
+        level = replace(api.LEVELS["standard"], n=float(n), max_stretch=cap,
+                        tents_per_axis=float("inf"))
         r = api.run_case(case, level=level, mode=mode, **kwargs)
         rows = {row["quantity"]: row for row in r.comparison}
         for q in QUANTITIES:

@@ -91,7 +91,7 @@ def _assert_standard(r, names=ALL):
 def test_standard_inner_race_two_body_where_hertz_holds(brg209, load):
     """At a/(f D) = 0.10 and 0.19 the groove is shallow enough for Hertz's half-spaces: the
     two-body inner race meets the standard tolerances, depths included (measured: z0
-    -1.30 / -1.08 %, max shear +0.65 / +1.18 %, docs/fem.md)."""
+    -0.86 / -0.76 %, max shear +0.68 / +1.13 %, docs/fem.md)."""
     r = fem.ball_on_race(brg209, load, race="inner", mode="two-body")
     assert r.a / (0.52 * 12.7e-3) < 0.2
     _assert_standard(r)
@@ -110,13 +110,14 @@ def test_ball_on_ball_two_body_departure_scales_with_contact_size():
     assert e[1] / e[0] == pytest.approx(2.0, rel=0.3)
 
 
-@pytest.mark.parametrize("load", [31.25, 2000.0])
+@pytest.mark.parametrize("load", [31.25, 125.0, 2000.0])
 def test_ball_on_ball_two_body_z0_against_the_axisymmetric_reference(load):
     """The 3-D shear depth z0 of two balls against a resolved axisymmetric model of the
     same two balls (:mod:`ballrace.fem.axisym`, n = 40: its half-space mode is within
     0.11 % of Lundberg–Palmgren, docs/fem-axisym.md).  The real balls put z0 0.9 / 4.0 %
     above LP's at a/R = 0.014 / 0.055; the 3-D standard level is within 2 % of the
-    reference (measured -0.15 / +0.79 %, docs/fem.md)."""
+    reference (measured +0.44 / +0.39 / +0.22 pp at 31 / 125 / 2000 N; 125 N was
+    +3.0 pp before the probe box, docs/fem.md)."""
     from ballrace.fem import axisym
 
     ref = axisym.ball_on_ball(12.7e-3, load, n=40, mode="two-body")
