@@ -406,6 +406,12 @@ class FEResult:
         list), this load's ``contact`` and ``extract``, ``per_load`` (their sum) and
         ``total`` (shared + per_load).
     analytic : the Hertz contact; comparison : table rows (dicts).
+    fields : sampled fields for plots and checks: the section y = 0 (``section_x``,
+        ``section_z`` [m], ``tau_xz``, ``max_shear``, ``von_mises`` [Pa] and their
+        ``analytic`` twins), ``tau_xz_y0`` (the nine-section fit to y = 0 over
+        ``section_window``) and ``tau_profile`` (its max over x, whose peak gives tau0
+        and z0) [Pa], the axis profiles, the tent grid and pressures, bodies and
+        displacements.
     """
 
     case: ContactCase
@@ -541,7 +547,12 @@ class _Sizing:
     fine: tuple
     grid: object
     zq: float
-    probe: tuple = ()
+    probe: tuple = ()          # meshes.contact.MeshSpec.probe: (x_lo, px, py, pz, hp, gp)
+
+    @property
+    def h_sample(self) -> float:
+        """Element length where the stress sections are sampled [m] (the probe box's)."""
+        return self.probe[4] if self.probe else self.h
 
 
 def _level(level) -> tuple[str, MeshLevel]:
@@ -816,8 +827,7 @@ def _solve_load(case, states, meshes, sz, I, C, level, mode, gap, approach, shar
     # parallel sections up to SECTION_SPREAD element lengths along y, and ex.even_fit
     # (tau_xz is even in y) averages the element scatter of the P2 stresses
     win = (xs >= SECTION_WINDOW[0] * ax_) & (xs <= SECTION_WINDOW[1] * ax_)
-    h_sec = sz.probe[4] if sz.probe else sz.h           # element length where sampled
-    ysec = np.linspace(0.0, SECTION_SPREAD * h_sec * sz.stretch, SECTION_COUNT)[1:]
+    ysec = np.linspace(0.0, SECTION_SPREAD * sz.h_sample * sz.stretch, SECTION_COUNT)[1:]
     X3, Y3, Z3 = np.meshgrid(xs[win], ysec, zs, indexing="ij")
     p3 = np.stack([X3.ravel() + eps, Y3.ravel() + eps, (surf.height(X3, Y3) - Z3).ravel()],
                   axis=1)

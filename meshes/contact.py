@@ -147,9 +147,10 @@ def _size_field(gmsh, fine, s: float, zsign: float, z0: float,
     def pos(e):  # positive part, written with Abs for gmsh's MathEval
         return f"(({e})+Abs({e}))/2"
 
-    def dist(bx, by, bz):
+    def dist(bx, by, bz, x_lo=None):   # to the box [x_lo or 0, bx] x [0, by] x depth bz
         dz = f"{zsign}*(z-({z0!r}))-{bz!r}"
-        return f"Sqrt(({pos(f'x-{bx!r}')})^2+({pos(f'y-{by / s!r}')})^2+({pos(dz)})^2)"
+        dx = pos(f'x-{bx!r}') if x_lo is None else f"{pos(f'{x_lo!r}-x')}+{pos(f'x-{bx!r}')}"
+        return f"Sqrt(({dx})^2+({pos(f'y-{by / s!r}')})^2+({pos(dz)})^2)"
     fx, fy, fz = fine[:3]
     d = dist(fx, fy, fz)
     if len(fine) == 5:
@@ -159,9 +160,7 @@ def _size_field(gmsh, fine, s: float, zsign: float, z0: float,
     expr = f"Min({hf!r}, {hc!r}+{g!r}*{d})"
     if probe:
         x_lo, px, py, pz, hp, gp = probe
-        dp = (f"Sqrt(({pos(f'{x_lo!r}-x')}+{pos(f'x-{px!r}')})^2+({pos(f'y-{py / s!r}')})^2"
-              f"+({pos(f'{zsign}*(z-({z0!r}))-{pz!r}')})^2)")
-        expr = f"Min({expr}, {hp!r}+{gp!r}*{dp})"
+        expr = f"Min({expr}, {hp!r}+{gp!r}*{dist(px, py, pz, x_lo)})"
     f = gmsh.model.mesh.field.add("MathEval")
     gmsh.model.mesh.field.setString(f, "F", expr)
     gmsh.model.mesh.field.setAsBackgroundMesh(f)
