@@ -285,10 +285,26 @@ def _check_choice(value, option: str, allowed) -> None:
         fail(f"{option} must be one of {', '.join(allowed)}; got {value!r}")
 
 
-def _table(r, units: str, heading: str = "") -> None:
-    """The FE-versus-analytic table, driven by the result's comparison rows."""
+def _check_cell(err, tol, ok):
+    """The error, its tolerance and the verdict in one cell: ``+0.21% / 5% ok``.
+
+    One column instead of three keeps the FE table within 80 columns whatever digits the
+    solver prints (a separate two-letter status column once split the table in two)."""
     from rich.text import Text
 
+    from ballrace.console import fmt
+
+    if err is None:
+        return Text("-")
+    cell = Text(f"{100 * err:+.2f}%")
+    if tol is not None:
+        cell.append(f" / {fmt(100 * tol, 3)}% ")
+        cell.append("ok" if ok else "FAIL", style="green" if ok else "bold red")
+    return cell
+
+
+def _table(r, units: str, heading: str = "") -> None:
+    """The FE-versus-analytic table, driven by the result's comparison rows."""
     from ballrace.console import convert, fmt, literal, make_console, print_columns, unit_label
 
     d = r.to_dict()
@@ -297,15 +313,10 @@ def _table(r, units: str, heading: str = "") -> None:
     for row in d.get("comparison", []):
         kind = kinds.get(row.get("unit"))
         unit = unit_label(kind, units) if kind else (row.get("unit") or "")
-        tol = row.get("tol")
-        mark = Text("") if tol is None else (Text("ok", style="green") if row.get("ok")
-                                             else Text("FAIL", style="bold red"))
-        err = row.get("error")
         rows.append([str(row.get("quantity", "")),
                      fmt(convert(row.get("fe"), kind, units), 5),
                      fmt(convert(row.get("analytic"), kind, units), 5), unit,
-                     "-" if err is None else f"{100 * err:+.2f} %",
-                     "-" if tol is None else f"{100 * tol:.1f} %", mark])
+                     _check_cell(row.get("error"), row.get("tol"), row.get("ok"))])
     total = d.get("timings", {}).get("total")
     title = (f"{d.get('case', '')}, Q = {fmt(convert(d.get('load'), 'force', units))} "
              f"{unit_label('force', units)}\n{d.get('mode')}, {d.get('gap')} gap, "
@@ -314,8 +325,8 @@ def _table(r, units: str, heading: str = "") -> None:
     con = make_console()
     if heading:                              # the case file's title, printed literally
         con.print(literal(heading), style="bold")
-    print_columns(con, title, ["quantity", "FE", "analytic", "unit", "error", "tolerance", ""],
-                  rows, justify=["left", "right", "right", "left", "right", "right", "left"])
+    print_columns(con, title, ["quantity", "FE", "analytic", "unit", "error / tolerance"],
+                  rows, justify=["left", "right", "right", "left", "left"])
     if d.get("gap") == "exact":
         con.print("exact sphere-torus gap: differences from Hertz are 'beyond Hertz' "
                   "results, not errors (no tolerances applied).")
@@ -344,7 +355,7 @@ def register(app: typer.Typer) -> None:
             help="Force a sparse solver: cholmod | pardiso | amg | superlu "
                  "[default: the best available].")] = None,
         out: Annotated[Path, typer.Option(
-            help="Output folder (result.json, PNGs); ignored by git.")] = DEFAULT_OUT,
+            help="Output folder (result.json, PNGs); under ballrace-out/ it holds a .gitignore, so git ignores it.")] = DEFAULT_OUT,
         render: Annotated[bool, typer.Option(help="Write PNG renders.")] = True,
         sizes: Annotated[str, typer.Option(
             help="Convergence: elements per minor semi-axis.")] = "4,6,8,11",
@@ -382,10 +393,12 @@ def register(app: typer.Typer) -> None:
                 fc = parse_fe_case({}, "command line", **overrides)
         except CaseFileError as exc:
             fail(str(exc))
+        from ballrace.console import output_folder
+
         try:
-            out.mkdir(parents=True, exist_ok=True)
-        except OSError as exc:
-            fail(f"--out {out}: {exc}")
+            out = output_folder(out)
+        except ValueError as exc:
+            fail(str(exc))
         if case_file == "convergence":
             _convergence(fc, n_sizes, out)
             return

@@ -8,6 +8,7 @@ import json
 import logging
 import math
 import os
+import re
 import subprocess
 import sys
 import warnings
@@ -166,12 +167,50 @@ def test_fe_quick_run_from_a_case_file_with_a_flag_override(tmp_path, monkeypatc
     assert data["load"] == 1000.0 and data["level"] == "quick" and data["case"] == "ball on plane"
     assert res.stdout.lstrip().startswith("[b]plane\\x1b[31m\n")                  # title, literally
     assert max(len(ln) for ln in res.stdout.splitlines() if not ln.startswith("wrote")) <= 80
-    rows = {ln.split()[0]: ln.split() for ln in res.stdout.splitlines() if ln.split()}
+    assert "(1/2)" not in res.stdout                 # one table, not split into parts
+    # one row per quantity: name, FE, analytic, unit, "error% / tolerance% verdict";
+    # parsed by pattern, not by the column widths the solver's digits happen to give
+    row = re.compile(r"^\s*(\w+)\s+(\S+)\s+(\S+)\s+(\S+)\s+([+-]\d+\.\d\d)% / "
+                     r"(\d+(?:\.\d+)?)% (ok|FAIL)\s*$")
+    rows = {m[1]: m.groups() for m in map(row.match, res.stdout.splitlines()) if m}
+    assert {"a", "b", "p_max", "approach", "tau0", "z0"} <= set(rows), res.stdout
     # Hertz a for a 12.7 mm steel ball on a steel flat at 1 kN: (3 F R / 4 E*)^(1/3)
     a = (3 * 1000 * 6.35e-3 / (4 * 200e9 / (2 * (1 - 0.3**2)))) ** (1 / 3)
     assert float(rows["a"][2]) == pytest.approx(a * 1e3, rel=1e-4) and rows["a"][3] == "mm"
     assert rows["p_max"][3] == "MPa"
     assert data["a"] == pytest.approx(float(rows["a"][1]) * 1e-3, rel=1e-4)   # SI in the JSON
+    # the printed error is the FE value against the analytic one, as printed (rounding)
+    fe, an = float(rows["a"][1]), float(rows["a"][2])
+    assert float(rows["a"][4]) == pytest.approx(100 * (fe / an - 1), abs=0.02)
+    assert rows["a"][6] == ("ok" if abs(float(rows["a"][4])) <= float(rows["a"][5]) else "FAIL")
+
+
+@pytest.mark.parametrize("units", ["eng", "si", "us"])
+def test_fe_table_fits_80_columns_whatever_the_digits(units, monkeypatch, capsys):
+    """The widest numbers fmt() can print in each unit system, a failing row and the
+    longest quantity name: still one table within 80 columns."""
+    from ballrace.fem.cli import _table
+
+    monkeypatch.setenv("COLUMNS", "80")
+
+    class Wide:
+        def to_dict(self):
+            rows = [{"quantity": q, "fe": v * (1 + 1.234567e-5), "analytic": v * 1.0000987,
+                     "unit": u, "error": e, "tol": t, "ok": ok}
+                    for q, v, u, e, t, ok in (
+                        ("approach_depth_point", 1.23456789e-5, "m", -0.5612, 0.125, False),
+                        ("max_shear_depth", 9.87654321e-4, "m", 0.0123, 0.3, True),
+                        ("p_max", 4.98765432e9, "Pa", -0.0345, 0.06, True),
+                        ("tau_x0z0", 1.23456789e9, "Pa", 0.99, 0.15, False))]
+            return {"comparison": rows, "case": "ball on ball", "load": 12345.678,
+                    "mode": "two bodies", "gap": "hertz", "level": "standard",
+                    "n_dofs": 278123, "timings": {"total": 123.4}, "solver": "superlu"}
+
+    _table(Wide(), units)
+    out = capsys.readouterr().out
+    assert "(1/2)" not in out, out
+    assert max(len(ln) for ln in out.splitlines()) <= 80, out
+    assert out.count("FAIL") == 2 and out.count(" ok") == 2
 
 
 def test_fe_case_plane_and_ball(tmp_path):
@@ -374,6 +413,38 @@ def test_teach_writes_under_the_ignored_output_folder(tmp_path, monkeypatch):
     assert list(tmp_path.iterdir()) == [tmp_path / "ballrace-out"]
     ignored = (ROOT / ".gitignore").read_text().split()
     assert "ballrace-out/" in ignored and "fem-out/" in ignored
+    # outside this repository too: the output root carries its own .gitignore
+    assert (tmp_path / "ballrace-out" / ".gitignore").read_text().splitlines()[-1] == "*"
+
+
+def test_out_that_is_a_file_or_unwritable_is_one_line(tmp_path):
+    """No raw errno text: the option, the path and what to do."""
+    from ballrace.console import output_folder
+
+    f = tmp_path / "afile"
+    f.write_text("x")
+    with pytest.raises(ValueError, match=r"^--out .*afile.* exists and is not a folder"):
+        output_folder(f)
+    with pytest.raises(ValueError, match=r"exists and is not a folder"):
+        output_folder(f / "sub")
+    res = runner.invoke(app, ["fem", "--out", str(f), "--no-render", "--level", "quick"])
+    assert res.exit_code == 2 and "Errno" not in res.stderr
+    assert "exists and is not a folder" in res.stderr and len(res.stderr.splitlines()) == 1
+    ro = tmp_path / "ro"
+    ro.mkdir()
+    ro.chmod(0o500)
+    try:
+        if os.access(ro, os.W_OK):                     # root ignores permissions
+            import unittest.mock as um
+
+            with um.patch("ballrace.console._writable", return_value=False):
+                res = runner.invoke(app, ["teach", "subsurface", "--out", str(ro / "x.png")])
+        else:
+            res = runner.invoke(app, ["teach", "subsurface", "--out", str(ro / "x.png")])
+    finally:
+        ro.chmod(0o700)
+    assert res.exit_code == 2 and "Errno" not in res.stderr, res.stderr
+    assert "cannot write there" in res.stderr and "--out" in res.stderr
 
 
 def test_teach_out_folder_or_bare_name(tmp_path):
