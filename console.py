@@ -200,3 +200,52 @@ def print_sections(console, sections, system: str = "eng") -> None:
                 body.append([name, fmt(convert(value, kind, system)), unit_label(kind, system)])
         print_columns(console, title, ["quantity", "value", "unit"], body, key_columns=1,
                       justify=["left", "right", "left"])
+
+
+# ------------------------------------------------------------------------- output folders
+#: The folder that ``fem`` and ``teach`` write under unless ``--out`` says otherwise.
+OUTPUT_ROOT = "ballrace-out"
+
+
+def output_folder(folder, option: str = "--out"):
+    """Create ``folder`` (and its parents) for a command's output; returns it as a Path.
+
+    When the folder lies under ``ballrace-out/`` that root gets a ``.gitignore`` of ``*``
+    (as pytest does for its cache), so the output is ignored by git wherever the command
+    runs, inside a repository or not.  A path that exists as a file, or a folder that
+    cannot be created, raises ``ValueError`` with a one-line reason naming ``option``.
+    """
+    import errno
+    from pathlib import Path
+
+    folder = Path(folder)
+    for p in (folder, *folder.parents):
+        if p.exists() and not p.is_dir():
+            raise ValueError(f"{option} {folder}: {p} exists and is not a folder; "
+                             f"give a folder path")
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        why = {errno.EACCES: "permission denied", errno.EROFS: "read-only file system",
+               errno.ENOSPC: "no space left"}.get(exc.errno, exc.strerror or type(exc).__name__)
+        raise ValueError(f"{option} {folder}: cannot create the folder ({why}); "
+                         f"choose another with {option}") from None
+    if not (folder.is_dir() and _writable(folder)):
+        raise ValueError(f"{option} {folder}: cannot write there (permission denied); "
+                         f"choose another folder with {option}")
+    parts = folder.resolve().parts
+    if OUTPUT_ROOT in parts:
+        root = Path(*parts[:parts.index(OUTPUT_ROOT) + 1])
+        ignore = root / ".gitignore"
+        if not ignore.exists():
+            try:
+                ignore.write_text("# written by ballrace: command output, not for git\n*\n")
+            except OSError:                                        # pragma: no cover
+                pass
+    return folder
+
+
+def _writable(folder) -> bool:
+    import os
+
+    return os.access(folder, os.W_OK | os.X_OK)

@@ -318,3 +318,46 @@ def test_case_glob_ignores_folders(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     cases = load_cases("fem*")
     assert cases and all(c.area == "fem" for c in cases)
+
+
+# ------------------------------------------------ the plain `pip install ballrace` path
+def _without(monkeypatch, *modules):
+    """Make ``validation.cli`` see ``modules`` as not installed."""
+    from ballrace.validation import cli as vcli
+
+    real = vcli._missing
+    monkeypatch.setattr(vcli, "_missing",
+                        lambda *m: [x for x in m if x in modules] + real(*[x for x in m
+                                                                          if x not in modules]))
+
+
+def test_without_dask_fe_cases_run_serially_said_in_one_line(small_set, monkeypatch):
+    """No dask (no [report] extra): the FE case runs in this process, with one line saying so."""
+    from ballrace.cli import app
+
+    _without(monkeypatch, "dask", "distributed")
+    res = CliRunner().invoke(app, ["validate", "--cases", str(small_set)])
+    assert res.exit_code == 1, res.output            # the small set holds failing cases
+    assert "Traceback" not in res.output and "dask.distributed" not in res.output
+    said = [ln for ln in res.output.splitlines() if "dask is not installed" in ln]
+    assert len(said) == 1 and "ballrace[report]" in said[0]
+    assert "fake-fe" in res.output and "validation FAILED" in res.output
+
+
+@pytest.mark.parametrize("args, missing, message", [
+    (["--workers", "2"], ("dask", "distributed"), "--workers needs dask.distributed"),
+    (["--scheduler", "tcp://127.0.0.1:1"], ("dask", "distributed"), "--scheduler needs dask"),
+    (["--report", "REP"], ("jinja2",), "--report needs jinja2"),
+    (["--report", "REP"], ("matplotlib",), "(or add --no-plots)"),
+])
+def test_missing_optional_dependency_is_one_line_before_any_work(small_set, tmp_path, monkeypatch,
+                                                                 args, missing, message):
+    from ballrace.cli import app
+
+    _without(monkeypatch, *missing)
+    args = [str(tmp_path / "rep") if a == "REP" else a for a in args]
+    res = CliRunner().invoke(app, ["validate", "--cases", str(small_set), *args])
+    assert res.exit_code == 2
+    assert res.stdout.count("\n") <= 1 and "running" not in res.stdout   # no case ran
+    assert message in res.stderr and len(res.stderr.strip().splitlines()) == 1
+    assert not (tmp_path / "rep").exists()

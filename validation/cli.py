@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import logging
 import sys
+import textwrap
 from pathlib import Path
 from typing import Annotated, Optional
 
@@ -25,7 +26,8 @@ _MARK = {"pass": "PASS", "fail": "FAIL", "error": "ERROR", "missing": "MISSING",
 teach_app = typer.Typer(add_completion=False, no_args_is_help=True, rich_markup_mode=None,
                         help="Teaching figures drawn from the library.")
 
-#: Where ``teach`` writes its figures unless ``--out`` says otherwise (ignored by git).
+#: Where ``teach`` writes its figures unless ``--out`` says otherwise (ballrace-out/ holds a
+#: .gitignore of its own, so git ignores it wherever it is).
 TEACH_OUT = Path("ballrace-out") / "teach"
 
 
@@ -80,10 +82,51 @@ def validate(
         selected = load_cases(cases)
     except (CaseFileError, OSError) as exc:
         _usage(console, str(exc))
+    serial = _preflight(console, selected, fem=fem, serial=serial, scheduler=scheduler,
+                        workers=workers, report=report, plots=not no_plots)
     code = run_and_report(selected, console=console, fem=fem, scheduler=scheduler,
                           workers=workers, serial=serial, report=report, baseline=baseline,
                           update_baseline=update_baseline, plots=not no_plots)
     raise typer.Exit(code=code)
+
+
+def _missing(*modules: str) -> list[str]:
+    """The modules of ``modules`` that cannot be imported (checked without importing)."""
+    import importlib.util
+
+    out = []
+    for m in modules:
+        try:
+            if importlib.util.find_spec(m) is None:
+                out.append(m)
+        except (ImportError, ValueError):
+            out.append(m)
+    return out
+
+
+def _preflight(console, selected, *, fem, serial, scheduler, workers, report, plots) -> bool:
+    """Optional dependencies checked before any case runs; returns the serial flag to use.
+
+    Without dask (``ballrace[report]``) the cases run in this process, said in one line;
+    an explicit ``--scheduler``/``--workers`` without dask, or ``--report`` without jinja2
+    (or without matplotlib unless ``--no-plots``), is a one-line error before any work.
+    """
+    if not serial and _missing("dask", "distributed"):
+        if scheduler or workers:
+            _usage(console, f"{'--scheduler' if scheduler else '--workers'} needs dask.distributed: "
+                            "pip install \"ballrace[report]\" (or run without it)")
+        if fem != "none" and any(c.distributed for c in selected):
+            console.print(literal("dask is not installed (extra ballrace[report]): "
+                                  "cases run one by one"))
+        serial = True
+    if report is not None:
+        need = ["jinja2"] + (["matplotlib"] if plots else [])
+        miss = _missing(*need)
+        if miss:
+            _usage(console, f"--report needs {' and '.join(miss)}: pip install "
+                            f"\"ballrace[report]\""
+                            + (" (or add --no-plots)" if miss == ["matplotlib"] else ""))
+    return serial
 
 
 def _check_baseline(console, path: Path) -> None:
@@ -129,6 +172,7 @@ def run_and_report(selected, *, console, fem="quick", scheduler=None, workers=No
         report.mkdir(parents=True, exist_ok=True)
         # FE pictures go to a scratch folder: the report embeds them, so none is left beside it
         artifact_dir = Path(tempfile.mkdtemp(prefix="ballrace-fe-pictures-"))
+    id_width = min(40, max((len(c.id) for c in selected), default=10))
     head = f"{len(selected)} case(s), --fem {fem}"
     head += (f", scheduler {scheduler}" if scheduler else "") + (", serial" if serial else "")
     console.print("[bold]ballrace validate[/]:", literal(head))
@@ -144,9 +188,17 @@ def run_and_report(selected, *, console, fem="quick", scheduler=None, workers=No
             from rich.text import Text
 
             line = Text(f"{_MARK[r.status]:>7}", style=_STYLE[r.status])
-            line.append(f" {literal(r.id).plain:<40} {r.duration:8.3f} s")
+            line.append(f" {literal(r.id).plain:<{id_width}} {r.duration:8.3f} s")
             if r.message:
-                line.append(" " + literal(r.message).plain, style="dim")
+                # the note beside the row when it fits, else below it (indented, folded
+                # at spaces): a progress line never wraps mid-word
+                msg = literal(r.message).plain
+                if len(line) + 1 + len(msg) <= progress.console.width - 1:
+                    line.append(" " + msg, style="dim")
+                else:
+                    progress.console.print(line, highlight=False)
+                    line = Text(textwrap.indent(textwrap.fill(
+                        msg, max(30, progress.console.width - 9)), " " * 8), style="dim")
             progress.console.print(line, highlight=False)
             progress.advance(task)
 
@@ -273,6 +325,12 @@ def teach_subsurface(
         radii = [parse_quantity(v, "[length]", n, allow_inf=True)
                  for n, v in (("rx1", rx1), ("ry1", ry1), ("rx2", rx2), ("ry2", ry2))]
         e = parse_quantity(e1, "[pressure]", "E1")
+    except ValueError as exc:
+        _usage(console, str(exc))
+    from ballrace.console import output_folder
+
+    try:
+        output_folder(out.parent)
     except ValueError as exc:
         _usage(console, str(exc))
     try:
