@@ -116,6 +116,13 @@ def check_units(units: str) -> str:
     return units
 
 
+#: The keys of ``ballrace contact --json`` ("values", "units" and "labels"), in SI:
+#: stable identifiers, the attribute names of HertzContact and the subsurface results.
+CONTACT_JSON_KEYS = ("load", "Rx", "Ry", "E_prime", "k", "a", "b", "approach", "p_max",
+                     "p_mean", "stiffness", "tau0", "z0", "x0", "max_shear", "max_shear_depth",
+                     "von_mises", "von_mises_depth")
+
+
 @app.command()
 def contact(
     load: Annotated[str, typer.Option(help='Normal load, e.g. "4.45 N", "1000 lbf".')],
@@ -146,44 +153,53 @@ def contact(
         c = hertz.point_contact(q, *radii, m1, m2, method=method)
     except (ValueError, TypeError) as exc:
         fail(str(exc))
-    # (name, SI value, kind of quantity for the display units; None: dimensionless)
-    rows = [("load Q", float(c.load), "force"), ("Rx", float(c.Rx), "length"),
-            ("Ry", float(c.Ry), "length"),
-            ("E' (= 2 E*)", float(c.E_prime), "modulus"), ("k = a/b", float(c.k), None),
-            ("a (semi-major)", float(c.a), "length"), ("b (semi-minor)", float(c.b), "length"),
-            ("approach delta", float(c.approach), "small"), ("p_max", float(c.p_max), "stress"),
-            ("p_mean", float(c.p_mean), "stress"), ("stiffness K", float(c.stiffness), "stiffness")]
+    # (JSON key, table label, SI value, kind of quantity for the display units; None:
+    # dimensionless).  The keys are stable identifiers (the HertzContact / subsurface
+    # attribute names, CONTACT_JSON_KEYS); the labels are for people and may change.
+    rows = [("load", "load Q", float(c.load), "force"), ("Rx", "Rx", float(c.Rx), "length"),
+            ("Ry", "Ry", float(c.Ry), "length"),
+            ("E_prime", "E' (= 2 E*)", float(c.E_prime), "modulus"),
+            ("k", "k = a/b", float(c.k), None),
+            ("a", "a (semi-major)", float(c.a), "length"),
+            ("b", "b (semi-minor)", float(c.b), "length"),
+            ("approach", "approach delta", float(c.approach), "small"),
+            ("p_max", "p_max", float(c.p_max), "stress"),
+            ("p_mean", "p_mean", float(c.p_mean), "stress"),
+            ("stiffness", "stiffness K", float(c.stiffness), "stiffness")]
     from ballrace.analytic import subsurface
 
     nu = m1.nu if m1.nu == m2.nu else None
     note = None
     try:
         o = subsurface.orthogonal_shear(c)
-        rows += [("LP tau0 (orthogonal shear)", float(o.tau0), "stress"),
-                 ("LP z0", float(o.z0), "length"),
-                 ("LP x0 (rolling offset)", float(o.x0), "length")]
+        rows += [("tau0", "LP tau0 (orthogonal shear)", float(o.tau0), "stress"),
+                 ("z0", "LP z0", float(o.z0), "length"),
+                 ("x0", "LP x0 (rolling offset)", float(o.x0), "length")]
     except ValueError as exc:  # major axis along the rolling direction: LP does not apply
         note = f"Lundberg-Palmgren shear not reported: {exc}"
     if nu is not None:
         mx = subsurface.max_shear(c, nu=nu)
         vm = subsurface.von_mises(c, nu=nu)
-        rows += [("max shear (Tresca) on axis", float(mx.tau_max), "stress"),
-                 ("depth of max shear", float(mx.depth), "length"),
-                 ("max von Mises on axis", float(vm.sigma_vm), "stress"),
-                 ("depth of max von Mises", float(vm.depth), "length")]
+        rows += [("max_shear", "max shear (Tresca) on axis", float(mx.tau_max), "stress"),
+                 ("max_shear_depth", "depth of max shear", float(mx.depth), "length"),
+                 ("von_mises", "max von Mises on axis", float(vm.sigma_vm), "stress"),
+                 ("von_mises_depth", "depth of max von Mises", float(vm.depth), "length")]
     else:
         note = (note + "; " if note else "") + \
             "subsurface stresses need one Poisson's ratio (nu1 != nu2): not reported"
     if as_json:
-        out = {name: val for name, val, _ in rows}
+        out = {key: val for key, _, val, _ in rows}
         out["method"] = method
         if note:
             out["note"] = note
-        typer.echo(json.dumps({"units": {n: unit_label(k, "si") or "-" for n, _, k in rows},
+        typer.echo(json.dumps({"units": {key: unit_label(k, "si") or "-"
+                                         for key, _, _, k in rows},
+                               "labels": {key: label for key, label, _, _ in rows},
                                "values": out}, indent=2))
         return
     con = make_console()
-    print_sections(con, [(f"Hertz contact ({method})", rows)], units)
+    print_sections(con, [(f"Hertz contact ({method})",
+                          [(label, val, k) for _, label, val, k in rows])], units)
     if note:
         con.print(literal(f"note: {note}"))
 

@@ -312,6 +312,8 @@ def _table(r, units: str, heading: str = "") -> None:
     rows = []
     for row in d.get("comparison", []):
         kind = kinds.get(row.get("unit"))
+        if kind == "length" and str(row.get("quantity", "")).startswith("approach"):
+            kind = "small"                 # deformations in µm, as `ballrace contact` prints them
         unit = unit_label(kind, units) if kind else (row.get("unit") or "")
         rows.append([str(row.get("quantity", "")),
                      fmt(convert(row.get("fe"), kind, units), 5),

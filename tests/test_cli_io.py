@@ -361,8 +361,14 @@ def test_json_stays_si_whatever_the_units():
     a = json.loads(runner.invoke(app, CONTACT + ["--json"]).stdout)
     b = json.loads(runner.invoke(app, CONTACT + ["--json", "--units", "us"]).stdout)
     assert a == b
-    assert a["units"]["p_max"] == "Pa" and a["units"]["a (semi-major)"] == "m"
-    assert a["values"]["a (semi-major)"] == pytest.approx(0.252025e-3, rel=1e-5)
+    assert a["units"]["p_max"] == "Pa" and a["units"]["a"] == "m"
+    assert a["values"]["a"] == pytest.approx(0.252025e-3, rel=1e-5)
+    # stable identifiers, each a HertzContact or subsurface attribute; labels for people
+    from ballrace.cli import CONTACT_JSON_KEYS
+
+    assert list(a["units"]) == list(CONTACT_JSON_KEYS) == list(a["labels"])
+    assert all(k.isidentifier() for k in a["values"])
+    assert a["labels"]["E_prime"] == "E' (= 2 E*)"
 
 
 def test_bearing_tables_have_a_unit_in_every_column_header():
