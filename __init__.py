@@ -9,9 +9,7 @@ SI units throughout (N, m, Pa, rad).  Sub-packages:
 * :mod:`ballrace.validation` and :mod:`ballrace.reports` — reference cases, the
   validation runner and the HTML report.
 """
-from __future__ import annotations
-
-import logging
+import logging as _logging
 
 from ballrace.analytic.materials import BEARING_STEEL, SILICON_NITRIDE, Material
 from ballrace.analytic.bearing import BallBearing
@@ -19,4 +17,4 @@ from ballrace.analytic.bearing import BallBearing
 __version__ = "0.1.0"
 __all__ = ["Material", "BallBearing", "BEARING_STEEL", "SILICON_NITRIDE", "__version__"]
 
-logging.getLogger(__name__).addHandler(logging.NullHandler())
+_logging.getLogger(__name__).addHandler(_logging.NullHandler())
