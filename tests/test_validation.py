@@ -361,3 +361,12 @@ def test_missing_optional_dependency_is_one_line_before_any_work(small_set, tmp_
     assert res.stdout.count("\n") <= 1 and "running" not in res.stdout   # no case ran
     assert message in res.stderr and len(res.stderr.strip().splitlines()) == 1
     assert not (tmp_path / "rep").exists()
+
+
+def test_teach_without_matplotlib_names_the_extra(monkeypatch, tmp_path):
+    from ballrace.cli import app
+
+    _without(monkeypatch, "matplotlib")
+    res = CliRunner().invoke(app, ["teach", "subsurface", "--out", str(tmp_path / "t.png")])
+    assert res.exit_code == 2 and 'pip install "ballrace[report]"' in res.stderr
+    assert not (tmp_path / "t.png").exists()

@@ -329,6 +329,8 @@ def teach_subsurface(
         _usage(console, str(exc))
     from ballrace.console import output_folder
 
+    if _missing("matplotlib"):
+        _usage(console, 'teach draws with matplotlib: pip install "ballrace[report]"')
     try:
         output_folder(out.parent)
     except ValueError as exc:
