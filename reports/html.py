@@ -155,20 +155,86 @@ def _reference(c) -> float | None:
     return None
 
 
-def _cfmt(c, what: str) -> str:
+#: Units of dimensionless outputs that are counts of a unit, by the end of their name
+#: (``L10h_hours`` is a number of hours, ``L10_Mrev`` of millions of revolutions).
+NAME_UNITS = (("_hours", "h"), ("_Mrev", "Mrev"), ("_percent", "%"))
+
+
+def _nowrap(text: str):
+    """A number with its unit as one unbreakable piece of HTML (never split across lines)."""
+    from markupsafe import Markup, escape
+
+    return Markup('<span class="n">') + escape(text) + Markup("</span>")
+
+
+def _name_unit(c) -> str:
+    if not c.dimension:
+        for suffix, unit in NAME_UNITS:
+            if c.name.endswith(suffix):
+                return unit
+    return ""
+
+
+def _cfmt_text(c, what: str) -> str:
+    s = format_eng(getattr(c, what), c.dimension, _reference(c))
+    unit = _name_unit(c)
+    return f"{s} {unit}" if unit and s != "—" else s
+
+
+def _cfmt(c, what: str):
     """A value of comparison ``c`` ("expected", "got", "minimum", "maximum") in its unit."""
-    return format_eng(getattr(c, what), c.dimension, _reference(c))
+    return _nowrap(_cfmt_text(c, what))
 
 
-def _err(c) -> str:
+def _err_text(c) -> str:
     if c.error is None:
         return "—"
     if c.rel_error is not None and c.expected is not None:
         return f"{100 * c.rel_error:+.2g} %"
+    unit = _name_unit(c)
     if c.expected is None:
-        return "margin " + format_eng(-c.error, c.dimension, _reference(c))
-    s = format_eng(c.error, c.dimension, _reference(c))
-    return s if s.startswith("-") else "+" + s
+        s = format_eng(-c.error, c.dimension, _reference(c))
+    else:
+        s = format_eng(c.error, c.dimension, _reference(c))
+        s = s if s.startswith("-") else "+" + s
+    return f"{s} {unit}" if unit else s
+
+
+def _err(c):
+    """The error cell: a signed difference, or the margin to a bound (the word may wrap,
+    the number never does)."""
+    from markupsafe import Markup
+
+    text = _err_text(c)
+    if c.error is not None and c.expected is None and not (
+            c.rel_error is not None and c.expected is not None):
+        return Markup("margin ") + _nowrap(text)
+    return _nowrap(text)
+
+
+def _tol(text: str):
+    """A tolerance text: each of its terms unbreakable ("±5.73×10⁻⁸ deg + ±1e-6 rel")."""
+    from markupsafe import Markup
+
+    parts = [p for p in str(text).split(" ") if p]
+    out, cur = [], []
+    for p in parts:                       # keep number and unit together, split at the joiners
+        if p in ("+", "and") and cur:
+            out.append(" ".join(cur))
+            out.append(p)
+            cur = []
+        else:
+            cur.append(p)
+    if cur:
+        out.append(" ".join(cur))
+    return Markup(" ").join(_nowrap(o) if o not in ("+", "and") else o for o in out)
+
+
+def _wbr(name: str):
+    """A quantity name that may wrap after its underscores, and only there."""
+    from markupsafe import Markup, escape
+
+    return Markup("_<wbr>").join(escape(p) for p in str(name).split("_"))
 
 
 def scheduler_text(scheduler: str) -> str:
@@ -237,6 +303,8 @@ def render_html(run, *, drift=None, plots: bool = True) -> str:
     env.filters["fmt"] = format_eng
     env.filters["cfmt"] = _cfmt
     env.filters["err"] = _err
+    env.filters["tol"] = _tol
+    env.filters["wbr"] = _wbr
     tpl = env.get_template("report.html.j2")
     return tpl.render(run=run, counts=run.counts, areas=areas, env=environment(),
                       summary_figs=[f for f in figures if f["section"] == "summary"],

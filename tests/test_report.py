@@ -4,6 +4,7 @@ from __future__ import annotations
 import json
 import math
 import sys
+from pathlib import Path
 from html.parser import HTMLParser
 
 import pytest
@@ -21,7 +22,7 @@ class _Collect(HTMLParser):
         if tag == "img":
             self.imgs.append(dict(attrs))
             return
-        if tag in ("meta", "br", "col"):   # void elements
+        if tag in ("meta", "br", "col", "wbr"):   # void elements
             return
         self.tables += tag == "table"
         self.stack.append(tag)
@@ -383,3 +384,25 @@ def test_report_folder_has_no_separate_renders(tmp_path):
     assert res.exit_code == 0, res.output
     assert sorted(p.name for p in (tmp_path / "rep").iterdir()) == ["index.html",
                                                                      "results.json"]
+
+
+def test_numbers_never_wrap_and_names_wrap_at_underscores():
+    """Print/PDF: a number and its unit are one unbreakable piece; quantity names break
+    only after an underscore; a count of hours says "h"."""
+    from types import SimpleNamespace as NS
+
+    from ballrace.reports import html
+
+    c = NS(name="L10h_hours", dimension="", expected=246674.0, maximum=None, minimum=None,
+           got=246670.0, error=-4.0, rel_error=-4.0 / 246674.0, tolerance="±1e-3 rel")
+    assert str(html._cfmt(c, "got")) == '<span class="n">246670 h</span>'
+    assert str(html._wbr("max_shear_depth")) == "max_<wbr>shear_<wbr>depth"
+    b = NS(name="angle_error", dimension="[angle]", expected=None, maximum=1e-9, minimum=None,
+           got=2e-10, error=-8e-10, rel_error=None)
+    cell = str(html._err(b))
+    assert cell.startswith('margin <span class="n">') and "×10⁻" in cell
+    tol = str(html._tol("±5.72958e-08 deg + ±1e-06 rel"))
+    assert tol == ('<span class="n">±5.72958e-08 deg</span> + '
+                   '<span class="n">±1e-06 rel</span>')
+    css = (Path(html.__file__).parent / "templates" / "report.html.j2").read_text()
+    assert ".n { white-space: nowrap; }" in css and "overflow-wrap: anywhere" not in css
