@@ -78,7 +78,7 @@ def _nominal_angle(value, free_angle: float, angle_given: bool) -> float:
     a = float(arr)
     if not 0.0 <= a < 0.5 * np.pi:
         hint = (f" ({a:g} looks like degrees: pass numpy.radians({a:g}))"
-                if 0.5 * np.pi <= a < 90.0 else "")
+                if 0.5 * np.pi < a < 90.0 else "")
         raise ValueError(f"nominal_contact_angle must be in [0, {0.5 * np.pi:g}) [rad] "
                          f"(0 for radial deep-groove bearings, the design angle for "
                          f"angular-contact ones); got {value!r}{hint}")
