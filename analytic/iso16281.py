@@ -23,7 +23,7 @@ single-row ball bearings):
    deep-groove bearing's clearance gives is not a rating angle: with C fixed,
    Q_c ∝ 1/cos α, so using the 7.56° free angle of a 6305 size with 10 µm clearance
    would raise both Q_c by 1/cos α (and shift T slightly through γ) and L10r ∝ Q_c³ by
-   1/cos³ α ≈ 1.027 — L10r 2.6 % too long.  The clearance acts through the ball loads.
+   1/cos³ α ≈ 1.0266 — L10r 2.65 % too long.  The clearance acts through the ball loads.
 
    T is the ratio of the inner- to the outer-ring rating of Lundberg & Palmgren, so that
    the ring ratings C_i = 0.407 Z cos α Q_ci and C_e = 0.389 Z cos α Q_ce combine back to

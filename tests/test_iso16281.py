@@ -249,7 +249,7 @@ def test_deep_groove_clearance_is_rated_at_nominal_zero(Fr):
     takes Q_c from C at that angle.  With the catalogue C fixed, Q_ci and Q_ce are
     C / (0.407 or 0.389 Z cos a) (1 + T^(+-10/3))^0.3: taking the free angle instead raises
     both by 1/cos a_f (and moves T a little through gamma = D cos a / D_pw), and
-    L10r ~ Q_c^3 by 1/cos^3 a_f = 1.02655 - the 2.7 % by which L10r was too long.  The
+    L10r ~ Q_c^3 by 1/cos^3 a_f = 1.02655 - L10r 2.65 % too long.  The
     T part is measured here: the exact ratio is 1.02649."""
     brg = _brg(diametral_clearance=10e-6)
     cos_f = 1 - 10e-6 / (2 * 0.05 * 0.0115)
