@@ -310,3 +310,21 @@ def test_nominal_contact_angle_out_of_range(bad):
         life.reference_rating_life(brg, brg.radial(1000.0), nominal_contact_angle=bad)
     with pytest.raises(ValueError, match="contact_angle"):
         iso16281.raceway_capacities(22500.0, 7, 0.0115, 0.0435, 0.52, 0.53, bad)
+
+
+@settings(max_examples=25, deadline=None)
+@given(pd=st.floats(0.0, 40e-6), D=st.floats(5e-3, 20e-3), ratio=st.floats(3.0, 8.0),
+       fi=st.floats(0.505, 0.54), fo=st.floats(0.505, 0.54))
+def test_clearance_never_moves_the_rating_of_a_deep_groove_bearing(pd, D, ratio, fi, fo):
+    """Invariant: for a deep-groove bearing given by its clearance, C, C0 and the raceway
+    capacities are those of alpha = 0 whatever the clearance (and so its free angle)."""
+    dm = ratio * D
+    brg = ballrace.BallBearing(D, 7, dm, fi, fo, diametral_clearance=pd)   # < 2A = 1e-4 m
+    assert brg.nominal_contact_angle == 0.0
+    C = ratings.dynamic_rating(D, 7, dm)
+    assert brg.dynamic_rating() == pytest.approx(C, rel=1e-12)
+    assert brg.static_rating() == pytest.approx(ratings.static_rating(D, 7, dm), rel=1e-12)
+    Q = np.array([1000.0, 600.0, 50.0, 0.0, 0.0, 50.0, 600.0])
+    from types import SimpleNamespace
+    r = life.reference_rating_life(brg, SimpleNamespace(ball_loads=Q))
+    assert (r.Q_ci, r.Q_ce) == pytest.approx(_iso_Qc(C, 7, D, dm, fi, fo, 0.0), rel=1e-12)
