@@ -98,6 +98,9 @@ def parse_quantity(text, dimension: str, name: str, *, allow_inf: bool = False) 
     if dimension == "[angle]":
         if str(q.units) == "dimensionless":
             raise ValueError(f"{name}: give the angle's unit ('deg' or 'rad'), got {s!r}")
+        if not q.check("[]"):           # "15 mm": pint's DimensionalityError is a TypeError
+            raise ValueError(f"{name}: expected an angle (e.g. deg or rad), got {s!r} "
+                             f"({q.dimensionality})")
         return _finite(float(q.to("radian").magnitude), s, name)
     if not q.check(dimension):
         raise ValueError(f"{name}: expected a quantity of dimension {dimension} "

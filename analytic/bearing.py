@@ -58,6 +58,33 @@ def _integer(value, name: str, low: int) -> int:
     return value
 
 
+def _nominal_angle(value, free_angle: float, angle_given: bool) -> float:
+    """The nominal (rating) contact angle [rad]: ``value`` checked, or the default rule of
+    :class:`BallBearing` (0 for a bearing given by its clearance, else the free angle)."""
+    if value is None:
+        if angle_given:
+            return free_angle
+        if free_angle > np.radians(20.0):
+            log.warning("BallBearing: the diametral clearance gives a free contact angle of "
+                        "%.1f deg, more than a deep-groove bearing's clearance gives; the "
+                        "ratings use the nominal contact angle 0 (radial bearing) - pass "
+                        "nominal_contact_angle (the design angle [rad]) for an "
+                        "angular-contact bearing", np.degrees(free_angle))
+        return 0.0
+    arr = as_array(value, "nominal_contact_angle")
+    if arr.ndim:
+        raise TypeError(f"nominal_contact_angle must be a scalar [rad]; got an array of shape "
+                        f"{arr.shape}")
+    a = float(arr)
+    if not 0.0 <= a < 0.5 * np.pi:
+        hint = (f" ({a:g} looks like degrees: pass numpy.radians({a:g}))"
+                if 0.5 * np.pi < a < 90.0 else "")
+        raise ValueError(f"nominal_contact_angle must be in [0, {0.5 * np.pi:g}) [rad] "
+                         f"(0 for radial deep-groove bearings, the design angle for "
+                         f"angular-contact ones); got {value!r}{hint}")
+    return a
+
+
 @dataclass(frozen=True)
 class BallBearing:
     r"""Internal geometry and materials of a single-row ball bearing (frozen).
@@ -70,6 +97,26 @@ class BallBearing:
     Both attributes are set after construction.  Passing both is accepted only when
     they agree (so ``dataclasses.replace`` of a material works); after changing D or a
     conformity with ``replace``, set the one to be re-derived to ``None``.
+
+    **Nominal (rating) contact angle.**  The load ratings belong to the bearing type, not
+    to its clearance: ISO 281:2007 (§6.1.1, eqs. 2–3) gives C, and ISO 76:2006 (§5.1.1)
+    C0, at the *nominal* contact angle α, and ISO/TS 16281:2008 (§5.2) derives the raceway
+    capacities Q_ci, Q_ce from C with cos α of that same nominal angle.  For a radial
+    deep-groove bearing α = 0, whatever free contact angle its clearance gives (about 7.6°
+    for a 6305 size with 10 µm diametral clearance); for an angular-contact bearing α is
+    the design angle.  ``nominal_contact_angle`` is that α; every rating (C, C0, C_u, the
+    X/Y/e tables, Q_c of ISO/TS 16281) uses it, while the load distribution, the Hertz
+    contacts and the kinematics use the free (unloaded) and the operating contact angles.
+    When it is not given (``None``) it is derived by one explicit rule:
+
+    * bearing given by its ``diametral_clearance`` — a radial (deep-groove) bearing whose
+      free contact angle comes only from its clearance: α = 0 (a logged warning when that
+      free angle exceeds 20°, beyond a deep-groove bearing's clearance);
+    * bearing given by its ``free_contact_angle`` (an angular-contact bearing's design
+      angle): α = ``free_contact_angle``.
+
+    ``dataclasses.replace`` keeps the value (an operating clearance from fits does not
+    change the rating angle); set it to ``None`` to derive it again.
 
     Parameters
     ----------
@@ -86,6 +133,10 @@ class BallBearing:
         Free (unloaded) contact angle beta_f [rad], in [0, pi/2).
     diametral_clearance : float, optional
         Diametral clearance P_d = d_o - d_i - 2D [m], in [0, 2A).
+    nominal_contact_angle : float, optional
+        Nominal (rating) contact angle α of ISO 281 / ISO 76 / ISO/TS 16281 [rad], in
+        [0, pi/2): 0 for radial deep-groove bearings, the design angle for
+        angular-contact ones.  Default ``None``: derived as described above.
     material : Material, optional
         Material of balls and rings (default :data:`BEARING_STEEL`).
     ball_material, ring_material : Material, optional
@@ -118,10 +169,20 @@ class BallBearing:
     (0.0464, 0.4825)
     >>> round(brg.free_endplay * 1e3, 4)
     1.3257
+    >>> round(float(np.degrees(brg.nominal_contact_angle)), 10)   # the design angle
+    40.0
     >>> brg2 = ballrace.BallBearing(22.225e-3, 16, 125.26e-3, 0.5232, 0.5232,
-    ...                             diametral_clearance=brg.diametral_clearance)
+    ...                             diametral_clearance=brg.diametral_clearance,
+    ...                             nominal_contact_angle=np.radians(40))
     >>> round(float(np.degrees(brg2.free_contact_angle)), 10)
     40.0
+
+    A 6305-size deep-groove bearing with 10 µm diametral clearance: free contact angle
+    7.56°, rated at α = 0:
+
+    >>> dg = ballrace.BallBearing(11.5e-3, 7, 43.5e-3, 0.52, 0.53, diametral_clearance=10e-6)
+    >>> round(float(np.degrees(dg.free_contact_angle)), 2), dg.nominal_contact_angle
+    (7.56, 0.0)
     """
 
     ball_diameter: float
@@ -138,9 +199,11 @@ class BallBearing:
     shoulder_height_outer: float | None = None
     n_rows: int = 1
     name: str = ""
+    nominal_contact_angle: float | None = None
 
     def __post_init__(self) -> None:
         set_ = object.__setattr__
+        angle_given = self.free_contact_angle is not None
         D = _positive_float(self.ball_diameter, "ball_diameter", "m")
         dm = _positive_float(self.pitch_diameter, "pitch_diameter", "m")
         if not D < dm:
@@ -195,6 +258,8 @@ class BallBearing:
         set_(self, "f_outer", fo)
         set_(self, "free_contact_angle", bf)
         set_(self, "diametral_clearance", pd)
+        set_(self, "nominal_contact_angle", _nominal_angle(self.nominal_contact_angle, bf,
+                                                          angle_given))
         if self.ball_material is None:
             set_(self, "ball_material", self.material)
         if self.ring_material is None:

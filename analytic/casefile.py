@@ -14,6 +14,8 @@ lubricant, with unit strings parsed by pint at this boundary only
     f_inner = 0.52
     f_outer = 0.52
     diametral_clearance = "0.015 mm"   # or free_contact_angle = "40 deg"
+    # nominal_contact_angle = "0 deg"  # rating angle; default 0 (deep-groove) or the
+                                       # free contact angle (angular-contact)
 
     [materials]                   # optional; default bearing steel (200 GPa, 0.3)
     ball = { E = "200 GPa", nu = 0.3 }
@@ -69,6 +71,7 @@ every error names the file and the ``[table].key`` it is about.
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 import tomllib
 from dataclasses import dataclass
@@ -101,6 +104,7 @@ def _models():
         f_outer: float = Field(gt=0.5)
         diametral_clearance: Optional[str] = None
         free_contact_angle: Optional[str] = None
+        nominal_contact_angle: Optional[str] = None
         n_rows: int = Field(default=1, ge=1, le=2)
 
     class MaterialSpec(_Strict):
@@ -184,8 +188,9 @@ class BearingCase:
     ----------
     title : Case title.
     bearing : :class:`ballrace.BallBearing`.
-    kind : "deep-groove" or "angular-contact" (selects the nominal contact angle of the
-        ratings: 0 for deep-groove, the free contact angle for angular-contact).
+    kind : "deep-groove" or "angular-contact" (selects the default nominal contact angle
+        of the ratings: 0 for deep-groove, the free contact angle for angular-contact;
+        ``[bearing].nominal_contact_angle`` overrides it for angular-contact bearings).
     radial_load, axial_load : Fr, Fa [N].
     eccentricity : Thrust eccentricity [m] or None.
     speed : Angular speed of the rotating ring relative to the other [rad/s].
@@ -250,8 +255,9 @@ class BearingCase:
 
     @property
     def nominal_contact_angle(self) -> float:
-        """Contact angle used by the ratings and X/Y tables [rad]."""
-        return 0.0 if self.kind == "deep-groove" else float(self.bearing.free_contact_angle)
+        """Nominal contact angle of the ratings and X/Y tables [rad]
+        (the bearing's :attr:`~ballrace.BallBearing.nominal_contact_angle`)."""
+        return float(self.bearing.nominal_contact_angle)
 
 
 def _speed(text: str, where: str) -> float:
@@ -465,6 +471,18 @@ def parse_case(data: dict, source: str = "<case>") -> BearingCase:
     if (b.diametral_clearance is None) == (b.free_contact_angle is None):
         raise CaseFileError(f"{source}: [bearing]: give exactly one of diametral_clearance "
                             "and free_contact_angle")
+    nominal = q(b.nominal_contact_angle, "[angle]", "[bearing].nominal_contact_angle")
+    if nominal is not None:
+        if not 0.0 <= nominal < 0.5 * math.pi:
+            raise CaseFileError(f"{source}: [bearing].nominal_contact_angle must be in "
+                                f"[0, 90) deg; got {b.nominal_contact_angle!r}")
+        if b.type == "deep-groove" and nominal != 0.0:
+            raise CaseFileError(f"{source}: [bearing].nominal_contact_angle: a deep-groove "
+                                "bearing is rated at 0 deg (ISO 281:2007); got "
+                                f"{b.nominal_contact_angle!r} - use type = "
+                                "\"angular-contact\" for a bearing with a design angle")
+    elif b.type == "deep-groove":
+        nominal = 0.0
     try:
         brg = ballrace.BallBearing(
             ball_diameter=q(b.ball_diameter, "[length]", "[bearing].ball_diameter"),
@@ -474,8 +492,11 @@ def parse_case(data: dict, source: str = "<case>") -> BearingCase:
             diametral_clearance=q(b.diametral_clearance, "[length]",
                                   "[bearing].diametral_clearance"),
             free_contact_angle=q(b.free_contact_angle, "[angle]", "[bearing].free_contact_angle"),
+            nominal_contact_angle=0.0 if nominal is None else nominal,
             ball_material=mats.get("ball"), ring_material=mats.get("ring"),
             n_rows=b.n_rows, name=b.name or spec.title)
+        if nominal is None:   # angular-contact: its design angle is the free contact angle
+            brg = dataclasses.replace(brg, nominal_contact_angle=brg.free_contact_angle)
     except (ValueError, TypeError) as exc:
         raise CaseFileError(f"{source}: [bearing]: {exc}") from None
 

@@ -133,8 +133,9 @@ def analyze(case) -> dict:
         notes.append("outer ring rotating under a fixed load: the ISO life has no rotation "
                      "factor; Tata (2012) multiplies P by 1.25 (life.load_factor), the "
                      "Lundberg-Palmgren life accounts for it through the ring equivalent loads")
-    if case.kind == "deep-groove" and brg.free_contact_angle > 0:
-        notes.append(f"ratings at nominal contact angle 0 (deep groove); the free contact "
+    if not math.isclose(a_nom, brg.free_contact_angle, rel_tol=0.0, abs_tol=1e-12):
+        notes.append(f"ratings (C, C0, C_u, X/Y, ISO/TS 16281 Q_c) at the nominal contact "
+                     f"angle {math.degrees(a_nom):.2f} deg (ISO 281:2007); the free contact "
                      f"angle {math.degrees(brg.free_contact_angle):.2f} deg is used by the "
                      "load distribution")
 
@@ -190,6 +191,7 @@ def sections(r: dict) -> list:
         ("conformity f_i", b["f_inner"], None), ("conformity f_o", b["f_outer"], None),
         ("diametral clearance P_d", b["diametral_clearance"], "small"),
         ("free contact angle", b["free_contact_angle"], "angle"),
+        ("nominal contact angle (ratings)", b["nominal_contact_angle"], "angle"),
         ("E'", b["E_prime"], "modulus"),
         ("radial load Fr", b["radial_load"], "force"), ("axial load Fa", b["axial_load"], "force"),
         *([("thrust eccentricity e", b["eccentricity"], "length")]

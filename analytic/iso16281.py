@@ -17,6 +17,14 @@ single-row ball bearings):
            \left(\frac{f_i (2 f_e - 1)}{f_e (2 f_i - 1)}\right)^{0.41},
        \qquad \gamma = \frac{D\cos\alpha}{D_{pw}}
 
+   α is the *nominal* contact angle, the one C is rated at (ISO 281:2007 §6.1.1): 0 for a
+   radial deep-groove bearing, the design angle for an angular-contact one
+   (:attr:`ballrace.BallBearing.nominal_contact_angle`).  The free contact angle a
+   deep-groove bearing's clearance gives is not a rating angle: with C fixed,
+   Q_c ∝ 1/cos α, so using the 7.56° free angle of a 6305 size with 10 µm clearance
+   would raise both Q_c by 1/cos α (and shift T slightly through γ) and L10r ∝ Q_c³ by
+   1/cos³ α ≈ 1.0266 — L10r 2.65 % too long.  The clearance acts through the ball loads.
+
    T is the ratio of the inner- to the outer-ring rating of Lundberg & Palmgren, so that
    the ring ratings C_i = 0.407 Z cos α Q_ci and C_e = 0.389 Z cos α Q_ce combine back to
    exactly C: (C_i^(-10/3) + C_e^(-10/3))^(-3/10) = C.  0.407 = J_r/J_1 and
@@ -81,7 +89,9 @@ def raceway_capacities(C, n_balls, ball_diameter, pitch_diameter, f_inner, f_out
     f_inner, f_outer : float
         Groove conformities r/D [-], > 0.5.
     contact_angle : float
-        Nominal contact angle α [rad].
+        Nominal contact angle α [rad], in [0, pi/2): the angle C is rated at (0 for a
+        radial deep-groove bearing, the design angle for an angular-contact one), not the
+        free contact angle of its clearance.
     n_rows : int
         Rows i [-].
 
@@ -101,7 +111,8 @@ def raceway_capacities(C, n_balls, ball_diameter, pitch_diameter, f_inner, f_out
     dm = float(check_positive(pitch_diameter, "pitch_diameter", "m", bounded=True))
     fi = float(check_range(f_inner, "f_inner", 0.5, None, unit="-"))
     fo = float(check_range(f_outer, "f_outer", 0.5, None, unit="-"))
-    a = float(check_range(contact_angle, "contact_angle", -np.pi / 2, np.pi / 2, unit="rad"))
+    a = float(check_range(contact_angle, "contact_angle", 0.0, np.pi / 2, low_inclusive=True,
+                          unit="rad"))
     i = float(check_integer(n_rows, "n_rows", 1))
     g = D * np.cos(a) / dm
     T = (1.044 * ((1.0 - g) / (1.0 + g)) ** 1.72
@@ -207,8 +218,10 @@ def reference_rating_life(bearing, result, *, dynamic_rating=None, rotating: str
     rotating : {"inner", "outer"}
         Ring rotating relative to the load.
     nominal_contact_angle : float, optional
-        α [rad] of the rating and the raceway capacities; default the bearing's free
-        contact angle (pass 0 for a deep-groove bearing rated at α = 0).
+        α [rad] of the rating and the raceway capacities, in [0, pi/2); default the
+        bearing's :attr:`~ballrace.BallBearing.nominal_contact_angle` (0 for a
+        deep-groove bearing, whatever free contact angle its clearance gives; ISO/TS
+        16281:2008 §5.2 takes Q_c from C at the nominal angle).
 
     Returns
     -------
@@ -228,6 +241,14 @@ def reference_rating_life(bearing, result, *, dynamic_rating=None, rotating: str
     >>> r = reference_rating_life(brg, brg.radial(1000.0))
     >>> round(r.C), round(r.L10r)
     (22381, 11518)
+
+    With 10 µm diametral clearance the free contact angle is 7.56°, but C and Q_c stay
+    at the nominal angle 0; the clearance shortens the life through the ball loads:
+
+    >>> brg = ballrace.BallBearing(0.0115, 7, 0.0435, 0.52, 0.53, diametral_clearance=10e-6)
+    >>> r = reference_rating_life(brg, brg.radial(1000.0))
+    >>> round(r.C), round(r.L10r)
+    (22381, 9513)
     """
     from .bearing import BallBearing
     from .ratings import dynamic_rating as _rating
@@ -254,9 +275,9 @@ def reference_rating_life(bearing, result, *, dynamic_rating=None, rotating: str
     if np.any(dead):
         raise ValueError("ball_loads are all zero: the bearing carries no load (infinite life)"
                          + ("" if Qi.ndim == 1 else f" in load case {np.argwhere(dead)[0]}"))
-    a = (bearing.free_contact_angle if nominal_contact_angle is None
-         else float(check_range(nominal_contact_angle, "nominal_contact_angle", -np.pi / 2,
-                                np.pi / 2, unit="rad")))
+    a = (bearing.nominal_contact_angle if nominal_contact_angle is None
+         else float(check_range(nominal_contact_angle, "nominal_contact_angle", 0.0,
+                                np.pi / 2, low_inclusive=True, unit="rad")))
     C = (float(_rating(bearing, contact_angle=a)) if dynamic_rating is None
          else float(check_positive(dynamic_rating, "dynamic_rating", "N", bounded=True)))
     Qci, Qce = raceway_capacities(C, bearing.n_balls, bearing.ball_diameter,

@@ -353,7 +353,7 @@ class FatigueLoadLimit:
     stress_limit: float
 
 
-def fatigue_load_limit_hertz(bearing, contact_angle: float = 0.0,
+def fatigue_load_limit_hertz(bearing, contact_angle: float | None = None,
                              stress_limit: float = FATIGUE_STRESS_LIMIT) -> FatigueLoadLimit:
     r"""Fatigue load limit C_u from the 1.5 GPa contact-stress criterion [N].
 
@@ -371,8 +371,11 @@ def fatigue_load_limit_hertz(bearing, contact_angle: float = 0.0,
     ----------
     bearing : BallBearing
         Geometry (D, Z, d_m, f_i, f_o) and materials.
-    contact_angle : float
-        Nominal contact angle α [rad] (0 for deep-groove bearings).
+    contact_angle : float, optional
+        Nominal contact angle α [rad], in [0, pi/2); default the bearing's
+        :attr:`~ballrace.BallBearing.nominal_contact_angle` (0 for deep-groove bearings,
+        whatever free contact angle their clearance gives; the design angle for
+        angular-contact ones).
     stress_limit : float
         Contact stress at the fatigue limit [Pa]; 1500 MPa for ball bearings.
 
@@ -395,7 +398,9 @@ def fatigue_load_limit_hertz(bearing, contact_angle: float = 0.0,
     from .bearing import BallBearing
 
     check_instance(bearing, "bearing", BallBearing)
-    a = float(check_range(contact_angle, "contact_angle", -np.pi / 2, np.pi / 2, unit="rad"))
+    a = (float(bearing.nominal_contact_angle) if contact_angle is None
+         else float(check_range(contact_angle, "contact_angle", 0.0, np.pi / 2,
+                                low_inclusive=True, unit="rad")))
     s = float(check_positive(stress_limit, "stress_limit", "Pa", bounded=True))
     Qref = 1000.0
     Qu = {}

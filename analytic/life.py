@@ -545,14 +545,19 @@ def equivalent_load_for(bearing, radial_load, axial_load, *, contact_angle=None,
                         standard: str = "ISO 281:2007") -> EquivalentLoad:
     """:func:`equivalent_load` for a bearing object (C0, f0, α and i taken from it).
 
-    ``contact_angle`` as in :func:`ballrace.analytic.ratings.bearing_numbers` (default the
-    bearing's free contact angle; pass 0 for a deep-groove bearing rated as radial).
+    ``contact_angle`` as in :func:`ballrace.analytic.ratings.bearing_numbers`: default the
+    bearing's :attr:`~ballrace.BallBearing.nominal_contact_angle`.  ISO 281:2007 Table 3
+    takes X, Y and e at the nominal contact angle: for a radial deep-groove bearing
+    (α = 0) they depend on f0 Fa / C0, not on the free contact angle its clearance gives.
 
     Examples
     --------
     >>> import ballrace
     >>> brg = ballrace.BallBearing(0.0127, 9, 0.065, 0.52, 0.52, diametral_clearance=0.0)
     >>> round(float(equivalent_load_for(brg, 5000.0, 1500.0).P))
+    5124
+    >>> loose = ballrace.BallBearing(0.0127, 9, 0.065, 0.52, 0.52, diametral_clearance=20e-6)
+    >>> round(float(equivalent_load_for(loose, 5000.0, 1500.0).P))   # same: alpha = 0
     5124
     """
     from .ratings import bearing_numbers, f0_factor, static_rating
@@ -773,6 +778,12 @@ def bearing_life(bearing, result, rotating: str = "inner") -> LundbergPalmgrenLi
     ``result`` needs ``ball_loads`` [N] and ``contact_angles`` [rad] (one per ball); when
     it also has ``ball_loads_outer`` / ``contact_angles_outer`` (high-speed solutions),
     those are used for the outer race.
+
+    Unlike the catalogue ratings (C, C0, and the Q_c of ISO/TS 16281, all at the bearing's
+    nominal contact angle), the Lundberg–Palmgren contact capacities here are evaluated at
+    each ball's *operating* contact angle from the load distribution: there Q_c is a
+    property of the loaded contact's geometry (γ = D cos α / d_m in
+    :func:`contact_capacity`), not a share of a catalogue rating.
 
     Examples
     --------

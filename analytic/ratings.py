@@ -14,7 +14,11 @@ Everything here is SI at the interface (m, N, rad); the standards' own unit syst
 Each rating function takes either plain numbers ``(ball_diameter, n_balls,
 pitch_diameter, contact_angle, n_rows)`` or a bearing object that has those attributes
 (:class:`ballrace.BallBearing`: ``ball_diameter``, ``n_balls``, ``pitch_diameter``,
-``free_contact_angle``, ``n_rows``).
+``nominal_contact_angle``, ``n_rows``).  The angle of every rating is the *nominal*
+contact angle α of ISO 281:2007 §6.1.1 and ISO 76:2006 §5.1.1 — 0 for a radial
+deep-groove bearing, the design angle for an angular-contact one — never the free
+contact angle a deep-groove bearing's clearance gives (see
+:class:`ballrace.BallBearing`).
 
 Tables and their checks
 -----------------------
@@ -115,26 +119,37 @@ def bearing_numbers(bearing_or_D, n_balls=None, pitch_diameter=None, contact_ang
     """Return ``(D, Z, d_m, alpha, i)`` from plain numbers or a bearing object.
 
     A bearing object is anything with ``ball_diameter``, ``n_balls``, ``pitch_diameter``
-    and ``free_contact_angle`` (and optionally ``n_rows``) attributes, such as
-    :class:`ballrace.BallBearing`.  ``contact_angle`` (the standards' *nominal* angle α)
-    defaults to 0 for plain numbers and to the bearing's ``free_contact_angle`` for a
-    bearing object; pass ``contact_angle=0`` for a radial (deep-groove) bearing whose free
-    angle comes only from its clearance, since ISO 281 / ISO 76 rate those at α = 0.
-    Checks the values and names the bad argument.
+    and ``nominal_contact_angle`` (and optionally ``n_rows``) attributes, such as
+    :class:`ballrace.BallBearing`.  ``contact_angle`` (the standards' *nominal* angle α,
+    ISO 281:2007 §6.1.1, ISO 76:2006 §5.1.1) defaults to 0 for plain numbers and to the
+    bearing's ``nominal_contact_angle`` for a bearing object — 0 for a deep-groove
+    bearing even when its clearance gives it a free contact angle.  A bearing object
+    without ``nominal_contact_angle`` is a ``TypeError`` (its free contact angle is not a
+    rating angle).  Checks the values and names the bad argument.
 
     Examples
     --------
     >>> bearing_numbers(0.0127, 9, 0.065)
     (0.0127, 9, 0.065, 0.0, 1)
+    >>> import ballrace
+    >>> brg = ballrace.BallBearing(0.0115, 7, 0.0435, 0.52, 0.53, diametral_clearance=10e-6)
+    >>> bearing_numbers(brg)[3]        # free contact angle 7.56 deg; rated at 0
+    0.0
     """
     if hasattr(bearing_or_D, "ball_diameter"):
         b = bearing_or_D
         D, Z, dm = b.ball_diameter, b.n_balls, b.pitch_diameter
-        alpha = getattr(b, "free_contact_angle", 0.0) if contact_angle is None else contact_angle
+        if contact_angle is None:
+            if getattr(b, "nominal_contact_angle", None) is None:
+                raise TypeError("the bearing object has no nominal_contact_angle [rad] (the "
+                                "rating angle of ISO 281 / ISO 76); pass contact_angle")
+            alpha = b.nominal_contact_angle
+        else:
+            alpha = contact_angle
         i = getattr(b, "n_rows", 1)
         names = ("bearing.ball_diameter", "bearing.n_balls", "bearing.pitch_diameter",
-                 "contact_angle" if contact_angle is not None else "bearing.free_contact_angle",
-                 "bearing.n_rows")
+                 "contact_angle" if contact_angle is not None
+                 else "bearing.nominal_contact_angle", "bearing.n_rows")
     else:
         names = ("bearing_or_D (ball_diameter)", "n_balls", "pitch_diameter", "contact_angle",
                  "n_rows")
@@ -264,7 +279,8 @@ def dynamic_rating(bearing_or_D, n_balls=None, pitch_diameter=None, contact_angl
         Pitch diameter d_m [m] (plain-number form).
     contact_angle : float, optional
         Nominal contact angle α [rad]; default 0 for plain numbers (radial, deep-groove
-        bearings) and the ``free_contact_angle`` of a bearing object.
+        bearings) and the ``nominal_contact_angle`` of a bearing object (ISO 281:2007
+        §6.1.1 rates at the nominal angle, not at the free angle of a clearance).
     n_rows : int
         Number of rows i (1 or 2).
     standard : {"ISO 281:2007", "ABMA 9-1990"}

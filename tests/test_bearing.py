@@ -205,3 +205,76 @@ def test_thin_methods_delegate():
     assert np.array_equal(b.thrust(17800.0).ball_loads, loaddist.thrust(b, 17800.0).ball_loads)
     assert np.array_equal(b.solve(Fa=1000.0, Fy=500.0).ball_loads,
                           loaddist.solve(b, Fa=1000.0, Fy=500.0).ball_loads)
+
+
+# ----------------------------------------------------------------------------- nominal angle
+def test_nominal_contact_angle_default_rule():
+    """The rating angle belongs to the bearing type (ISO 281:2007 §6.1.1, ISO 76:2006
+    §5.1.1): given by its clearance (deep groove) -> 0; given by its angle (angular
+    contact) -> that design angle; stated explicitly -> kept."""
+    b = ricci218()
+    assert b.nominal_contact_angle == np.radians(40)
+    dg = BallBearing(0.0115, 7, 0.0435, 0.52, 0.53, diametral_clearance=10e-6)
+    # cos a_f = 1 - P_d / (2 (f_i + f_o - 1) D) = 1 - 10e-6 / 1.15e-3 (Ricci 2009 eq. 5)
+    assert np.cos(dg.free_contact_angle) == pytest.approx(1 - 10e-6 / 1.15e-3, rel=1e-13)
+    assert dg.nominal_contact_angle == 0.0
+    both = ricci218(diametral_clearance=b.diametral_clearance)     # both given, agreeing
+    assert both.nominal_contact_angle == np.radians(40)
+    c = ricci218(free_contact_angle=None, diametral_clearance=b.diametral_clearance,
+                 nominal_contact_angle=np.radians(40))
+    assert c.nominal_contact_angle == np.radians(40)
+    assert ricci218(nominal_contact_angle=np.radians(15)).nominal_contact_angle == \
+        pytest.approx(np.radians(15), rel=1e-15)
+    assert ricci218(nominal_contact_angle=np.float64(0.5)).nominal_contact_angle == 0.5
+
+
+def test_nominal_contact_angle_survives_replace():
+    """An operating clearance (dataclasses.replace of the clearance, as
+    clearance.OperatingClearance.bearing does) does not change the rating angle; None
+    derives it again."""
+    b = ricci218()
+    looser = dataclasses.replace(b, free_contact_angle=None,
+                                 diametral_clearance=1.2 * b.diametral_clearance)
+    assert looser.free_contact_angle > b.free_contact_angle
+    assert looser.nominal_contact_angle == np.radians(40)
+    dg = BallBearing(0.0115, 7, 0.0435, 0.52, 0.53, diametral_clearance=10e-6)
+    tighter = dataclasses.replace(dg, free_contact_angle=None, diametral_clearance=2e-6)
+    assert tighter.nominal_contact_angle == 0.0
+    again = dataclasses.replace(b, free_contact_angle=None, nominal_contact_angle=None)
+    assert again.nominal_contact_angle == 0.0       # now given by its clearance
+
+
+@pytest.mark.parametrize("value, extra", [
+    (-0.1, ""), (np.pi / 2, ""), (2.0, "degrees"), (40.0, "degrees"), (120.0, ""),
+])
+def test_nominal_contact_angle_range(value, extra):
+    with pytest.raises(ValueError, match="nominal_contact_angle") as err:
+        ricci218(nominal_contact_angle=value)
+    assert "[0, 1.5708)" in str(err.value) and repr(value) in str(err.value)
+    assert extra in str(err.value)
+    if not extra:
+        assert "degrees" not in str(err.value)
+
+
+def test_nominal_contact_angle_types():
+    with pytest.raises(TypeError, match="nominal_contact_angle"):
+        ricci218(nominal_contact_angle="40 deg")
+    with pytest.raises(TypeError, match="nominal_contact_angle"):
+        ricci218(nominal_contact_angle=[0.1, 0.2])
+    with pytest.raises(ValueError, match="nominal_contact_angle"):
+        ricci218(nominal_contact_angle=float("nan"))
+
+
+def test_large_clearance_angle_defaulted_to_zero_is_logged(caplog):
+    """A clearance giving a 40 deg free angle is an angular-contact bearing's: rated at 0
+    by the default rule, so a warning says to pass the nominal angle."""
+    b = ricci218()
+    with caplog.at_level("WARNING", logger="ballrace.analytic.bearing"):
+        ricci218(free_contact_angle=None, diametral_clearance=b.diametral_clearance)
+    assert any("nominal_contact_angle" in r.getMessage() for r in caplog.records)
+    caplog.clear()
+    with caplog.at_level("WARNING", logger="ballrace.analytic.bearing"):
+        BallBearing(0.0115, 7, 0.0435, 0.52, 0.53, diametral_clearance=10e-6)
+        ricci218(free_contact_angle=None, diametral_clearance=b.diametral_clearance,
+                 nominal_contact_angle=np.radians(40))
+    assert not caplog.records

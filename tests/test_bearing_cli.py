@@ -110,3 +110,68 @@ def test_good_case_and_missing_file(tmp_path):
     assert case.radial_load == 5000.0 and case.speed_rpm == pytest.approx(1500.0)
     with pytest.raises(casefile.CaseFileError, match="no such file"):
         casefile.load_case(tmp_path / "missing.toml")
+
+
+# ----------------------------------------------------------------------------- nominal angle
+def test_deep_groove_case_rated_at_nominal_zero(tmp_path):
+    """Deep groove with 10 um clearance: free angle > 0, ratings at the nominal angle 0
+    (ISO 281:2007); both angles in the JSON and the geometry table."""
+    p = _write(tmp_path, GOOD.replace('"0 mm"', '"10 um"'))
+    r = _run_json(p)
+    b = r["bearing"]
+    # cos a_f = 1 - P_d / (2 (f_i + f_o - 1) D) = 1 - 10e-6 / (2 x 0.04 x 12.7e-3)
+    assert math.cos(b["free_contact_angle"]) == pytest.approx(1 - 10e-6 / 1.016e-3, rel=1e-12)
+    assert b["nominal_contact_angle"] == 0.0
+    assert r["ratings"]["C"] == pytest.approx(ratings.dynamic_rating(0.0127, 9, 0.065),
+                                              rel=1e-12)
+    assert r["iso"]["C"] == pytest.approx(r["ratings"]["C"], rel=1e-12)
+    assert any("nominal contact angle 0.00 deg" in n for n in r["notes"])
+    res = runner.invoke(app, ["bearing", str(p)], terminal_width=200)
+    assert res.exit_code == 0, res.output
+    line = next(x for x in res.output.splitlines() if "nominal contact angle" in x)
+    assert line.split()[-2:] == ["0", "deg"]
+
+
+def test_angular_contact_nominal_angle_key(tmp_path):
+    """[bearing].nominal_contact_angle of an angular-contact bearing is the rating angle;
+    without it, the free contact angle (the design angle)."""
+    text = GOOD.replace('diametral_clearance = "0 mm"',
+                        'type = "angular-contact"\nfree_contact_angle = "25 deg"')
+    case = casefile.load_case(_write(tmp_path, text))
+    assert case.nominal_contact_angle == pytest.approx(math.radians(25), rel=1e-14)
+    case = casefile.load_case(_write(tmp_path, text.replace(
+        'free_contact_angle = "25 deg"',
+        'free_contact_angle = "25 deg"\nnominal_contact_angle = "15 deg"')))
+    assert case.bearing.nominal_contact_angle == pytest.approx(math.radians(15), rel=1e-14)
+    assert case.bearing.free_contact_angle == pytest.approx(math.radians(25), rel=1e-14)
+    from ballrace.analytic import cli as bcli
+    r = bcli.analyze(case)
+    assert r["ratings"]["C"] == pytest.approx(
+        ratings.dynamic_rating(0.0127, 9, 0.065, math.radians(15)), rel=1e-12)
+    # an angular-contact bearing given by its clearance: its free angle is its design angle
+    brg = ballrace_bearing(free_contact_angle=math.radians(25))
+    clr = f'diametral_clearance = "{brg.diametral_clearance * 1e6!r} um"'
+    case = casefile.load_case(_write(tmp_path, text.replace('free_contact_angle = "25 deg"',
+                                                            clr)))
+    assert case.nominal_contact_angle == pytest.approx(math.radians(25), rel=1e-9)
+
+
+def ballrace_bearing(**kw):
+    import ballrace
+    return ballrace.BallBearing(0.0127, 9, 0.065, 0.52, 0.52, **kw)
+
+
+@pytest.mark.parametrize("kind, value, message", [
+    ("deep-groove", '"5 deg"', "deep-groove bearing is rated at 0 deg"),
+    ("angular-contact", '"90 deg"', r"\[0, 90\) deg"),
+    ("angular-contact", '"-5 deg"', r"\[0, 90\) deg"),
+    ("angular-contact", '"15"', "unit"),
+    ("angular-contact", '"15 mm"', "nominal_contact_angle"),
+    ("angular-contact", "15", "nominal_contact_angle"),
+])
+def test_nominal_angle_key_errors(tmp_path, kind, value, message):
+    p = _write(tmp_path, GOOD.replace(
+        'diametral_clearance = "0 mm"',
+        f'type = "{kind}"\ndiametral_clearance = "20 um"\nnominal_contact_angle = {value}'))
+    with pytest.raises(casefile.CaseFileError, match=message):
+        casefile.load_case(p)

@@ -221,3 +221,110 @@ def test_vectorized_load_cases():
     Cu = life.fatigue_load_limit_hertz(brg).C_u
     assert r.modified(kappa=1.0, contamination=0.5, fatigue_limit=Cu).shape == (3,)
     assert r.hours(3000.0).shape == (3,)
+
+
+# ----------------------------------------------------------------------------- rating angle
+def _iso_Qc(C, Z, D, dm, fi, fo, alpha):
+    """ISO/TS 16281:2008 §5.2 raceway capacities, written out again for the test."""
+    g = D * np.cos(alpha) / dm
+    T = 1.044 * ((1 - g) / (1 + g)) ** 1.72 * (fi * (2 * fo - 1) / (fo * (2 * fi - 1))) ** 0.41
+    return (C / (0.407 * Z * np.cos(alpha)) * (1 + T ** (10 / 3)) ** 0.3,
+            C / (0.389 * Z * np.cos(alpha)) * (1 + T ** (-10 / 3)) ** 0.3)
+
+
+def _iso_L10r(Q, Qci, Qce):
+    """L10r of ISO/TS 16281 §5 from the ball loads (inner ring rotating), written out."""
+    Qei = np.mean(Q ** 3) ** (1 / 3)
+    Qee = np.mean(Q ** (10 / 3)) ** 0.3
+    return (((Qci / Qei) ** 3) ** (-10 / 9) + ((Qce / Qee) ** 3) ** (-10 / 9)) ** -0.9
+
+
+@pytest.mark.parametrize("Fr", [1000.0, 5000.0])
+def test_deep_groove_clearance_is_rated_at_nominal_zero(Fr):
+    """6305 size, 10 um diametral clearance.  Free contact angle, derived independently
+    (Ricci 2009 eqs. 5-6): A = (f_i + f_o - 1) D = 0.05 x 11.5 mm = 0.575 mm,
+    cos a_f = 1 - P_d/(2A) = 1 - 0.010/1.15 = 0.9913043, a_f = 7.5614 deg.
+
+    ISO 281:2007 rates C at the nominal angle 0 (radial bearing), and ISO/TS 16281 §5.2
+    takes Q_c from C at that angle.  With the catalogue C fixed, Q_ci and Q_ce are
+    C / (0.407 or 0.389 Z cos a) (1 + T^(+-10/3))^0.3: taking the free angle instead raises
+    both by 1/cos a_f (and moves T a little through gamma = D cos a / D_pw), and
+    L10r ~ Q_c^3 by 1/cos^3 a_f = 1.02655 - L10r 2.65 % too long.  The
+    T part is measured here: the exact ratio is 1.02649."""
+    brg = _brg(diametral_clearance=10e-6)
+    cos_f = 1 - 10e-6 / (2 * 0.05 * 0.0115)
+    assert np.cos(brg.free_contact_angle) == pytest.approx(cos_f, rel=1e-13)
+    assert np.degrees(brg.free_contact_angle) == pytest.approx(7.5614, abs=1e-4)
+    assert brg.nominal_contact_angle == 0.0
+    res = brg.radial(Fr)
+    Q = np.asarray(res.ball_loads)
+    new = life.reference_rating_life(brg, res)
+    zero = life.reference_rating_life(brg, res, nominal_contact_angle=0.0)
+    # C by hand, ISO 281:2007 eq. (2): gamma = 11.5/43.5 = 0.264368, f_c between the
+    # Table 2 nodes 0.26 (58.2) and 0.27 (57.7): 57.98161
+    fc = 58.2 + (11.5 / 43.5 - 0.26) / 0.01 * (57.7 - 58.2)
+    C = 1.3 * fc * 7 ** (2 / 3) * 11.5 ** 1.8
+    assert new.C == pytest.approx(C, rel=1e-12) and round(C) == 22381
+    assert new.L10r == zero.L10r
+    Qci, Qce = _iso_Qc(C, 7, 0.0115, 0.0435, 0.52, 0.53, 0.0)
+    assert new.Q_ci == pytest.approx(Qci, rel=1e-12)
+    assert new.Q_ce == pytest.approx(Qce, rel=1e-12)
+    assert new.L10r == pytest.approx(_iso_L10r(Q, Qci, Qce), rel=1e-12)
+    # the free angle in Q_c with the same (catalogue) C: what the library did before
+    a_f = np.arccos(cos_f)
+    old = life.reference_rating_life(brg, res, dynamic_rating=C, nominal_contact_angle=a_f)
+    ratio = old.L10r / new.L10r
+    assert ratio == pytest.approx(_iso_L10r(Q, *_iso_Qc(C, 7, 0.0115, 0.0435, 0.52, 0.53, a_f))
+                                  / _iso_L10r(Q, Qci, Qce), rel=1e-12)
+    assert ratio == pytest.approx(cos_f ** -3, rel=1e-4)        # T moves it by 6e-5
+    assert ratio - 1 == pytest.approx(0.0265, abs=5e-4)
+
+
+def test_angular_contact_rating_angle_is_the_design_angle():
+    """218 angular-contact bearing (Ricci 2009, 40 deg): nominal = design angle, so C, Q_c
+    and L10r are those at 40 deg, whether the bearing is given by its angle or by its
+    clearance with the nominal angle stated."""
+    kw = dict(ball_diameter=22.225e-3, n_balls=16, pitch_diameter=125.26e-3, f_inner=0.5232,
+              f_outer=0.5232)
+    a = np.radians(40.0)
+    brg = ballrace.BallBearing(**kw, free_contact_angle=a)
+    assert brg.nominal_contact_angle == a
+    by_clearance = ballrace.BallBearing(**kw, diametral_clearance=brg.diametral_clearance,
+                                        nominal_contact_angle=a)
+    res = brg.thrust(17800.0)
+    r = life.reference_rating_life(brg, res)
+    C = ratings.dynamic_rating(22.225e-3, 16, 125.26e-3, a)
+    assert r.C == pytest.approx(C, rel=1e-12)
+    Qci, Qce = _iso_Qc(C, 16, 22.225e-3, 125.26e-3, 0.5232, 0.5232, a)
+    assert (r.Q_ci, r.Q_ce) == pytest.approx((Qci, Qce), rel=1e-12)
+    assert r.L10r == pytest.approx(
+        life.reference_rating_life(brg, res, nominal_contact_angle=a).L10r, rel=1e-15)
+    assert life.reference_rating_life(by_clearance, res).L10r == pytest.approx(r.L10r,
+                                                                               rel=1e-9)
+
+
+@pytest.mark.parametrize("bad", [-0.1, np.pi / 2, 40.0])
+def test_nominal_contact_angle_out_of_range(bad):
+    brg = _brg()
+    with pytest.raises(ValueError, match="nominal_contact_angle"):
+        life.reference_rating_life(brg, brg.radial(1000.0), nominal_contact_angle=bad)
+    with pytest.raises(ValueError, match="contact_angle"):
+        iso16281.raceway_capacities(22500.0, 7, 0.0115, 0.0435, 0.52, 0.53, bad)
+
+
+@settings(max_examples=25, deadline=None)
+@given(pd=st.floats(0.0, 40e-6), D=st.floats(5e-3, 20e-3), ratio=st.floats(3.0, 8.0),
+       fi=st.floats(0.505, 0.54), fo=st.floats(0.505, 0.54))
+def test_clearance_never_moves_the_rating_of_a_deep_groove_bearing(pd, D, ratio, fi, fo):
+    """Invariant: for a deep-groove bearing given by its clearance, C, C0 and the raceway
+    capacities are those of alpha = 0 whatever the clearance (and so its free angle)."""
+    dm = ratio * D
+    brg = ballrace.BallBearing(D, 7, dm, fi, fo, diametral_clearance=pd)   # < 2A = 1e-4 m
+    assert brg.nominal_contact_angle == 0.0
+    C = ratings.dynamic_rating(D, 7, dm)
+    assert brg.dynamic_rating() == pytest.approx(C, rel=1e-12)
+    assert brg.static_rating() == pytest.approx(ratings.static_rating(D, 7, dm), rel=1e-12)
+    Q = np.array([1000.0, 600.0, 50.0, 0.0, 0.0, 50.0, 600.0])
+    from types import SimpleNamespace
+    r = life.reference_rating_life(brg, SimpleNamespace(ball_loads=Q))
+    assert (r.Q_ci, r.Q_ce) == pytest.approx(_iso_Qc(C, 7, D, dm, fi, fo, 0.0), rel=1e-12)

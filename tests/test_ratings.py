@@ -108,6 +108,65 @@ def test_bearing_contact_angle_override():
         ratings.dynamic_rating(0.0127, 9, 0.065), rel=1e-12)
 
 
+def test_deep_groove_with_clearance_rated_at_nominal_zero():
+    """209 size with 15 um clearance: free contact angle 9.86 deg (cos a_f = 1 -
+    15e-6/(2 x 0.04 x 12.7e-3)), but ISO 281:2007 §6.1.1 and ISO 76:2006 §5.1.1 rate a
+    radial bearing at alpha = 0: C, C0, C_u (ISO 281 Annex B) and the X/Y/e of ISO 281
+    Table 3 are those of the zero-clearance bearing, by default.  Hand values: gamma =
+    12.7/65 = 0.19538, f_c = 59.946 (Table 2), f0 = 14.0923 (ISO 76 Table 2)."""
+    brg = ballrace.BallBearing(0.0127, 9, 0.065, 0.52, 0.52, diametral_clearance=15e-6)
+    tight = ballrace.BallBearing(0.0127, 9, 0.065, 0.52, 0.52, diametral_clearance=0.0)
+    assert np.cos(brg.free_contact_angle) == pytest.approx(1 - 15e-6 / (2 * 0.04 * 0.0127),
+                                                           rel=1e-13)
+    g = 12.7 / 65
+    fc = np.interp(g, [0.19, 0.20], [60.0, 59.9])
+    f0 = np.interp(g, [0.19, 0.20], [14.2, 14.0])
+    C = 1.3 * fc * 9 ** (2 / 3) * 12.7 ** 1.8
+    C0 = f0 * 9 * 12.7 ** 2
+    assert brg.dynamic_rating() == pytest.approx(C, rel=1e-12)
+    assert ratings.dynamic_rating(brg) == pytest.approx(C, rel=1e-12)
+    assert brg.static_rating() == pytest.approx(C0, rel=1e-12)
+    assert ratings.bearing_numbers(brg)[3] == 0.0
+    from ballrace.analytic import iso281, life
+    assert iso281.fatigue_load_limit_hertz(brg).C_u == pytest.approx(
+        iso281.fatigue_load_limit_hertz(tight, 0.0).C_u, rel=1e-12)
+    e_loose = life.equivalent_load_for(brg, 5000.0, 1500.0)
+    e_tight = life.equivalent_load_for(tight, 5000.0, 1500.0)
+    assert (float(e_loose.P), float(e_loose.X), float(e_loose.Y), float(e_loose.e)) == \
+        (float(e_tight.P), float(e_tight.X), float(e_tight.Y), float(e_tight.e))
+    # the free angle would have lowered C by cos^0.7 and f_c(gamma cos a): the old default
+    assert ratings.dynamic_rating(brg, contact_angle=brg.free_contact_angle) < 0.995 * C
+
+
+def test_angular_contact_rated_at_design_angle_by_default():
+    """Ricci's 218 at 40 deg, also given by its clearance with the nominal angle stated:
+    the same C, C0, C_u as at contact_angle = 40 deg."""
+    a = np.radians(40)
+    b1 = ballrace.BallBearing(22.225e-3, 16, 125.26e-3, 0.5232, 0.5232, free_contact_angle=a)
+    b2 = ballrace.BallBearing(22.225e-3, 16, 125.26e-3, 0.5232, 0.5232,
+                              diametral_clearance=b1.diametral_clearance,
+                              nominal_contact_angle=a)
+    from ballrace.analytic import iso281
+    for b in (b1, b2):
+        assert b.dynamic_rating() == pytest.approx(
+            ratings.dynamic_rating(22.225e-3, 16, 125.26e-3, a), rel=1e-12)
+        assert b.static_rating() == pytest.approx(
+            ratings.static_rating(22.225e-3, 16, 125.26e-3, a), rel=1e-12)
+        assert iso281.fatigue_load_limit_hertz(b).C_u == pytest.approx(
+            iso281.fatigue_load_limit_hertz(b1, a).C_u, rel=1e-12)
+
+
+def test_bearing_object_needs_a_nominal_angle():
+    """A duck-typed bearing with only a free contact angle: no rating angle to take."""
+    from types import SimpleNamespace
+    b = SimpleNamespace(ball_diameter=0.0127, n_balls=9, pitch_diameter=0.065,
+                        free_contact_angle=0.17)
+    with pytest.raises(TypeError, match="nominal_contact_angle"):
+        ratings.dynamic_rating(b)
+    assert ratings.dynamic_rating(b, contact_angle=0.0) == pytest.approx(
+        ratings.dynamic_rating(0.0127, 9, 0.065), rel=1e-12)
+
+
 def test_static_equivalent_load_iso76():
     """ISO 76 Table 3: radial 0.6/0.5; 15 deg 0.5/0.46; 25 deg 0.5/0.38; 40 deg 0.5/0.26;
     pairs X0 = 1, Y0 doubled (cross-checked with a manufacturer's table, LYC)."""

@@ -17,12 +17,14 @@ BEARING_INPUTS = {
     "ball_diameter": Param("[length]"), "n_balls": Param("int"),
     "pitch_diameter": Param("[length]"), "f_inner": Param(""), "f_outer": Param(""),
     "free_contact_angle": Param("[angle]", None), "diametral_clearance": Param("[length]", None),
+    "nominal_contact_angle": Param("[angle]", None),
     "E": Param("[pressure]", 200e9), "nu": Param("", 0.3),
 }
 
 
 def make_bearing(ball_diameter, n_balls, pitch_diameter, f_inner, f_outer,
-                 free_contact_angle=None, diametral_clearance=None, E=200e9, nu=0.3):
+                 free_contact_angle=None, diametral_clearance=None, nominal_contact_angle=None,
+                 E=200e9, nu=0.3):
     """A :class:`ballrace.analytic.bearing.BallBearing` from SI inputs."""
     from ballrace import Material
     from ballrace.analytic.bearing import BallBearing
@@ -30,7 +32,8 @@ def make_bearing(ball_diameter, n_balls, pitch_diameter, f_inner, f_outer,
     return BallBearing(ball_diameter=ball_diameter, n_balls=n_balls,
                        pitch_diameter=pitch_diameter, f_inner=f_inner, f_outer=f_outer,
                        free_contact_angle=free_contact_angle,
-                       diametral_clearance=diametral_clearance, material=Material(E=E, nu=nu))
+                       diametral_clearance=diametral_clearance, material=Material(E=E, nu=nu),
+                       nominal_contact_angle=nominal_contact_angle)
 
 
 def _split(kw):
@@ -57,13 +60,15 @@ def _ball_at(ld, psi: float) -> int:
              inputs={**BEARING_INPUTS, "contact_angle": Param("[angle]", None)},
              outputs={"total_conformity": "", "curvature_center_distance": "[length]",
                       "diametral_clearance": "[length]", "free_contact_angle": "[angle]",
-                      "free_endplay": "[length]", "inner_race_diameter": "[length]",
+                      "nominal_contact_angle": "[angle]", "free_endplay": "[length]",
+                      "inner_race_diameter": "[length]",
                       "outer_race_diameter": "[length]", "Rx_inner": "[length]",
                       "Ry_inner": "[length]", "Rx_outer": "[length]", "Ry_outer": "[length]",
                       "curvature_sum_inner": "1 / [length]", "curvature_difference_inner": "",
                       "K_n": "[force] / [length] ** 1.5"})
 def geometry(contact_angle=None, **kw):
-    """Internal geometry, effective radii and ball stiffness (at beta_f unless given)."""
+    """Internal geometry, effective radii and ball stiffness (at beta_f unless given), and
+    the nominal (rating) contact angle."""
     brg, _ = _split(kw)
     beta = brg.free_contact_angle if contact_angle is None else contact_angle
     ci, co = brg.curvature("inner", beta), brg.curvature("outer", beta)
@@ -72,6 +77,7 @@ def geometry(contact_angle=None, **kw):
             "curvature_center_distance": brg.curvature_center_distance,
             "diametral_clearance": float(brg.diametral_clearance),
             "free_contact_angle": float(brg.free_contact_angle),
+            "nominal_contact_angle": float(brg.nominal_contact_angle),
             "free_endplay": brg.free_endplay, "inner_race_diameter": brg.inner_race_diameter,
             "outer_race_diameter": brg.outer_race_diameter,
             "Rx_inner": float(ci.Rx), "Ry_inner": float(ci.Ry), "Rx_outer": float(co.Rx),

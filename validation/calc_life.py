@@ -170,22 +170,26 @@ def iso_fatigue_limit(ball_diameter, n_balls, pitch_diameter, f_inner, f_outer, 
                      "f_outer": Param(""), "radial_load": Param("[force]"),
                      "clearance": Param("[length]", 0.0), "azimuth_offset": Param("[angle]", 0.0)},
              outputs={"C": "[force]", "L10r": "", "L10": "", "L10r_over_L10": "",
-                      "L10r_over_LP": ""})
+                      "L10r_over_LP": "", "free_contact_angle": "[angle]",
+                      "nominal_contact_angle": "[angle]"})
 def iso_reference_life(ball_diameter, n_balls, pitch_diameter, f_inner, f_outer, radial_load,
                        clearance, azimuth_offset):
     """ISO/TS 16281 L10r of a deep-groove bearing under radial load, against (C/Fr)^3 and
-    against the Lundberg-Palmgren bearing_life of the same ball loads."""
+    against the Lundberg-Palmgren bearing_life of the same ball loads.  C and the raceway
+    capacities are the library's defaults: the bearing's nominal contact angle (0 for a
+    deep-groove bearing given by its clearance)."""
     import ballrace
-    from ballrace.analytic import life, ratings
+    from ballrace.analytic import life
 
     brg = ballrace.BallBearing(ball_diameter, n_balls, pitch_diameter, f_inner, f_outer,
                                diametral_clearance=max(clearance, 0.0))
     res = brg.radial(radial_load, clearance=clearance, azimuth_offset=azimuth_offset)
-    C = float(ratings.dynamic_rating(brg, contact_angle=0.0))
-    r = life.reference_rating_life(brg, res, nominal_contact_angle=0.0)
-    L10 = (C / radial_load) ** 3
-    return {"C": C, "L10r": r.L10r, "L10": L10, "L10r_over_L10": r.L10r / L10,
-            "L10r_over_LP": r.L10r / life.bearing_life(brg, res).L10}
+    r = life.reference_rating_life(brg, res)
+    L10 = (r.C / radial_load) ** 3
+    return {"C": r.C, "L10r": r.L10r, "L10": L10, "L10r_over_L10": r.L10r / L10,
+            "L10r_over_LP": r.L10r / life.bearing_life(brg, res).L10,
+            "free_contact_angle": float(brg.free_contact_angle),
+            "nominal_contact_angle": float(brg.nominal_contact_angle)}
 
 
 @calculation("life.operating_clearance", requires=(_CLEAR + ":operating_clearance",),
