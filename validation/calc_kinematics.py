@@ -135,7 +135,7 @@ HS_INPUTS = {**BEARING_INPUTS, "density": _DENSITY, "Fa": Param("[force]"),
 
 def _hs_bearing(ball_diameter, n_balls, pitch_diameter, f_inner, f_outer,
                 free_contact_angle=None, diametral_clearance=None, E=200e9, nu=0.3,
-                density=7850.0):
+                density=7850.0, nominal_contact_angle=None):
     """A BallBearing whose steel has the given density (ball mass for F_c and M_g)."""
     from ballrace import Material
     from ballrace.analytic.bearing import BallBearing
@@ -144,6 +144,7 @@ def _hs_bearing(ball_diameter, n_balls, pitch_diameter, f_inner, f_outer,
                        pitch_diameter=pitch_diameter, f_inner=f_inner, f_outer=f_outer,
                        free_contact_angle=free_contact_angle,
                        diametral_clearance=diametral_clearance,
+                       nominal_contact_angle=nominal_contact_angle,
                        material=Material(E=E, nu=nu, density=density))
 
 
