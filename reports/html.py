@@ -12,6 +12,7 @@ from __future__ import annotations
 import json
 import logging
 import math
+import re
 import time
 from pathlib import Path
 
@@ -230,6 +231,24 @@ def _tol(text: str):
     return Markup(" ").join(_nowrap(o) if o not in ("+", "and") else o for o in out)
 
 
+_E_NUMBER = re.compile(r"[^\s<>]*\d[eE][-+]\d+[^\s<>]*")
+
+
+def _prose(text):
+    """Prose (reasons, notes, sources): numbers in e-notation kept whole ("1.4e-5" would
+    otherwise break after its hyphen in print)."""
+    from markupsafe import Markup, escape
+
+    text = "" if text is None else str(text)
+    out, last = [], 0
+    for m in _E_NUMBER.finditer(text):
+        out.append(escape(text[last:m.start()]))
+        out.append(_nowrap(m.group(0)))
+        last = m.end()
+    out.append(escape(text[last:]))
+    return Markup("").join(out)
+
+
 def _wbr(name: str):
     """A quantity name that may wrap after its underscores, and only there."""
     from markupsafe import Markup, escape
@@ -305,6 +324,7 @@ def render_html(run, *, drift=None, plots: bool = True) -> str:
     env.filters["err"] = _err
     env.filters["tol"] = _tol
     env.filters["wbr"] = _wbr
+    env.filters["prose"] = _prose
     tpl = env.get_template("report.html.j2")
     return tpl.render(run=run, counts=run.counts, areas=areas, env=environment(),
                       summary_figs=[f for f in figures if f["section"] == "summary"],

@@ -404,5 +404,7 @@ def test_numbers_never_wrap_and_names_wrap_at_underscores():
     tol = str(html._tol("±5.72958e-08 deg + ±1e-06 rel"))
     assert tol == ('<span class="n">±5.72958e-08 deg</span> + '
                    '<span class="n">±1e-06 rel</span>')
+    prose = str(html._prose("half a unit = 1.4e-5); <b>ok</b>"))
+    assert prose == 'half a unit = <span class="n">1.4e-5);</span> &lt;b&gt;ok&lt;/b&gt;'
     css = (Path(html.__file__).parent / "templates" / "report.html.j2").read_text()
     assert ".n { white-space: nowrap; }" in css and "overflow-wrap: anywhere" not in css
