@@ -112,7 +112,7 @@ def analyze(case) -> dict:
                                            case.roughness_ball))
             film["Lambda"] = lam
             if F_lub is None:
-                F_lub = float(life.lubrication_factor(lam))
+                F_lub = float(life.lubrication_factor(lam, warn=False))
                 film["lubrication_factor"] = F_lub
                 notes.append("lubrication factor F from Lambda via an approximate "
                              "reconstruction of H&D (1981) fig. 3.16 (+-30 %)")

@@ -862,7 +862,7 @@ def processing_factor(process: str) -> float:
     return PROCESSING_FACTOR[process]
 
 
-def lubrication_factor(film_parameter):
+def lubrication_factor(film_parameter, *, warn: bool = True):
     r"""Lubrication factor F from the film parameter Λ = h_min / (R_q,race² + R_q,ball²)^½.
 
     Piecewise linear in log Λ – log F through :data:`LUBRICATION_FACTOR_NODES`, constant
@@ -872,6 +872,9 @@ def lubrication_factor(film_parameter):
     ----------
     film_parameter : float or array_like
         Λ [-], > 0 (:func:`ballrace.analytic.ehl.film_parameter`).
+    warn : bool, optional
+        Log a warning that the curve is approximate (default).  A caller that tells its
+        user so itself (the ``ballrace bearing`` notes) passes False.
 
     Returns
     -------
@@ -889,9 +892,11 @@ def lubrication_factor(film_parameter):
     (1.0, 2.6)
     """
     lam = check_positive(film_parameter, "film_parameter", "-")
-    log.warning("lubrication_factor: Hamrock & Dowson fig. 3.16 was lost in the scan; this "
-                "curve is a reconstruction (about +/-30 % between Lambda = 1.2 and 3). "
-                "Pass an explicit factor to adjusted_life where the answer matters.")
+    if warn:
+        log.warning("lubrication_factor: this curve is a reconstruction of Hamrock & Dowson "
+                    "(1981) fig. 3.16, not checked against the printed figure (about +/-30 %% "
+                    "between Lambda = 1.2 and 3). Pass an explicit factor to adjusted_life "
+                    "where the answer matters.")
     x = np.log([n[0] for n in LUBRICATION_FACTOR_NODES])
     y = np.log([n[1] for n in LUBRICATION_FACTOR_NODES])
     return _s(np.exp(np.interp(np.log(lam), x, y)))

@@ -305,3 +305,33 @@ def test_lp_life_from_library_radial_solution():
     L_loose = [life.bearing_life(loose, loose.radial(Fr, azimuth_offset=off)).L10
                for off in (0.0, np.pi / 9)]
     assert 0.8 < np.mean(L_loose) / np.mean(L) < 0.97
+
+
+def test_lubrication_factor_warns_once_per_call_unless_told(caplog):
+    """The approximate curve says so in the log (in plain words), except for a caller that
+    tells its user itself: ``ballrace bearing`` prints it as a note, not twice."""
+    import logging
+
+    with caplog.at_level(logging.WARNING, logger="ballrace"):
+        life.lubrication_factor(2.0)
+    assert len(caplog.records) == 1
+    msg = caplog.records[0].getMessage()
+    assert "not checked against the printed figure" in msg and "scan" not in msg
+    caplog.clear()
+    with caplog.at_level(logging.WARNING, logger="ballrace"):
+        assert life.lubrication_factor(2.0, warn=False) == life.lubrication_factor(2.0)
+    assert len(caplog.records) == 1                       # only the call with warn=True
+
+
+def test_bearing_cli_prints_the_lubrication_note_once(tmp_path):
+    """The note is on stdout; stderr does not repeat it as a WARNING."""
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[1]
+    exe = Path(sys.executable).with_name("ballrace")
+    res = subprocess.run([str(exe), "bearing", str(root / "examples" / "bearing_209.toml")],
+                         capture_output=True, text=True, timeout=120)
+    assert res.returncode == 0, res.stderr
+    assert "fig. 3.16" in res.stdout and "lubrication_factor" not in res.stderr
