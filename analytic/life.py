@@ -11,7 +11,7 @@ Contents
 * :func:`load_factor` — the 1.25 factor for a load rotating relative to the outer ring or
   oscillating more than 45° (Tata 2012);
 * :func:`equivalent_load`, :func:`xy_factors` — P = X Fr + Y Fa with the X, Y, e tables of
-  ISO 281:2007 Table 3 / ANSI/AFBMA Std 9-1990 Table 4 (seed 001);
+  ISO 281:2007 Table 3 / ANSI/AFBMA Std 9-1990 Table 4;
 * :func:`contact_capacity`, :func:`lundberg_palmgren_life`, :func:`bearing_life` — ring
   and bearing L10 from the ball loads of any static solution (Lundberg & Palmgren 1947 in
   Harris's form; Hamrock & Dowson 1981 eqs. 3.113–3.123);
@@ -29,17 +29,17 @@ Contents
   files use; the Hamrock & Dowson factors above stay available for comparison with the
   1981 literature (docs/life.md says why the ISO path is the default).
 
-Notes on the seed tables
+Notes on the X/Y/e table
 ------------------------
-The X/Y/e table in the seed 001 web reprint has three values that break the table's own
-structure; the values used here are the standard's:
+The X/Y/e table in a web reprint of ANSI/AFBMA Std 9-1990 (Table 4) has three values
+that break the table's own structure; the values used here are the standard's:
 
-* radial, single row, Fa/C0 = 0.084: seed 1.56, double-row column 1.55; ISO 281:2007 and
+* radial, single row, Fa/C0 = 0.084: reprint 1.56, double-row column 1.55; ISO 281:2007 and
   SKF's reprint of it give 1.55 (used);
-* 10°, double row, Fa/Fr > e, 4th entry: seed 2.20, which breaks monotonicity between
+* 10°, double row, Fa/Fr > e, 4th entry: reprint 2.20, which breaks monotonicity between
   2.47 and 2.18; the double-row values are 1.625 × the single-row ones (X: 0.75 = 1.63 ×
   0.46; Y: 1.41 × 1.625 = 2.29), so 2.29 (used);
-* 40°, double row, Fa/Fr > e: seed 0.98; 0.57 × 1.63 = 0.93, the value SKF prints for
+* 40°, double row, Fa/Fr > e: reprint 0.98; 0.57 × 1.63 = 0.93, the value SKF prints for
   40° pairs (P = 0.57 Fr + 0.93 Fa) (used).
 """
 from __future__ import annotations
@@ -127,12 +127,12 @@ def l10(C, P, exponent: float = 3.0):
 
     References
     ----------
-    ISO 281:2007 eq. (12); ANSI/AFBMA Std 9-1990 §6 (seed 001); Hamrock & Dowson (1981)
+    ISO 281:2007 eq. (12); ANSI/AFBMA Std 9-1990 §6; Hamrock & Dowson (1981)
     eq. (3.115).
 
     Examples
     --------
-    >>> round(float(l10(143.0, 50.0)), 6)         # seed 001's bearing at 50 lb [1e6 rev]
+    >>> round(float(l10(143.0, 50.0)), 6)         # Std 9 example bearing, 50 lb [1e6 rev]
     23.393656
     """
     C = check_positive(C, "C", "N", bounded=True)
@@ -169,7 +169,7 @@ def l10_hours(C, P, *, speed_rpm, exponent: float = 3.0):
 
     Examples
     --------
-    >>> round(float(l10_hours(143.0, 50.0, speed_rpm=200.0)))   # seed 001's bearing
+    >>> round(float(l10_hours(143.0, 50.0, speed_rpm=200.0)))   # Std 9 example bearing
     1949
     """
     n = check_positive(speed_rpm, "speed_rpm", "rev/min", bounded=True)
@@ -207,12 +207,13 @@ def catalog_l10_hours(C, P, *, speed_rpm, exponent: float = 3.0):
     References
     ----------
     Tata, R. (2012) *Factors Influencing the Performance of Ball and Roller Bearings*,
-    "Bearing life calculation factors" (seed 000); Tata, R. (2012) *Principles and Use of
-    Ball Bearings*, "Selection" (seed 002).
+    "Bearing life calculation factors"; Tata, R. (2012) *Principles and Use of
+    Ball Bearings*, "Selection".
 
     Examples
     --------
-    Seed 002: 570 lb capacity, 100 lb radial load, 2000 rpm:
+    Tata (2012) *Principles and Use of Ball Bearings*, "Selection": 570 lb capacity,
+    100 lb radial load, 2000 rpm:
 
     >>> round(float(catalog_l10_hours(570.0, 100.0, speed_rpm=2000.0, exponent=3.33)))
     246675
@@ -247,7 +248,8 @@ def miner(lives, fractions):
 
     References
     ----------
-    Tata (2012) seed 000, "When there are a variety of load and speed conditions":
+    Tata (2012) *Factors Influencing the Performance of Ball and Roller Bearings*,
+    "When there are a variety of load and speed conditions":
     L10 = 1/(t1/L1 + t2/L2 + ...); Palmgren (1924), Miner (1945).
 
     Examples
@@ -293,7 +295,8 @@ def load_factor(load_stationary_relative_to: str = "outer ring",
 
     References
     ----------
-    Tata (2012), seed 000, definition of P in the life equation.
+    Tata (2012) *Factors Influencing the Performance of Ball and Roller Bearings*,
+    definition of P in the life equation.
 
     Examples
     --------
@@ -416,7 +419,7 @@ def xy_factors(relative_axial_load, contact_angle=0.0, n_rows: int = 1,
 
     References
     ----------
-    ISO 281:2007 Table 3; ANSI/AFBMA Std 9-1990 Table 4 (seed 001), with the three
+    ISO 281:2007 Table 3; ANSI/AFBMA Std 9-1990 Table 4, with the three
     corrections listed in the module docstring.
 
     Examples
@@ -500,7 +503,7 @@ def equivalent_load(radial_load, axial_load, *, static_rating, f0=None, contact_
 
     References
     ----------
-    ISO 281:2007 §6.2, Table 3; ANSI/AFBMA Std 9-1990 §6, Table 4 (seed 001).
+    ISO 281:2007 §6.2, Table 3; ANSI/AFBMA Std 9-1990 §6, Table 4.
 
     Examples
     --------
@@ -812,17 +815,17 @@ def bearing_life(bearing, result, rotating: str = "inner") -> LundbergPalmgrenLi
 
 # =========================================================================== life factors
 #: Material factor D for through-hardened, air-melted bearing steels at 58 HRC
-#: (Bamberger et al. 1971, as Hamrock & Dowson 1981 Table 3.5).  The seed scan lost the
-#: numbers; these are the published values as recalled — check against the printed table.
+#: (Bamberger et al. 1971, as Hamrock & Dowson 1981 Table 3.5): the values usually
+#: attributed to that table, not checked against the printed original.
 MATERIAL_FACTOR = {"52100": 2.0, "M-1": 0.6, "M-2": 0.6, "M-10": 2.0, "M-50": 2.0,
                    "T-1": 0.6, "Halmo": 2.0, "M-42": 0.2, "WB-49": 0.6}
 #: Processing factor E: air melt 1; consumable-electrode vacuum melting (CVM) 3
 #: (Bamberger et al. 1971 recommendation, Hamrock & Dowson 1981 §3.5.4).
 PROCESSING_FACTOR = {"air-melt": 1.0, "CVM": 3.0}
 #: (Λ, F) nodes of the lubrication factor, interpolated linearly in log Λ – log F.
-#: Reconstruction of Hamrock & Dowson (1981) fig. 3.16 (from Bamberger et al. 1971): the
-#: seed scan lost the figure, so only its text anchors are certain — F < 1 below Λ ≈ 1.2,
-#: F = 1 at Λ ≈ 1.2, rising to Λ = 3, constant above 3.  Intermediate values are
+#: Reconstruction of Hamrock & Dowson (1981) fig. 3.16 (from Bamberger et al. 1971), not
+#: checked against the printed figure: only the text's anchors are certain — F < 1 below
+#: Λ ≈ 1.2, F = 1 at Λ ≈ 1.2, rising to Λ = 3, constant above 3.  Intermediate values are
 #: approximate (± 30 %); use an explicit F where the answer matters.
 LUBRICATION_FACTOR_NODES = ((0.6, 0.4), (0.8, 0.6), (1.0, 0.8), (1.2, 1.0), (1.5, 1.4),
                             (2.0, 1.9), (2.5, 2.3), (3.0, 2.6))
@@ -909,8 +912,8 @@ def hardness_factor(hardness_hrc):
               \quad (R_c > 58)
 
     This is the cube (L ∝ C³ for ball bearings) of Harris's hardness reduction of the basic
-    dynamic capacity, f_H = (HRC/58)^3.6.  It reproduces Hamrock & Dowson's statement (seed
-    004, §3.5.4) that "a two-point drop in hardness to 56 Rc will cause a 32 percent drop
+    dynamic capacity, f_H = (HRC/58)^3.6.  It reproduces Hamrock & Dowson's statement
+    (1981, §3.5.4) that "a two-point drop in hardness to 56 Rc will cause a 32 percent drop
     in bearing fatigue life": G(56) = 0.685, a 31.5 % drop.  (Zaretsky's exponential
     L ∝ e^{0.1 Rc} would give only 18 %, so it is not the form of eq. 3.126.)
 
@@ -921,7 +924,7 @@ def hardness_factor(hardness_hrc):
 
     References
     ----------
-    Hamrock & Dowson (1981) eq. (3.126) and text (seed 004); Harris, T.A. (2001) *Rolling
+    Hamrock & Dowson (1981) eq. (3.126) and text; Harris, T.A. (2001) *Rolling
     Bearing Analysis* 4th ed., hardness factor f_H = (HRC/58)^3.6 (also Harris & Kotzalas
     2007, used in MESYS's surface-hardness reduction).
 

@@ -24,8 +24,8 @@ Tables and their checks
 -----------------------
 ``FC_TABLE`` (f_c, single-row radial and single/double-row angular-contact groove ball
 bearings) is the 40-value table 0.01 … 0.40 of ISO 281:2007 Table 2; at every node of the
-ANSI/AFBMA Std 9 excerpt (seed 001, Table 2: 0.05 … 0.10 by 0.01, then by 0.02) the
-values are identical.  ``FC_TABLE_DOUBLE_ROW_RADIAL`` is the seed's second column
+ANSI/AFBMA Std 9-1990 Table 2 (0.05 … 0.10 by 0.01, then by 0.02) the
+values are identical.  ``FC_TABLE_DOUBLE_ROW_RADIAL`` is that table's second column
 (0.05 … 0.40 only).  ``F0_TABLE`` (ISO 76:2006 Table 2, radial and angular-contact
 groove ball bearings) is checked in ``tests/test_ratings.py`` against its definition:
 with Q_max = 5 F/(i Z cos α), f_i = 0.52, f_o = 0.53, E = 207 GPa, ν = 0.3, the exact
@@ -84,7 +84,7 @@ FC_TABLE = np.array([
     56.6, 57.5, 58.2, 58.8, 59.3, 59.6, 59.8, 59.9, 60.0, 59.9,
     59.8, 59.6, 59.3, 59.0, 58.6, 58.2, 57.7, 57.1, 56.6, 56.0,
     55.3, 54.6, 53.9, 53.2, 52.4, 51.7, 50.9, 50.0, 49.2, 48.4])
-#: D cos α / d_m nodes of the double-row radial-contact column (seed 001 Table 2) [-].
+#: D cos α / d_m nodes of the double-row radial-contact column (ANSI/AFBMA Std 9-1990 Table 2) [-].
 FC_TABLE_DOUBLE_ROW_RADIAL_GAMMA = np.array([
     0.05, 0.06, 0.07, 0.08, 0.09, 0.10, 0.12, 0.14, 0.16, 0.18, 0.20,
     0.22, 0.24, 0.26, 0.28, 0.30, 0.32, 0.34, 0.36, 0.38, 0.40])
@@ -195,7 +195,7 @@ def fc_factor(gamma, *, double_row_radial: bool = False):
 
     References
     ----------
-    ISO 281:2007 Table 2; ANSI/AFBMA Std 9-1990 Table 2 (seed 001).  "Values for
+    ISO 281:2007 Table 2; ANSI/AFBMA Std 9-1990 Table 2.  "Values for
     intermediate D cos α / d_m are obtained by linear interpolation."
 
     Examples
@@ -296,12 +296,12 @@ def dynamic_rating(bearing_or_D, n_balls=None, pitch_diameter=None, contact_angl
 
     References
     ----------
-    ISO 281:2007 §6.1.1 eqs. (2)–(3), Table 2; ANSI/AFBMA Std 9-1990 §5 (seed 001);
+    ISO 281:2007 §6.1.1 eqs. (2)–(3), Table 2; ANSI/AFBMA Std 9-1990 §5;
     Harris (2001) *Rolling Bearing Analysis* §18.
 
     Examples
     --------
-    Seed 001 (ANSI/AFBMA Std 9 illustration): 10 balls of 1/16 in, races 0.330 / 0.452 in
+    ANSI/AFBMA Std 9-1990 illustration: 10 balls of 1/16 in, races 0.330 / 0.452 in
     (d_m = 0.391 in), radial, ABMA (no b_m): C = 143 lb.
 
     >>> C = dynamic_rating(0.0625 * INCH, 10, 0.391 * INCH, standard="ABMA 9-1990")
