@@ -21,7 +21,7 @@ def _run_json(path):
 
 
 def test_example_218_reproduces_ricci_2009():
-    """Ricci (2009, seed 003): 218 bearing, F_a = 17,800 N at e = 50.8 mm:
+    """Ricci (2009): 218 bearing, F_a = 17,800 N at e = 50.8 mm:
     Q_max = 9,445 N, beta 44.317 deg (psi = 0) to 16.169 deg (psi = 180 deg).  The case
     file states 4000 lbf = 17,793 N; a faithful implementation is expected
     within 1 % on load and 0.5 deg on angles."""

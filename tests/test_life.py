@@ -1,7 +1,7 @@
 """Rating life, equivalent load, Lundberg–Palmgren life and life factors.
 
-Published numbers: Tata (2012) seeds 000 and 002 (catalog life examples), ANSI/AFBMA
-Std 9 (seed 001, X/Y/e table), Hamrock & Dowson (1981) §3.5 (seed 004, hardness).
+Published numbers: Tata (2012), both booklets (catalog life examples), ANSI/AFBMA
+Std 9-1990 (X/Y/e table), Hamrock & Dowson (1981) §3.5 (hardness).
 """
 import numpy as np
 import pytest
@@ -10,7 +10,7 @@ from scipy.integrate import quad
 import ballrace
 from ballrace.analytic import life, ratings
 
-# Seed 002 (Tata 2012, "Principles and Use of Ball Bearings", Selection): capacity C [lb],
+# Tata (2012, "Principles and Use of Ball Bearings", Selection): capacity C [lb],
 # radial load R [lb] times thrust factor F, 2000 rpm, printed B10 hours.
 TATA_002 = [
     (570.0, 100.0 * 1.00, 246_674),   # radial bearing, R = 100, T = 0
@@ -23,7 +23,7 @@ TATA_002 = [
 
 
 @pytest.mark.parametrize("C, P, printed", TATA_002)
-def test_tata_seed002_lives(C, P, printed):
+def test_tata_2012_catalog_lives(C, P, printed):
     """Tata prints the exponent as 3.333 but his numbers are (C/P)^3.33: with 3.33 all six
     agree to within 1 h (he truncates or rounds the last digit), with 3.333 or 10/3 they
     are 0.05-0.6 % high.  Inputs are catalog capacities at 90e6 rev."""
@@ -33,8 +33,8 @@ def test_tata_seed002_lives(C, P, printed):
     assert L333 > printed + 5
 
 
-def test_tata_seed000_preload_5575_h():
-    """Seed 000: 4650 lb capacity, 3136 lb catalog equivalent radial load, 1000 rpm,
+def test_tata_2012_preload_5575_h():
+    """Tata (2012), Factors Influencing the Performance of Ball and Roller Bearings: 4650 lb capacity, 3136 lb catalog equivalent radial load, 1000 rpm,
     L10 = 3000 (4650/3136)^(10/3) (500/1000) = 5575 h.  With n = 10/3 the formula gives
     5576.3 h (0.02 % high); with Tata's 3.333 it gives 5575.6, printed truncated."""
     L = life.catalog_l10_hours(4650.0, 3136.0, speed_rpm=1000.0, exponent=10 / 3)
@@ -56,14 +56,14 @@ def test_catalog_form_is_l10_hours_at_90_million_revolutions():
 def test_l10_and_hours():
     assert life.l10(2.0, 1.0) == pytest.approx(8.0)
     assert life.l10(2.0, 1.0, exponent=10 / 3) == pytest.approx(2 ** (10 / 3))
-    # seed 001's bearing (C = 143 lb) at 50 lb and 200 rpm (the seed's number was lost)
+    # the ANSI/AFBMA Std 9 example bearing (C = 143 lb) at 50 lb and 200 rpm (no printed life)
     assert life.l10_hours(143.0, 50.0, speed_rpm=200.0) == pytest.approx(
         (143 / 50) ** 3 * 1e6 / 12000, rel=1e-12)
     np.testing.assert_allclose(life.l10(1000.0, np.array([100.0, 200.0])), [1000.0, 125.0])
 
 
 def test_miner_variable_duty():
-    """Seed 000: L10 = 1/(t1/L1 + t2/L2 + ...)."""
+    """Tata (2012), Factors Influencing the Performance of Ball and Roller Bearings: L10 = 1/(t1/L1 + t2/L2 + ...)."""
     assert life.miner([10000.0, 2000.0], [0.8, 0.2]) == pytest.approx(1 / (0.8e-4 + 1e-4))
     assert life.miner([5000.0, 5000.0, 5000.0], [0.2, 0.3, 0.5]) == pytest.approx(5000.0)
     assert life.miner([np.inf, 1000.0], [0.5, 0.5]) == pytest.approx(2000.0)
@@ -74,7 +74,7 @@ def test_miner_variable_duty():
 
 
 def test_rotating_load_factor():
-    """Seed 000: 1.25 for a load rotating with the inner ring / outer ring rotating, or an
+    """Tata (2012), Factors Influencing the Performance of Ball and Roller Bearings: 1.25 for a load rotating with the inner ring / outer ring rotating, or an
     oscillation over 45 deg; it costs 1.25^3 = 1.95 in life for a ball bearing."""
     assert life.load_factor("outer ring") == 1.0
     assert life.load_factor("inner ring") == 1.25
@@ -86,7 +86,7 @@ def test_rotating_load_factor():
 
 # --------------------------------------------------------------------------- X, Y, e
 def test_xy_table_values_radial():
-    """ISO 281:2007 Table 3, deep groove, at the nodes (seed 001 Table 4 with 1.55)."""
+    """ISO 281:2007 Table 3, deep groove, at the nodes (ANSI/AFBMA Std 9-1990 Table 4 with 1.55)."""
     nodes = [0.172, 0.345, 0.689, 1.03, 1.38, 2.07, 3.45, 5.17, 6.89]
     Y = [2.30, 1.99, 1.71, 1.55, 1.45, 1.31, 1.15, 1.04, 1.00]
     e = [0.19, 0.22, 0.26, 0.28, 0.30, 0.34, 0.38, 0.42, 0.44]
@@ -111,7 +111,7 @@ def test_xy_abma_and_iso_abscissae_agree():
 
 def test_xy_double_row_is_1625_times_single_row():
     """Structure of the angular-contact rows: X2, Y2 (Fa/Fr > e) = 1.625 x X1, Y1 (within
-    the table's rounding).  This is what identifies the seed's 2.20 (10 deg) and 0.98
+    the table's rounding).  This is what identifies the reprint's 2.20 (10 deg) and 0.98
     (40 deg) as transcription errors for 2.29 and 0.93."""
     for deg in (10, 15, 20, 25, 30, 35, 40):
         a = np.radians(deg)
@@ -250,7 +250,7 @@ def test_lp_uniform_thrust_single_ring_formula():
 
 # --------------------------------------------------------------------------- life factors
 def test_hardness_factor_two_points_cost_32_percent():
-    """Seed 004 §3.5.4: "a two-point drop in hardness to 56 Rc will cause a 32 percent
+    """Hamrock & Dowson (1981) §3.5.4: "a two-point drop in hardness to 56 Rc will cause a 32 percent
     drop in bearing fatigue life".  G = (Rc/58)^10.8 gives 31.5 %."""
     drop = 1.0 - life.hardness_factor(56.0)
     assert drop == pytest.approx(0.32, abs=0.006)
@@ -258,9 +258,9 @@ def test_hardness_factor_two_points_cost_32_percent():
     assert life.hardness_factor(62.0) == 1.0
 
 
-def test_lubrication_factor_anchors_from_seed_text():
-    """Seed 004 §3.5.2: F < 1 below Lambda ~ 1.2, life appreciably extended between 1.2
-    and 3, no further improvement above 3.  (The figure's values were lost in the scan.)"""
+def test_lubrication_factor_anchors_from_the_text():
+    """Hamrock & Dowson (1981) §3.5.2: F < 1 below Lambda ~ 1.2, life appreciably extended between 1.2
+    and 3, no further improvement above 3.  (The figure's values are not checked.)"""
     lam = np.array([0.7, 1.0, 1.19])
     assert np.all(life.lubrication_factor(lam) < 1.0)
     assert life.lubrication_factor(1.2) == pytest.approx(1.0)
@@ -270,7 +270,7 @@ def test_lubrication_factor_anchors_from_seed_text():
 
 
 def test_adjusted_life_and_material_processing():
-    """L_a = D E F G L (H&D eq. 3.124); CVM processing factor 3 (seed 004 §3.5.4)."""
+    """L_a = D E F G L (H&D eq. 3.124); CVM processing factor 3 (H&D 1981 §3.5.4)."""
     assert life.processing_factor("CVM") == 3.0
     La = life.adjusted_life(1000.0, material=life.material_factor("52100"),
                             processing=life.processing_factor("CVM"),

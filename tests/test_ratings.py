@@ -6,25 +6,25 @@ import ballrace
 from ballrace.analytic import ratings
 from ballrace.analytic.ratings import INCH, LBF
 
-# ANSI/AFBMA Std 9 Table 2 (seed 001), metric f_c: single-row radial / angular contact,
-# and the double-row radial column.  Transcribed from the seed.
-SEED_FC_NODES = [0.05, 0.06, 0.07, 0.08, 0.09, 0.10, 0.12, 0.14, 0.16, 0.18, 0.20, 0.22,
+# ANSI/AFBMA Std 9-1990 Table 2, metric f_c: single-row radial / angular contact,
+# and the double-row radial column.  Transcribed from the printed table.
+STD9_FC_NODES = [0.05, 0.06, 0.07, 0.08, 0.09, 0.10, 0.12, 0.14, 0.16, 0.18, 0.20, 0.22,
                  0.24, 0.26, 0.28, 0.30, 0.32, 0.34, 0.36, 0.38, 0.40]
-SEED_FC_SINGLE = [46.7, 49.1, 51.1, 52.8, 54.3, 55.5, 57.5, 58.8, 59.6, 59.9, 59.9, 59.6,
+STD9_FC_SINGLE = [46.7, 49.1, 51.1, 52.8, 54.3, 55.5, 57.5, 58.8, 59.6, 59.9, 59.9, 59.6,
                   59.0, 58.2, 57.1, 56.0, 54.6, 53.2, 51.7, 50.0, 48.4]
-SEED_FC_DOUBLE_RADIAL = [44.2, 46.5, 48.4, 50.0, 51.4, 52.6, 54.5, 55.7, 56.5, 56.8, 56.8,
+STD9_FC_DOUBLE_RADIAL = [44.2, 46.5, 48.4, 50.0, 51.4, 52.6, 54.5, 55.7, 56.5, 56.8, 56.8,
                          56.5, 55.9, 55.1, 54.1, 53.0, 51.8, 50.4, 48.9, 47.4, 45.8]
 
 
-def test_fc_table_matches_seed_at_every_seed_node():
-    np.testing.assert_array_equal(ratings.fc_factor(np.array(SEED_FC_NODES)), SEED_FC_SINGLE)
+def test_fc_table_matches_std9_at_every_node():
+    np.testing.assert_array_equal(ratings.fc_factor(np.array(STD9_FC_NODES)), STD9_FC_SINGLE)
     np.testing.assert_array_equal(
-        ratings.fc_factor(np.array(SEED_FC_NODES), double_row_radial=True),
-        SEED_FC_DOUBLE_RADIAL)
+        ratings.fc_factor(np.array(STD9_FC_NODES), double_row_radial=True),
+        STD9_FC_DOUBLE_RADIAL)
 
 
-def test_seed001_example_143_lb():
-    """Seed 001 (ANSI/AFBMA Std 9 illustration): 10 balls of 1/16 in, races 0.330 and
+def test_std9_example_143_lb():
+    """ANSI/AFBMA Std 9-1990 illustration: 10 balls of 1/16 in, races 0.330 and
     0.452 in, single-row radial -> C = 143 lb (no b_m).  Pitch diameter = mean of the
     race diameters = 0.391 in; gamma = 0.160, f_c = 59.59.  The standard rounds to the
     pound, so the tolerance is 0.5 lb."""
