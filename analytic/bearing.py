@@ -39,6 +39,27 @@ log = logging.getLogger(__name__)
 RACES = ("inner", "outer")
 
 
+#: Groove conformity r/D above which a warning is given: real ball bearings have
+#: 0.505-0.57 (Harris 2001 §2.3; ISO 281:2007 §6.1.1 rates 0.515-0.53 inner/outer).
+CONFORMITY_WARN = 0.6
+
+
+def _conformity(value, name: str) -> float:
+    """A groove conformity r/D: in (0.5, 1), with a warning above CONFORMITY_WARN."""
+    f = float(check_range(value, name, 0.5, None, unit="-"))
+    if f >= 1.0:
+        raise ValueError(f"{name} must be a groove conformity r/D in (0.5, 1), typically "
+                         f"0.505-0.57 [-]; got {f:g}"
+                         + (f" (a percentage? {f:g} % is {f / 100:g})" if 50 < f < 100 else ""))
+    if f > CONFORMITY_WARN:
+        import warnings
+
+        warnings.warn(f"{name} = {f:g}: groove conformity r/D is usually 0.505-0.57; a groove "
+                      f"this open is a very unusual bearing - check the value", UserWarning,
+                      stacklevel=4)
+    return f
+
+
 def _positive_float(value, name: str, unit: str) -> float:
     arr = check_positive(value, name, unit, bounded=True)
     if arr.ndim:
@@ -128,7 +149,9 @@ class BallBearing:
     pitch_diameter : float
         Pitch diameter d_e = (d_i + d_o)/2 [m] (Ricci 2009 eq. 1), > D.
     f_inner, f_outer : float
-        Groove conformities r/D of the inner and outer race [-], > 0.5.
+        Groove conformities r/D of the inner and outer race [-], in (0.5, 1); typically
+        0.505–0.57.  A value of 1 or more is refused (52 for 0.52 is a percentage slip);
+        above 0.6 a warning names the likely slip.
     free_contact_angle : float, optional
         Free (unloaded) contact angle beta_f [rad], in [0, pi/2).
     diametral_clearance : float, optional
@@ -220,8 +243,8 @@ class BallBearing:
         if Z > z_max:
             raise ValueError(f"n_balls must be in [3, {z_max}] for D = {D:g} m on a pitch "
                              f"diameter of {dm:g} m (Z arcsin(D/d_e) <= pi); got {Z}")
-        fi = float(check_range(self.f_inner, "f_inner", 0.5, None, unit="-"))
-        fo = float(check_range(self.f_outer, "f_outer", 0.5, None, unit="-"))
+        fi = _conformity(self.f_inner, "f_inner")
+        fo = _conformity(self.f_outer, "f_outer")
         A = (fi + fo - 1.0) * D
         for m in ("material", "ball_material", "ring_material"):
             v = getattr(self, m)

@@ -622,3 +622,61 @@ def test_inside_the_magnitude_limits_contacts_are_finite(Q, Rx, ratio, Ep):
         v = float(getattr(c, f))
         assert math.isfinite(v), f
         assert v > 0 or (Q == 0 and f in ("a", "b", "approach", "p_max")), f
+
+
+# ------------------------------------------------ likely unit slips: percent, GPa, mm
+def test_conformity_typed_as_percent_is_refused_and_an_open_groove_warned():
+    import ballrace
+
+    with pytest.raises(ValueError, match=r"f_inner must be a groove conformity r/D in "
+                                         r"\(0.5, 1\).*got 52 \(a percentage\? 52 % is 0.52\)"):
+        ballrace.BallBearing(0.0127, 9, 0.065, 52, 0.52, diametral_clearance=0.0)
+    with pytest.raises(ValueError, match="f_outer must be a groove conformity"):
+        ballrace.BallBearing(0.0127, 9, 0.065, 0.52, 1.0, diametral_clearance=0.0)
+    with pytest.warns(UserWarning, match=r"f_inner = 0.7: groove conformity r/D is usually"):
+        ballrace.BallBearing(0.0127, 9, 0.065, 0.7, 0.52, diametral_clearance=0.0)
+
+
+def test_conformity_percent_in_a_case_file_is_one_line(tmp_path):
+    from pathlib import Path
+
+    from typer.testing import CliRunner
+
+    from ballrace.cli import app
+
+    base = (Path(__file__).resolve().parents[1] / "examples" / "bearing_209.toml").read_text()
+    assert "f_inner = 0.52" in base
+    p = tmp_path / "c.toml"
+    p.write_text(base.replace("f_inner = 0.52", "f_inner = 52"))
+    res = CliRunner().invoke(app, ["bearing", str(p)])
+    assert res.exit_code == 2 and "52 % is 0.52" in res.stderr
+    assert len(res.stderr.strip().splitlines()) == 1
+
+
+@pytest.mark.parametrize("E, slip", [(200.0, "were GPa given"), (200e3, "were MPa given"),
+                                     (2e14, "above any material")])
+def test_modulus_unit_slip_warns(E, slip):
+    import ballrace
+
+    with pytest.warns(UserWarning, match=slip):
+        ballrace.Material(E=E, nu=0.3)
+
+
+def test_steel_and_ceramics_do_not_warn():
+    import warnings
+
+    import ballrace
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        ballrace.Material(E=208e9, nu=0.3)
+        ballrace.Material(E=310e9, nu=0.26)
+        ballrace.Material(E=3.6e9, nu=0.38)                    # PEEK cage or ball
+
+
+def test_fem_ball_diameter_in_mm_warns():
+    pytest.importorskip("skfem")
+    from ballrace.fem import api
+
+    with pytest.warns(UserWarning, match=r"ball_diameter = 12.7 m .* were millimetres given"):
+        api.plane_case(12.7, 2000.0)

@@ -34,7 +34,8 @@ def test_tata_2012_catalog_lives(C, P, printed):
 
 
 def test_tata_2012_preload_5575_h():
-    """Tata (2012), Factors Influencing the Performance of Ball and Roller Bearings: 4650 lb capacity, 3136 lb catalog equivalent radial load, 1000 rpm,
+    """Tata (2012), Factors Influencing the Performance of Ball and Roller Bearings:
+    4650 lb capacity, 3136 lb catalog equivalent radial load, 1000 rpm,
     L10 = 3000 (4650/3136)^(10/3) (500/1000) = 5575 h.  With n = 10/3 the formula gives
     5576.3 h (0.02 % high); with Tata's 3.333 it gives 5575.6, printed truncated."""
     L = life.catalog_l10_hours(4650.0, 3136.0, speed_rpm=1000.0, exponent=10 / 3)

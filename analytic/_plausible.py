@@ -1,0 +1,50 @@
+"""Plausibility warnings for likely unit slips at the public entry points (SI inside).
+
+The library takes SI floats; a value that no rolling bearing has is most often a unit slip
+at the call (millimetres typed as metres, GPa as Pa, percent as a ratio, °C as K).  These
+helpers warn (``UserWarning``, pointing at the caller) naming the argument, what was given
+and the likely slip; out-of-range values that cannot be meant are refused by the callers
+with ``ValueError`` instead.
+"""
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+
+__all__ = ["modulus", "length"]
+
+#: Young's moduli outside this range [Pa] are not bearing materials (elastomers start near
+#: 1e6 Pa, polymers 1e9 Pa, steel 2e11 Pa, diamond 1.2e12 Pa).
+MODULUS_RANGE = (1e8, 2e12)
+
+
+def _warn(message: str, stacklevel: int) -> None:
+    warnings.warn(message, UserWarning, stacklevel=stacklevel + 1)
+
+
+def modulus(E, name: str = "E", stacklevel: int = 3) -> None:
+    """Warn when a Young's modulus [Pa] is outside :data:`MODULUS_RANGE`."""
+    e = np.asarray(E, float)
+    if e.size == 0 or not np.all(np.isfinite(e)):
+        return
+    lo, hi = float(np.min(e)), float(np.max(e))
+    if lo < MODULUS_RANGE[0]:
+        hint = (f" - were GPa given? ({lo:g} GPa is {lo * 1e9:.3g} Pa)" if lo < 1e4
+                else " - were MPa given?" if lo < 1e7 else "")
+        _warn(f"{name} = {lo:g} Pa is below any bearing material ({MODULUS_RANGE[0]:g} Pa); "
+              f"moduli are in pascals [Pa]{hint}", stacklevel)
+    elif hi > MODULUS_RANGE[1]:
+        _warn(f"{name} = {hi:g} Pa is above any material ({MODULUS_RANGE[1]:g} Pa); moduli "
+              "are in pascals [Pa]", stacklevel)
+
+
+def length(value, name: str, largest: float, what: str, stacklevel: int = 3) -> None:
+    """Warn when a length [m] exceeds ``largest`` (e.g. a ball diameter above 0.25 m)."""
+    v = np.abs(np.asarray(value, float))
+    v = v[np.isfinite(v)] if v.ndim else (v if np.isfinite(v) else np.array([]))
+    if np.size(v) and float(np.max(v)) > largest:
+        big = float(np.max(v))
+        _warn(f"{name} = {big:g} m is larger than any {what} (up to ~{largest:g} m); "
+              f"lengths are in metres [m] - were millimetres given? ({big:g} mm is "
+              f"{big * 1e-3:g} m)", stacklevel)
