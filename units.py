@@ -15,10 +15,16 @@ __all__ = ["parse_quantity", "check_form", "to_si", "ureg"]
 
 @functools.cache
 def ureg():
-    """The shared pint UnitRegistry (created on first use)."""
+    """The shared pint UnitRegistry (created on first use), with ``rev`` (a revolution,
+    so "3000 rev/min" reads as rpm) where pint lacks it."""
     import pint
 
-    return pint.UnitRegistry()
+    reg = pint.UnitRegistry()
+    try:
+        reg.Unit("rev")
+    except pint.errors.UndefinedUnitError:
+        reg.define("rev = revolution")
+    return reg
 
 
 #: SI unit each pint dimensionality is converted to.
@@ -27,8 +33,12 @@ _SI = {
     "[time]": "s", "[mass]": "kg", "[mass] / [length] ** 3": "kg/m^3",
     "1 / [time]": "1/s", "[force] * [length]": "N*m", "[angle]": "rad",
     "[force] / [length]": "N/m", "[temperature]": "K", "1 / [pressure]": "1/Pa",
-    "[length] / [time]": "m/s",
+    "[length] / [time]": "m/s", "[length] ** 2 / [time]": "m^2/s",
 }
+
+#: An example unit to name in messages, where the SI one is not what people write.
+_EXAMPLE = {"[length] ** 2 / [time]": "mm^2/s (cSt)", "[temperature]": "degC",
+            "[pressure]": "MPa", "[length]": "mm", "1 / [time]": "rpm"}
 
 
 def parse_quantity(text, dimension: str, name: str, *, allow_inf: bool = False) -> float:
@@ -103,8 +113,9 @@ def parse_quantity(text, dimension: str, name: str, *, allow_inf: bool = False) 
                              f"({q.dimensionality})")
         return _finite(float(q.to("radian").magnitude), s, name)
     if not q.check(dimension):
+        example = _EXAMPLE.get(dimension, _SI.get(dimension, ""))
         raise ValueError(f"{name}: expected a quantity of dimension {dimension} "
-                         f"(e.g. {_SI.get(dimension, '')}), got {s!r} ({q.dimensionality})")
+                         f"(e.g. {example}), got {s!r} ({q.dimensionality})")
     if dimension in _SI:
         return _finite(float(q.to(_SI[dimension]).magnitude), s, name)
     return _finite(float(q.to_base_units().magnitude), s, name)

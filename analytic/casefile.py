@@ -283,23 +283,51 @@ def _speed(text: str, where: str) -> float:
 
 
 def _temperature(text, where: str) -> float:
-    """Absolute temperature [K] from "70 degC", "343.15 K", "158 degF"."""
+    """Absolute temperature [K] from "70 degC", "343.15 K", "158 degF".
+
+    Refused, each in one line naming the key: a bare number (no unit), a temperature
+    *difference* unit ("75 delta_degC" would be 75 K), "C" or "F" (pint reads the coulomb
+    and the farad), and a temperature outside -100 °C ... 500 °C.
+    """
     from ballrace.units import ureg
 
-    s = str(text).strip()
+    from . import _plausible
+
+    example = 'write e.g. "70 degC" or "343.15 K"'
+    if isinstance(text, bool) or not isinstance(text, str):
+        raise CaseFileError(f"{where}: give the temperature with its unit as a string; got "
+                            f"{text!r} ({example})")
+    s = text.strip()
     parts = s.split(None, 1)
+    unit = parts[1].strip() if len(parts) > 1 else ""
+    if not unit:
+        raise CaseFileError(f"{where}: no unit in {s!r}; {example}")
+    if "delta" in unit.lower():
+        raise CaseFileError(f"{where}: {unit!r} is a temperature difference; an absolute "
+                            f"temperature is expected here ({example})")
+    if unit in ("C", "°", "F", "c", "f"):
+        letter = unit.upper()
+        raise CaseFileError(f"{where}: {unit!r} is not a temperature unit (to pint, 'C' is the "
+                            f"coulomb); write \"{parts[0]} deg{letter}\"")
     try:
         value = float(parts[0])
-        unit = parts[1] if len(parts) > 1 else ""
-        if not unit:
-            raise ValueError("no unit")
         T = float(ureg().Quantity(value, unit).to("K").magnitude)
-    except Exception as exc:  # pint raises several error types
-        raise CaseFileError(f"{where}: cannot read {s!r} as a temperature such as "
-                            f"\"70 degC\" or \"343.15 K\" ({exc})") from None
-    if not T > 0:
-        raise CaseFileError(f"{where}: must be above absolute zero; got {s!r}")
+    except Exception:  # pint raises several error types
+        raise CaseFileError(f"{where}: cannot read {s!r} as a temperature; {example}") from None
+    try:
+        _plausible.temperature(T, "temperature")
+    except ValueError:
+        lo, hi = _plausible.TEMPERATURE_RANGE
+        raise CaseFileError(f"{where}: {s!r} is {T - 273.15:.6g} °C, outside -100 °C ... "
+                            f"500 °C ({lo:g} ... {hi:g} K); {example}") from None
     return T
+
+
+def _positive(value: float, text, where: str) -> float:
+    """``value`` if > 0, else an error quoting what the file says (not the SI float)."""
+    if not value > 0:
+        raise CaseFileError(f"{where} must be > 0; got {text!r}")
+    return value
 
 
 def _iso_inputs(spec, brg, source, q):
@@ -328,17 +356,22 @@ def _iso_inputs(spec, brg, source, q):
         out["ep_additives"] = oil.ep_additives
         visc_dim = "[length] ** 2 / [time]"
         if oil.viscosity is not None:
-            if any(v is not None for v in (oil.nu40, oil.nu100, oil.temperature)):
-                raise CaseFileError(f"{source}: [oil]: give viscosity (at the operating "
-                                    "temperature) or nu40, nu100 and temperature, not both")
-            out["oil_viscosity"] = q(oil.viscosity, visc_dim, "[oil].viscosity")
+            given = [k for k in ("nu40", "nu100", "temperature") if getattr(oil, k) is not None]
+            if given:
+                raise CaseFileError(f"{source}: [oil]: viscosity (at the operating "
+                                    f"temperature) is given, so {' and '.join(given)} must not "
+                                    f"be: give viscosity, or nu40, nu100 and temperature")
+            out["oil_viscosity"] = _positive(q(oil.viscosity, visc_dim, "[oil].viscosity"),
+                                             oil.viscosity, f"{source}: [oil].viscosity")
         else:
             missing = [k for k in ("nu40", "nu100", "temperature") if getattr(oil, k) is None]
             if missing:
                 raise CaseFileError(f"{source}: [oil]: missing {', '.join(missing)} (or give "
                                     "viscosity at the operating temperature)")
-            d = dict(nu40=q(oil.nu40, visc_dim, "[oil].nu40"),
-                     nu100=q(oil.nu100, visc_dim, "[oil].nu100"),
+            d = dict(nu40=_positive(q(oil.nu40, visc_dim, "[oil].nu40"), oil.nu40,
+                                    f"{source}: [oil].nu40"),
+                     nu100=_positive(q(oil.nu100, visc_dim, "[oil].nu100"), oil.nu100,
+                                     f"{source}: [oil].nu100"),
                      temperature=_temperature(oil.temperature, f"{source}: [oil].temperature"))
             try:
                 out["oil_viscosity"] = float(iso281.operating_viscosity(**d))
@@ -397,8 +430,34 @@ def validate_spec(model, data: dict, source: str):
         for err in exc.errors():
             loc = [str(p) for p in err["loc"]]
             key = f"[{loc[0]}]." + ".".join(loc[1:]) if len(loc) > 1 else (loc[0] if loc else "")
-            lines.append(f"{source}: {key}: {err['msg']}")
+            msg = err["msg"]
+            x = err.get("input")
+            le = (err.get("ctx") or {}).get("le")
+            if (err.get("type") == "less_than_equal" and isinstance(x, (int, float))
+                    and le is not None and float(le) <= 1.0 < float(x) <= 100.0):
+                msg += (f"; a fraction, not a percentage: {float(x) / 100:g} for {x:g} %")
+            if err.get("type") == "string_type" and isinstance(err.get("input"),
+                                                               (int, float)):
+                # a bare number where a quantity string is expected: say how to write it
+                msg = (f"give the value with its unit as a string, e.g. "
+                       f"\"{err['input']} {_unit_example(loc[-1] if loc else '')}\"; got "
+                       f"{err['input']!r}")
+            lines.append(f"{source}: {key}: {msg}")
         raise CaseFileError("\n".join(lines)) from None
+
+
+#: Units to suggest for a bare number, by the key's name (first match wins).
+_UNIT_HINTS = (("temperature", "degC"), ("viscosity", "mm^2/s"), ("nu40", "mm^2/s"),
+               ("nu100", "mm^2/s"), ("speed", "rpm"), ("angle", "deg"), ("load", "N"),
+               ("radial", "N"), ("axial", "N"), ("interference", "um"), ("clearance", "um"),
+               ("roughness", "um"), ("expansion", "1/K"), ("E", "GPa"), ("", "mm"))
+
+
+def _unit_example(key: str) -> str:
+    for part, unit in _UNIT_HINTS:
+        if part in key or part == "":
+            return unit
+    return "mm"                                                      # pragma: no cover
 
 
 def quantity_reader(source: str):

@@ -55,6 +55,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from . import _plausible
 from ._checks import (as_array, check_choice, check_instance, check_nonnegative,
                       check_positive, check_range)
 
@@ -206,7 +207,8 @@ def operating_clearance(bearing, *, bore, outside_diameter, initial_clearance=No
     housing_diameter : float
         Outside diameter of the housing around the seat [m] (``math.inf``: large housing).
     inner_temperature, outer_temperature : float
-        Ring (and shaft / housing) temperatures [K].
+        Ring (and shaft / housing) absolute temperatures [K] (kelvin, not °C: 70 °C is
+        343.15 K), in [173.15, 773.15].
     ball_temperature : float, optional
         Ball temperature [K]; default the mean of the rings.
     reference_temperature : float
@@ -267,12 +269,15 @@ def operating_clearance(bearing, *, bore, outside_diameter, initial_clearance=No
     if not Do > Er:
         raise ValueError(f"outside_diameter must exceed the outer raceway diameter "
                          f"{Er * 1e3:.4g} mm; got {Do * 1e3:.4g} mm")
-    Ti, Te = (float(check_positive(t, n, "K", bounded=True)) for t, n in
-              ((inner_temperature, "inner_temperature"), (outer_temperature, "outer_temperature")))
-    T0 = float(check_positive(reference_temperature, "reference_temperature", "K",
-                              bounded=True))
-    Tb = 0.5 * (Ti + Te) if ball_temperature is None else float(
-        check_positive(ball_temperature, "ball_temperature", "K", bounded=True))
+    Ti, Te = (float(_plausible.temperature(check_positive(t, n, "K", bounded=True), n))
+              for t, n in ((inner_temperature, "inner_temperature"),
+                           (outer_temperature, "outer_temperature")))
+    T0 = float(_plausible.temperature(check_positive(
+        reference_temperature, "reference_temperature", "K", bounded=True),
+        "reference_temperature"))
+    Tb = 0.5 * (Ti + Te) if ball_temperature is None else float(_plausible.temperature(
+        check_positive(ball_temperature, "ball_temperature", "K", bounded=True),
+        "ball_temperature"))
     ar = float(as_array(ring_expansion, "ring_expansion"))
     ab = ar if ball_expansion is None else float(as_array(ball_expansion, "ball_expansion"))
     a_s = ar if shaft_expansion is None else float(as_array(shaft_expansion, "shaft_expansion"))

@@ -30,7 +30,7 @@ def test_oil_in_cst_and_mm2s_and_degC():
 
 @pytest.mark.parametrize("oil, msg", [
     ({"nu40": "68 cSt"}, "missing"),
-    ({"viscosity": "20 cSt", "nu40": "68 cSt"}, "not both"),
+    ({"viscosity": "20 cSt", "nu40": "68 cSt"}, "is given, so nu40 must not be"),
     ({"nu40": "68 cSt", "nu100": "8.7 cSt", "temperature": "70"}, "temperature"),
     ({"nu40": "8 cSt", "nu100": "68 cSt", "temperature": "70 degC"}, "nu100"),
     ({"viscosity": "20 Pa*s"}, "viscosity"),

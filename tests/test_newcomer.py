@@ -11,3 +11,76 @@ def test_public_namespace_is_the_documented_one():
     such as ``logging`` or ``annotations``."""
     public = {n for n in dir(ballrace) if not n.startswith("_")}
     assert public - SUBPACKAGES == set(ballrace.__all__) - {"__version__"}
+
+
+# ------------------------------------------------ case-file messages: key, what was read, example
+from pathlib import Path  # noqa: E402
+
+import pytest  # noqa: E402
+
+ISO = (Path(__file__).resolve().parents[1] / "examples" / "bearing_6305_iso.toml").read_text()
+
+
+def _run_case(tmp_path, old, new):
+    from typer.testing import CliRunner
+
+    from ballrace.cli import app
+
+    assert old in ISO, old
+    p = tmp_path / "c.toml"
+    p.write_text(ISO.replace(old, new, 1))
+    return CliRunner().invoke(app, ["bearing", str(p)])
+
+
+@pytest.mark.parametrize("old, new, says", [
+    ('nu40 = "68 cSt"', 'nu40 = "68 mm"', "(e.g. mm^2/s (cSt)), got '68 mm'"),
+    ('inner_temperature = "75 degC"', 'inner_temperature = "75 C"',
+     "'C' is not a temperature unit (to pint, 'C' is the coulomb); write \"75 degC\""),
+    ('inner_temperature = "75 degC"', "inner_temperature = 75",
+     'give the value with its unit as a string, e.g. "75 degC"; got 75'),
+    ('inner_temperature = "75 degC"', 'inner_temperature = "75 delta_degC"',
+     "'delta_degC' is a temperature difference; an absolute temperature is expected"),
+    ('inner_temperature = "75 degC"', 'inner_temperature = "75 K"',
+     "'75 K' is -198.15 °C, outside -100 °C ... 500 °C"),
+    ("reliability = 0.9", "reliability = 99", "a fraction, not a percentage: 0.99 for 99 %"),
+    ('nu40 = "68 cSt"', 'viscosity = "20 cSt"',
+     "viscosity (at the operating temperature) is given, so nu100 and temperature must not be"),
+    ('nu40 = "68 cSt"', 'nu40 = "-68 cSt"', "[oil].nu40 must be > 0; got '-68 cSt'"),
+])
+def test_case_file_message_names_key_value_and_example(tmp_path, old, new, says):
+    res = _run_case(tmp_path, old, new)
+    assert res.exit_code == 2, res.output
+    assert says in res.stderr and len(res.stderr.strip().splitlines()) == 1, res.stderr
+    assert "e-05" not in res.stderr and "Traceback" not in res.stderr
+
+
+def test_rev_per_min_is_a_speed(tmp_path):
+    """The docs list rev/min beside rpm; pint alone does not know 'rev'."""
+    from ballrace.units import ureg
+
+    assert ureg().Quantity("3000 rev/min").to("rad/s").magnitude == pytest.approx(100 * 3.141592653589793)
+    res = _run_case(tmp_path, 'speed = "3000 rpm"', 'speed = "3000 rev/min"')
+    assert res.exit_code == 0, res.stderr
+
+
+@pytest.mark.parametrize("call, says", [
+    (lambda: __import__("ballrace.analytic.iso281", fromlist=["x"]).operating_viscosity(
+        68, 8.7, 343.15), "were mm^2/s (cSt) given? (68 mm^2/s is 6.8e-05 m^2/s)"),
+    (lambda: __import__("ballrace.analytic.iso281", fromlist=["x"]).operating_viscosity(
+        68e-6, 8.7e-6, 70), "were degrees Celsius given? (70 °C is 343.15 K)"),
+])
+def test_temperature_and_viscosity_slips_in_the_api(call, says):
+    with pytest.raises(ValueError) as exc:
+        call()
+    assert says in str(exc.value)
+
+
+def test_operating_clearance_at_75_kelvin_is_refused():
+    import ballrace
+    from ballrace.analytic import clearance
+
+    brg = ballrace.BallBearing(11.5e-3, 7, 43.5e-3, 0.52, 0.53, diametral_clearance=10e-6)
+    with pytest.raises(ValueError, match=r"inner_temperature must be an absolute temperature "
+                                         r"in kelvin .* got 75; were degrees Celsius given"):
+        clearance.operating_clearance(brg, bore=25e-3, outside_diameter=62e-3,
+                                      shaft_interference=12e-6, inner_temperature=75.0)
