@@ -133,7 +133,12 @@ def analyze(case) -> dict:
         notes.append("outer ring rotating under a fixed load: the ISO life has no rotation "
                      "factor; Tata (2012) multiplies P by 1.25 (life.load_factor), the "
                      "Lundberg-Palmgren life accounts for it through the ring equivalent loads")
-    if not math.isclose(a_nom, brg.free_contact_angle, rel_tol=0.0, abs_tol=1e-12):
+    preloaded = case.clearance is not None and case.clearance.operating < 0
+    if preloaded:
+        notes.append(f"ratings (C, C0, C_u, X/Y, ISO/TS 16281 Q_c) at the nominal contact "
+                     f"angle {math.degrees(a_nom):.2f} deg (ISO 281:2007); the load "
+                     "distribution uses the operating clearance (a preload)")
+    elif not math.isclose(a_nom, brg.free_contact_angle, rel_tol=0.0, abs_tol=1e-12):
         notes.append(f"ratings (C, C0, C_u, X/Y, ISO/TS 16281 Q_c) at the nominal contact "
                      f"angle {math.degrees(a_nom):.2f} deg (ISO 281:2007); the free contact "
                      f"angle {math.degrees(brg.free_contact_angle):.2f} deg is used by the "
@@ -143,6 +148,15 @@ def analyze(case) -> dict:
     from ballrace.analytic import isocase
 
     iso = isocase.iso_life(case, res, P=out_life.get("P"))
+    oc = case.clearance
+    if oc is not None and "P" in out_life:
+        # every number of the report from one operating state: say which do not see it
+        notes.append(f"* operating clearance {oc.operating * 1e6:.3g} um (fits, temperatures)"
+                     " is used by the load distribution, the Lundberg-Palmgren and the "
+                     "ISO/TS 16281 lives (L10r, L10mr); the catalogue lives L10 and L_nm come "
+                     "from P = X Fr + Y Fa, which does not see the clearance"
+                     + (" - for this preloaded bearing they are not its life"
+                        if oc.operating < 0 else ""))
 
     return {
         "title": case.title,
@@ -152,6 +166,8 @@ def analyze(case) -> dict:
                     "f_inner": brg.f_inner, "f_outer": brg.f_outer,
                     "diametral_clearance": brg.diametral_clearance,
                     "free_contact_angle": brg.free_contact_angle, "E_prime": brg.E_prime,
+                    "unmounted_clearance": None if oc is None else oc.initial,
+                    "operating_clearance": None if oc is None else oc.operating,
                     "nominal_contact_angle": a_nom, "speed": case.speed,
                     "speed_rpm": case.speed_rpm, "rotating_ring": case.rotating_ring,
                     "radial_load": Fr, "axial_load": Fa, "eccentricity": case.eccentricity},
@@ -189,8 +205,7 @@ def sections(r: dict) -> list:
         ("type", b["kind"], None), ("ball diameter D", b["ball_diameter"], "length"),
         ("balls Z", b["n_balls"], None), ("pitch diameter d_m", b["pitch_diameter"], "length"),
         ("conformity f_i", b["f_inner"], None), ("conformity f_o", b["f_outer"], None),
-        ("diametral clearance P_d", b["diametral_clearance"], "small"),
-        ("free contact angle", b["free_contact_angle"], "angle"),
+        *_clearance_rows(b),
         ("nominal contact angle (ratings)", b["nominal_contact_angle"], "angle"),
         ("E'", b["E_prime"], "modulus"),
         ("radial load Fr", b["radial_load"], "force"), ("axial load Fa", b["axial_load"], "force"),
@@ -200,11 +215,12 @@ def sections(r: dict) -> list:
         (f"C ({rt['standard']})", rt["C"], "force"), ("C0 (ISO 76)", rt["C0"], "force"),
     ])]
     rows = []
+    cat = " *" if b.get("operating_clearance") is not None else ""   # clearance not seen
     if "P" in lf:
         rows += [("equivalent load P = X Fr + Y Fa", lf["P"], "force"),
                  ("X / Y / e", f"{lf['X']:.3g} / {lf['Y']:.3g} / {lf['e']:.3g}", None),
-                 (f"L10 ({lf['standard']})", lf["L10"], "=1e6 rev"),
-                 (f"L10h ({lf['standard']})", lf["L10h"], "=h")]
+                 (f"L10 ({lf['standard']}){cat}", lf["L10"], "=1e6 rev"),
+                 (f"L10h ({lf['standard']}){cat}", lf["L10h"], "=h")]
     rows += [("static equivalent load P0", lf["P0"], "force"),
              ("static safety s0 = C0/P0", lf["s0"], None),
              ("LP inner-ring life", lf["LP_inner"], "=1e6 rev"),
@@ -227,8 +243,23 @@ def sections(r: dict) -> list:
     if r.get("iso"):                      # ISO 281 / ISO/TS 16281 block
         from ballrace.analytic import isocase
 
-        out.append((isocase.TITLE, isocase.rows(r["iso"])))
+        out.append((isocase.TITLE, isocase.rows(r["iso"], catalogue_mark=cat)))
     return out
+
+
+def _clearance_rows(b: dict) -> list:
+    """Clearance and free contact angle as the load distribution used them."""
+    op = b.get("operating_clearance")
+    if op is None:
+        return [("diametral clearance P_d", b["diametral_clearance"], "small"),
+                ("free contact angle", b["free_contact_angle"], "angle")]
+    rows = [("diametral clearance, unmounted", b["unmounted_clearance"], "small"),
+            ("diametral clearance, operating" + (" (preload)" if op < 0 else ""), op, "small")]
+    if op < 0:
+        rows.append(("free contact angle (unmounted)", b["free_contact_angle"], "angle"))
+    else:
+        rows.append(("free contact angle (operating)", b["free_contact_angle"], "angle"))
+    return rows
 
 
 def ball_columns(r: dict, units: str = "eng") -> tuple[list, list]:

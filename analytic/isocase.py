@@ -113,11 +113,13 @@ def iso_life(case, result, P=None) -> dict:
     return out
 
 
-def rows(iso: dict) -> list[tuple[str, object, object]]:
+def rows(iso: dict, catalogue_mark: str = "") -> list[tuple[str, object, object]]:
     """``(quantity, SI value, kind)`` rows of :func:`iso_life` for the ``bearing`` tables.
 
     ``kind`` follows :func:`ballrace.console.print_sections`: a unit kind converted to the
     display system (``"force"``, ``"small"``), ``None`` for a number, ``"=unit"`` printed as is.
+    ``catalogue_mark`` is appended to the lives from the catalogue load P (`` *``: they do
+    not see the operating clearance, said in the notes).
 
     Examples
     --------
@@ -142,8 +144,8 @@ def rows(iso: dict) -> list[tuple[str, object, object]]:
     r.append((f"reliability {iso['reliability'] * 100:g} %: a1", iso["a1"], None))
     if "a_ISO" in iso:
         r += [("a_ISO (e_C C_u / P)", iso["a_ISO"], None),
-              ("modified rating life L_nm", iso["L_nm"], "=1e6 rev"),
-              ("modified rating life L_nmh", iso["L_nm_h"], "=h")]
+              (f"modified rating life L_nm{catalogue_mark}", iso["L_nm"], "=1e6 rev"),
+              (f"modified rating life L_nmh{catalogue_mark}", iso["L_nm_h"], "=h")]
     r += [("reference rating life L10r (ISO/TS 16281)", iso["L10r"], "=1e6 rev"),
           ("reference rating life L10rh", iso["L10r_h"], "=h"),
           ("equivalent reference load P_ref", iso["P_ref"], "force")]

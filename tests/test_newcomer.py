@@ -84,3 +84,28 @@ def test_operating_clearance_at_75_kelvin_is_refused():
                                          r"in kelvin .* got 75; were degrees Celsius given"):
         clearance.operating_clearance(brg, bore=25e-3, outside_diameter=62e-3,
                                       shaft_interference=12e-6, inner_temperature=75.0)
+
+
+def test_one_operating_state_in_the_bearing_report(tmp_path):
+    """A 120 um shaft interference preloads the 6305: the geometry shows the operating
+    clearance the load distribution used, and the catalogue lives (which cannot see it)
+    are marked and explained."""
+    from ballrace.analytic.casefile import load_case
+    from ballrace.analytic.cli import analyze, sections
+
+    p = tmp_path / "c.toml"
+    p.write_text(ISO.replace('shaft_interference = "12 um"', 'shaft_interference = "120 um"'))
+    r = analyze(load_case(p))
+    op = r["iso"]["clearance"]["operating"]
+    assert op < 0 and r["bearing"]["operating_clearance"] == op
+    # the distribution ran at that clearance: every ball loaded under the radial load
+    assert min(r["distribution"]["ball_load"]) > 0
+    geo = dict((n, v) for n, v, _ in sections(r)[0][1])
+    assert geo["diametral clearance, operating (preload)"] == op
+    assert geo["diametral clearance, unmounted"] == r["iso"]["clearance"]["initial"]
+    life = [n for n, _, _ in sections(r)[1][1]] + [n for n, _, _ in sections(r)[-1][1]]
+    assert "L10h (ISO 281:2007) *" in life and "modified rating life L_nmh *" in life
+    note = [n for n in r["notes"] if n.startswith("* operating clearance")]
+    assert len(note) == 1 and "not its life" in note[0]
+    assert not any("is used by the load distribution" in n and "free contact" in n
+                   for n in r["notes"])
