@@ -46,6 +46,7 @@ extensions = [
     "sphinx_gallery.gen_gallery",
     "matplotlib.sphinxext.plot_directive",
     "casepages",
+    "clipage",                  # the command-line reference, from the CLI's own --help
 ]
 casepages_dir = str(ROOT / "validation" / "cases")
 

@@ -109,3 +109,23 @@ def test_one_operating_state_in_the_bearing_report(tmp_path):
     assert len(note) == 1 and "not its life" in note[0]
     assert not any("is used by the load distribution" in n and "free contact" in n
                    for n in r["notes"])
+
+
+def test_cli_reference_page_is_generated_from_every_command():
+    """docs/_ext/clipage.py writes each command's own --help: nothing to drift."""
+    import importlib.util
+
+    import typer
+
+    from ballrace.cli import app
+
+    path = Path(__file__).resolve().parents[1] / "docs" / "_ext" / "clipage.py"
+    spec = importlib.util.spec_from_file_location("clipage", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    text = mod.page()
+    commands = [" ".join(p) for p, _ in mod._commands(typer.main.get_command(app))]
+    assert {"contact", "bearing", "fem", "validate", "teach", "teach subsurface"} <= set(commands)
+    for c in commands:
+        assert f"``ballrace {c}``" in text and f"Usage: ballrace {c}" in text
+    assert "--units UNITS" in text and "take precedence over the file" in text
