@@ -97,3 +97,22 @@ def test_every_example_is_valid_toml_and_named_on_the_page():
     for cmd in ("ballrace bearing", "ballrace fem", "ballrace validate"):
         assert cmd in page
     assert "take precedence" in " ".join(page.split())
+
+
+def test_bearing_example_documents_every_accepted_key():
+    """Every key the strict bearing schema accepts appears on the page (so none is
+    accepted but undocumented), and ep_additives is shown under [oil], where it is read."""
+    import re
+
+    from ballrace.analytic.casefile import _models
+
+    page = PAGE.read_text()
+    example = _examples()["bearing"]
+    spec = _models()
+    for table, field in spec.model_fields.items():
+        sub = field.annotation
+        sub = getattr(sub, "__args__", (sub,))[0]
+        for key in getattr(sub, "model_fields", {}):
+            assert f"`{key}`" in page or re.search(rf"^{key} =", example, re.M), (table, key)
+    oil = example.split("[oil]")[1].split("\n[")[0]
+    assert "ep_additives" in oil and "ep_additives" not in example.split("[life]")[1].split("\n[")[0]
