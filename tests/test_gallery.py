@@ -14,6 +14,7 @@ import os
 import runpy
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 GALLERY = Path(__file__).resolve().parents[1] / "gallery"
@@ -210,3 +211,21 @@ def test_fe_check():
         assert abs(err) <= tol, (q, err, tol)
     assert k["passed"] is True
 
+
+
+def test_iso_life_and_operating_clearance():
+    k = run(checks("plot_15_iso_life_and_operating_clearance.py"))
+    # Lamé with a solid shaft of the ring's steel and no temperature change reduces to
+    # the textbook rule: the inner raceway grows by I d/F (Harris 2001 §4.3), exactly.
+    assert k["fit_check"] < 1e-15
+    np.testing.assert_allclose(k["operating"], k["initial"] - k["interference"] * k["d_over_F"],
+                               rtol=0, atol=1e-15)
+    # C of the 6305 at 0 deg: ISO 281:2007 eq. (2) with f_c from Table 2 by hand, 22,381 N
+    # (re-derived in tests/test_iso16281.py); 0.1 N.
+    assert k["C"] == pytest.approx(22381.5, abs=0.5)
+    # the clearance-life curve (Oswald, Zaretsky & Poplawski 2012, NASA/TM-2012-217115):
+    # the longest life at a slight preload,
+    # shorter with clearance (fewer balls loaded) and falling fast with more preload
+    j = int(np.argmax(k["L10r"]))
+    assert -20e-6 < k["operating"][j] < 0
+    assert np.all(np.diff(k["L10r"][:j + 1]) > 0) and np.all(np.diff(k["L10r"][j:]) < 0)
