@@ -163,6 +163,7 @@ _DEPTH_MAX = 3.0           # depth searches on (0, 3 b]
 _FAR = 1e30                # field: |x|, |y|, z up to 1e30 b (powers stay finite)
 _NEAR = 1e-60              # field: depths below 1e-60 b are the surface
 _N_GRID = 13               # coarse grid for the depth searches
+_MU_MAX = 10.0             # |traction| allowed (q/p)
 
 
 # ------------------------------------------------------------------------- results
@@ -813,15 +814,117 @@ def _field_kernel(ax, ay, x, y, z, nu):
     return out
 
 
-def stress(c: HertzContact, x, y, z, nu=0.3) -> StressState:
+def _t_integrals(A, B, x2, y2, lam, q0):
+    """(L, L_y, N, N_y, P, P_xy) of the traction field by the trapezoidal rule in ln(w - lambda).
+
+    With a = A + w, c = B + w, D = (a c w)^(1/2), s = (w q)^(1/2), r = d(s^2)/dw
+    = q + w (x^2/a^2 + y^2/c^2) (a sum of non-negative terms), F = w^2/(a^3 D),
+    F_xy = w^2/(a^2 c D):
+    L = int dw/(a^2 sqrt(g)), L_y = int dw/(a c sqrt(g)) (g = a c q), N = int w dw/(a^2 D),
+    N_y = int w dw/(a c D), P = int (F/r)' dw/s, P_xy = int (F_xy/r)' dw/s.
+    """
+    n_pts = A.size
+    out = np.zeros((6, n_pts))
+    if n_pts == 0:
+        return out
+    LA, LB = A + lam, B + lam
+    lo = np.log(np.minimum(LA, LB)) - _S_BELOW
+    hi = np.log(np.maximum(LA, LB)) + _S_ABOVE
+    n = int(np.ceil(np.max(hi - lo) / _H_STEP))
+    h = (hi - lo) / n
+    j = np.arange(n) + 0.5
+    chunk = max(1, _CHUNK // n)
+    for s in range(0, n_pts, chunk):
+        sl = slice(s, s + chunk)
+        d = np.exp(lo[sl, None] + h[sl, None] * j)
+        la, lb = LA[sl, None], LB[sl, None]
+        xa, yb = x2[sl, None], y2[sl, None]
+        Aw, Bw = la + d, lb + d
+        w = lam[sl, None] + d
+        iA, iB = 1.0 / Aw, 1.0 / Bw
+        q = q0[sl, None] + d * (xa / la * iA + yb / lb * iB)
+        ga = xa * iA * iA
+        gb = yb * iB * iB
+        r = q + w * (ga + gb)
+        dr = 2.0 * (A[sl, None] * ga * iA + B[sl, None] * gb * iB)          # r'
+        isg = d / np.sqrt(Aw * Bw * q)                 # d / sqrt(g): dw = d ds
+        wD = d * np.sqrt(w * iA * iB)                  # d w / D
+        out[0, sl] = np.sum(iA * iA * isg, axis=1)
+        out[1, sl] = np.sum(iA * iB * isg, axis=1)
+        out[2, sl] = np.sum(iA * iA * wD, axis=1)
+        out[3, sl] = np.sum(iA * iB * wD, axis=1)
+        # F/(r s) = w^2/(a^3 D r s) = w isg/(a^3 r d) * d: (w/D)(1/s) = 1/sqrt(g)
+        common = w * isg / r                         # d w/(r sqrt(g)) = d w^2/(D s r)
+        lw = 1.5 / w - dr / r
+        out[4, sl] = np.sum(common * iA**3 * (lw - 3.5 * iA - 0.5 * iB), axis=1)
+        out[5, sl] = np.sum(common * iA * iA * iB * (lw - 2.5 * iA - 1.5 * iB), axis=1)
+    return out * h
+
+
+def _traction_kernel(ax, ay, x, y, z, nu):
+    """Six stress components / (mu p0) of the traction q = mu p in +x (module docs).
+
+    1-D arrays of one length; lengths in units of b.  From Love's potentials for a
+    tangential surface traction (Johnson 1985 §3.2 eqs. 3.6-3.10) with
+    Phi = iint p Omega dA (Omega = z ln(rho + z) - rho), H = Phi_z, V = H_z:
+    sxx = f[2(1+nu) V_x + 2 nu Phi_xxx - z H_xxx], syy = f[-2 nu Phi_xxx + z V_xz + z H_xxx],
+    szz = -f z V_xz, sxy = f[V_y + 2 nu Phi_xxy - z H_xxy], sxz = f[V_z - z V_xx],
+    syz = -f z V_xy, with f = 1/(2 pi) and the potentials per unit p0.
+    """
+    A, B = ax * ax, ay * ay
+    x2, y2, z2 = x * x, y * y, z * z
+    lam = _solve_lambda(A, B, x2, y2, z2)
+    LA, LB = A + lam, B + lam
+    pos = lam > 0
+    q_surf = np.sqrt(np.clip(1.0 - x2 / A - y2 / B, 0.0, None))
+    lp = np.where(pos, lam, 1.0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        q0 = np.where(pos, z2 / lp, q_surf**2)
+    Ix = (2.0 / 3.0) * special.elliprd(LB, lam, LA)
+    Iy = (2.0 / 3.0) * special.elliprd(LA, lam, LB)
+    f = 0.5 * ax * ay                              # C/(2 pi), C = pi ax ay
+    L, Ly, N, Ny, P, Pxy = _t_integrals(A, B, x2, y2, lam, q0)
+    Dl = np.sqrt(LA) * np.sqrt(LB) * np.sqrt(lp)
+    E = (x * lp / LA) ** 2 + (y * lp / LB) ** 2 + z2
+    rl = np.where(pos, E / lp, q_surf**2)          # r(lambda) = d(w q)/dw at lambda
+    rs = np.where(rl > 0, rl, 1.0)
+    # lambda G(lambda) / r(lambda), G = 1/((A+w) D); zero on the loaded surface
+    lGr = np.where(pos, np.sqrt(lp) / (LA * np.sqrt(LA) * np.sqrt(LB) * rs), 0.0)
+    zIz = np.where(pos, 2.0 * z / Dl - z * (Ix + Iy), 2.0 * q_surf / (ax * ay))
+    Vx, Vy, Vz = -x * Ix, -y * Iy, -zIz
+    Vxx = -(Ix - 2.0 * x2 * lGr / LA)
+    Vxy = 2.0 * x * y * lGr / LB
+    Vxz = np.where(pos, 2.0 * x * z * lGr / lp, 0.0)          # 2 x z G(lambda)/r
+    Fr = lGr * lp / (LA * LA)                      # F(lambda)/r(lambda), F = w^2 G/(A+w)^2
+    Fxyr = lGr * lp / (LA * LB)
+    M, My = N - z * L, Ny - z * Ly
+    Pxxx = x * (3.0 * M - 2.0 * x2 * (Fr + z * P))
+    Pxxy = y * (My - 2.0 * x2 * (Fxyr + z * Pxy))
+    Hxxx = -x * (3.0 * L + 2.0 * x2 * P)
+    Hxxy = -y * (Ly + 2.0 * x2 * Pxy)
+    sx = f * (2.0 * (1.0 + nu) * Vx + 2.0 * nu * Pxxx - z * Hxxx)
+    sy = f * (-2.0 * nu * Pxxx + z * Vxz + z * Hxxx)
+    sz = -f * z * Vxz
+    txy = f * (Vy + 2.0 * nu * Pxxy - z * Hxxy)
+    txz = f * (Vz - z * Vxx)
+    tyz = -f * z * Vxy
+    out = np.stack([sx, sy, sz, txy, txz, tyz])
+    if not np.all(np.isfinite(out)):  # pragma: no cover - a bug, never silently NaN
+        raise RuntimeError("traction stress kernel produced non-finite values")
+    return out
+
+
+def stress(c: HertzContact, x, y, z, nu=0.3, traction=0.0) -> StressState:
     r"""Full stress tensor at points (x, y, z) below an elliptical Hertz contact.
 
     Exact linear-elastic half-space solution for the Hertz pressure
-    :math:`p = p_{max}(1 - x^2/a_x^2 - y^2/a_y^2)^{1/2}` (no friction), from Love's
-    potentials (module docs): the V-derivatives are Carlson R_D integrals, the
-    H-derivatives 1-D integrals summed by an exponentially convergent trapezoidal
-    rule.  Valid everywhere in z >= 0, including the surface inside and outside the
-    contact, the axis, the circle (k = 1) and slender ellipses (k up to ~1e4).
+    :math:`p = p_{max}(1 - x^2/a_x^2 - y^2/a_y^2)^{1/2}` and, with ``traction`` mu != 0,
+    the tangential traction q = mu p along +x (full sliding, or a traction coefficient
+    in rolling), from Love's potentials (module docs): the V-derivatives are Carlson
+    R_D integrals, the H- and Φ-derivatives 1-D integrals summed by an exponentially
+    convergent trapezoidal rule.  Valid everywhere in z >= 0, including the surface
+    inside and outside the contact, the axis, the circle (k = 1) and slender ellipses
+    (k up to ~1e4).
 
     Parameters
     ----------
@@ -835,12 +938,21 @@ def stress(c: HertzContact, x, y, z, nu=0.3) -> StressState:
     nu : float or array_like, optional
         Poisson's ratio of the body [-], in (-1, 0.5]; default 0.3.  Only sxx, syy and
         sxy depend on it.
+    traction : float or array_like, optional
+        Traction coefficient mu = q/p [-], in [-10, 10]; default 0 (frictionless).  The
+        surface carries the tangential traction q = mu p along +x acting on this body
+        (the body whose stresses are computed), e.g. the friction of a counter-body
+        sliding over it in +x; the surface is stretched behind the traction, at the
+        trailing edge x = -semi_axis_x, where the tension is largest.  Negative values
+        reverse it.  Where it is 0 the result is the frictionless field, bit for bit
+        (the traction part is not evaluated there).
 
     Returns
     -------
     StressState
         ``sxx, syy, szz, sxy, sxz, syz`` [Pa] in the broadcast shape; properties
-        ``von_mises``, ``tresca``; method ``principal()``.
+        ``von_mises``, ``tresca``; method ``principal()``.  On the loaded surface
+        ``szz = -p``, ``sxz = -traction * p``, ``syz = 0``.
 
     Raises
     ------
@@ -870,16 +982,22 @@ def stress(c: HertzContact, x, y, z, nu=0.3) -> StressState:
     y = as_array(y, "y", bounded=True, tiny_ok=True, unit="m")
     z = check_nonnegative(z, "z", "m", bounded=True, tiny_ok=True)
     nu = _check_nu(nu)
-    broadcast(x=x, y=y, z=z, nu=nu, c=np.asarray(c.b))
+    mu = _check_traction(traction)
+    broadcast(x=x, y=y, z=z, nu=nu, traction=mu, c=np.asarray(c.b))
     axn, ayn, b, p, nu = _axis_inputs(c, nu)
-    arrs = np.broadcast_arrays(x, y, z, axn, ayn, b, p, nu)
+    arrs = np.broadcast_arrays(x, y, z, axn, ayn, b, p, nu, mu)
     shape = arrs[0].shape
-    x, y, z, axn, ayn, b, p, nu = (np.ravel(a).astype(float) for a in arrs)
+    x, y, z, axn, ayn, b, p, nu, mu = (np.ravel(a).astype(float) for a in arrs)
     loaded = b > 0
     bs = np.where(loaded, b, 1.0)
     xn, yn, zn = (_check_far(v / bs, name, loaded) for v, name in ((x, "x"), (y, "y"), (z, "z")))
     zn = np.where(zn < _NEAR, 0.0, zn)        # below 1e-60 b: the surface (powers underflow)
     out = _field_kernel(axn, ayn, xn, yn, zn, nu) * p
+    rub = (mu != 0) & loaded                  # the traction part only where there is one
+    if np.any(rub):
+        i = np.flatnonzero(rub)
+        t = _traction_kernel(axn[i], ayn[i], xn[i], yn[i], zn[i], nu[i])
+        out[:, i] = out[:, i] + t * (mu[i] * p[i])
     out[:, ~loaded] = 0.0
     comps = [_scalar(o.reshape(shape)) for o in out]
     return StressState(*comps)
@@ -910,7 +1028,32 @@ def _line_kernel(x, z):
     return (np.where(edge, 0.0, sx), np.where(edge, 0.0, sz), np.where(edge, 0.0, txz))
 
 
-def line_stress(lc: LineContact, x, z, nu=0.3) -> StressState:
+def _line_traction_kernel(x, z):
+    """Stresses (sx, sz, txz)/(mu p0) of the traction q = mu p in +x on a line contact.
+
+    Johnson (1985) eq. 7.18 (Smith & Liu 1953) in this frame:
+    sx = n (2 - (z^2 - m^2)/(m^2 + n^2)) - 2x, sz = -n (m^2 - z^2)/(m^2 + n^2),
+    txz = -[m (1 + (z^2 + n^2)/(m^2 + n^2)) - 2z]; m, n as in :func:`_line_kernel`.
+    (sz and txz are the normal load's txz and sx: Flamant's line loads.)
+    """
+    base = 1.0 - x * x + z * z
+    R = np.hypot(base, 2.0 * x * z)
+    big = 0.5 * (R + np.abs(base))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        small = np.where(big > 0, (x * z) ** 2 / big, 0.0)
+        m2 = np.where(base >= 0, big, small)
+        n2 = np.where(base >= 0, small, big)
+        m = np.sqrt(m2)
+        n = np.sign(x) * np.sqrt(n2)
+        Rs = np.where(R > 0, R, 1.0)
+        sx = n * (2.0 - (z * z - m2) / Rs) - 2.0 * x
+        sz = -n * (m2 - z * z) / Rs
+        txz = -(m * (1.0 + (z * z + n2) / Rs) - 2.0 * z)
+    edge = R == 0                                  # x = +-b, z = 0: sx = -2x, the rest 0
+    return (np.where(edge, -2.0 * x, sx), np.where(edge, 0.0, sz), np.where(edge, 0.0, txz))
+
+
+def line_stress(lc: LineContact, x, z, nu=0.3, traction=0.0) -> StressState:
     r"""Stresses below a Hertz line contact (plane strain), McEwen's closed form.
 
     .. math::
@@ -933,15 +1076,37 @@ def line_stress(lc: LineContact, x, z, nu=0.3) -> StressState:
         Depth [m], >= 0.
     nu : float or array_like, optional
         Poisson's ratio [-], in (-1, 0.5]; default 0.3.
+    traction : float or array_like, optional
+        Traction coefficient mu = q/p [-], in [-10, 10]; default 0.  The tangential
+        traction q = mu p acts on this body along +x; the tension 2 mu p0 sits at the
+        trailing edge x = -b.  Where it is 0 the result is the frictionless field, bit
+        for bit.
 
     Returns
     -------
     StressState
         ``sxx, syy, szz, sxz`` [Pa]; ``sxy = syz = 0``.
 
+    Notes
+    -----
+    The traction part (Smith & Liu 1953; McEwen 1949; Johnson 1985 §7.2 eq. 7.18), in
+    this frame:
+
+    .. math::
+        \sigma_x^q &= \frac{\mu p_0}{b}\Big[n\Big(2 - \frac{z^2 - m^2}{m^2+n^2}\Big)
+            - 2x\Big], \quad
+        \sigma_z^q = -\frac{\mu p_0}{b}\, n\,\frac{m^2 - z^2}{m^2+n^2}, \\
+        \tau_{xz}^q &= -\frac{\mu p_0}{b}\Big[m\Big(1 + \frac{z^2+n^2}{m^2+n^2}\Big)
+            - 2z\Big], \qquad \sigma_y^q = \nu(\sigma_x^q + \sigma_z^q),
+
+    i.e. σ_z^q = μ τ_xz^p and τ_xz^q = μ σ_x^p (Flamant's tangential and normal line
+    loads).  On the surface σ_x^q = -2μ p0 x/b inside the strip: +2μp0 at x = -b.
+
     References
     ----------
-    McEwen (1949); Johnson (1985) §4.2.
+    McEwen (1949); Johnson (1985) §4.2 and §7.2; Smith, J.O. & Liu, C.K. (1953)
+    Stresses due to tangential and normal loads on an elastic solid. *J. Appl. Mech.*
+    20, 157–166.
 
     Examples
     --------
@@ -960,14 +1125,23 @@ def line_stress(lc: LineContact, x, z, nu=0.3) -> StressState:
     x = as_array(x, "x", bounded=True, tiny_ok=True, unit="m")
     z = check_nonnegative(z, "z", "m", bounded=True, tiny_ok=True)
     nu = _check_nu(nu)
-    broadcast(x=x, z=z, nu=nu, lc=np.asarray(lc.b))
+    mu = _check_traction(traction)
+    broadcast(x=x, z=z, nu=nu, traction=mu, lc=np.asarray(lc.b))
     b, p = np.asarray(lc.b, float), np.asarray(lc.p_max, float)
-    x, z, b, p, nu = np.broadcast_arrays(x, z, b, p, nu)
+    x, z, b, p, nu, mu = np.broadcast_arrays(x, z, b, p, nu, mu)
     loaded = b > 0
     bs = np.where(loaded, b, 1.0)
-    sx, sz, txz = _line_kernel(_check_far(x / bs, "x", loaded), _check_far(z / bs, "z", loaded))
+    xn, zn = _check_far(x / bs, "x", loaded), _check_far(z / bs, "z", loaded)
+    sx, sz, txz = _line_kernel(xn, zn)
     p = np.where(loaded, p, 0.0)
     sx, sz, txz = sx * p, sz * p, txz * p
+    if np.any(mu != 0):
+        tx, tz, txz_t = _line_traction_kernel(xn, zn)
+        rub = mu != 0
+        mp_ = mu * p
+        sx = np.where(rub, sx + tx * mp_, sx)
+        sz = np.where(rub, sz + tz * mp_, sz)
+        txz = np.where(rub, txz + txz_t * mp_, txz)
     zero = _scalar(np.zeros(sx.shape))
     return StressState(sxx=_scalar(sx), syy=_scalar(nu * (sx + sz)), szz=_scalar(sz),
                        sxy=zero, sxz=_scalar(txz), syz=zero)
@@ -1090,3 +1264,9 @@ def _check_far(v: np.ndarray, name: str, loaded: np.ndarray) -> np.ndarray:
 
 def _check_nu(nu) -> np.ndarray:
     return check_range(nu, "nu", -1.0, 0.5, high_inclusive=True, unit="-")
+
+
+def _check_traction(traction) -> np.ndarray:
+    """Traction coefficient q/p: finite, |traction| <= 10 (beyond any friction coefficient)."""
+    return check_range(traction, "traction", -_MU_MAX, _MU_MAX, low_inclusive=True,
+                       high_inclusive=True, unit="-")
