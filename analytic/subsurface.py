@@ -735,16 +735,24 @@ def _solve_lambda(A, B, x2, y2, z2):
     return lam
 
 
-def _h_integrals(A, B, x2, y2, lam, q0):
+def _h_integrals(A, B, x2, y2, lam, q0, traction: bool = False):
     """(J_xx, J_yy, J_xy) by the trapezoidal rule in s = ln(w - lambda) (module docs).
 
     J_xx = int_lambda^inf [(A+w) q - x^2] / ((A+w)^2 sqrt(g)) dw,
     J_yy likewise, J_xy = int dw / ((A+w)(B+w) sqrt(g)), g = (A+w)(B+w) q, with
     q(w) = q0 + (w - lambda)[x^2/((A+l)(A+w)) + y^2/((B+l)(B+w))] >= 0 written so that
     it cannot lose its sign by rounding (q0 = z^2/lambda, or the surface value inside).
+
+    With ``traction`` also, on the same nodes, the integrals of the traction field
+    (module docs) L = int dw/((A+w)^2 sqrt(g)), N = int w dw/((A+w)^2 D),
+    N_y = int w dw/((A+w)(B+w) D), P = int (F/r)' dw/s, P_xy = int (F_xy/r)' dw/s
+    (L_y = J_xy), with D = ((A+w)(B+w)w)^(1/2), s = (w q)^(1/2),
+    r = d(s^2)/dw = q + w[x^2/(A+w)^2 + y^2/(B+w)^2] (a sum of non-negative terms),
+    F = w^2/((A+w)^3 D), F_xy = w^2/((A+w)^2 (B+w) D): rows 3-7 of the result.
+    The first three rows are computed by the same operations either way.
     """
     n_pts = A.size
-    out = np.zeros((3, n_pts))
+    out = np.zeros((8 if traction else 3, n_pts))
     if n_pts == 0:
         return out
     LA, LB = A + lam, B + lam
@@ -765,10 +773,24 @@ def _h_integrals(A, B, x2, y2, lam, q0):
         out[0, sl] = np.sum((Aw * q - xa) / (Aw * Aw) * wd, axis=1)
         out[1, sl] = np.sum((Bw * q - yb) / (Bw * Bw) * wd, axis=1)
         out[2, sl] = np.sum(wd / (Aw * Bw), axis=1)
+        if traction:
+            w = lam[sl, None] + d
+            iA, iB = 1.0 / Aw, 1.0 / Bw
+            ga, gb = xa * iA * iA, yb * iB * iB
+            r = q + w * (ga + gb)
+            lw = 1.5 / w - 2.0 * (A[sl, None] * ga * iA + B[sl, None] * gb * iB) / r
+            wD = d * np.sqrt(w * iA * iB)                  # w dw / D
+            iA2 = iA * iA
+            out[3, sl] = np.einsum("ij,ij->i", iA2, wd)
+            out[4, sl] = np.einsum("ij,ij->i", iA2, wD)
+            out[5, sl] = np.einsum("ij,ij->i", iA * iB, wD)
+            c = (w / r) * wd * iA2                         # F/(r s) (A+w) dw
+            out[6, sl] = np.einsum("ij,ij->i", c * iA, lw - 3.5 * iA - 0.5 * iB)
+            out[7, sl] = np.einsum("ij,ij->i", c * iB, lw - 2.5 * iA - 1.5 * iB)
     return out * h
 
 
-def _field_kernel(ax, ay, x, y, z, nu):
+def _field_kernel(ax, ay, x, y, z, nu, mu=None):
     """Six stress components / p0 at (x, y, z) below the ellipse with semi-axes (ax, ay).
 
     1-D arrays of one length; lengths in any one unit (the callers use b).  See the module
@@ -777,6 +799,8 @@ def _field_kernel(ax, ay, x, y, z, nu):
     sz = -ax ay z^3 / (E Delta), txz = -ax ay x z^2 l / ((A+l) E Delta), ...
     On the loaded surface (z = 0, lambda = 0) the limits are taken explicitly:
     sz = -p/p0, txz = tyz = 0, z I_z -> 2 (p/p0) / (ax ay).
+    With ``mu`` (traction coefficients, same length) the traction part is added where
+    mu != 0 (:func:`_traction_part`); the normal part is computed the same way either way.
     """
     A, B = ax * ax, ay * ay
     x2, y2, z2 = x * x, y * y, z * z
@@ -790,7 +814,8 @@ def _field_kernel(ax, ay, x, y, z, nu):
     Ix = (2.0 / 3.0) * special.elliprd(LB, lam, LA)
     Iy = (2.0 / 3.0) * special.elliprd(LA, lam, LB)
     f = 0.5 * ax * ay
-    Jxx, Jyy, Jxy = _h_integrals(A, B, x2, y2, lam, q0)
+    ints = _h_integrals(A, B, x2, y2, lam, q0, traction=mu is not None)
+    Jxx, Jyy, Jxy = ints[:3]
 
     lp = np.where(pos, lam, 1.0)
     Dl = np.sqrt(LA) * np.sqrt(LB) * np.sqrt(lp)
@@ -807,6 +832,9 @@ def _field_kernel(ax, ay, x, y, z, nu):
     txz = np.where(pos, -K * x * z2 * lp / LA, 0.0)
     tyz = np.where(pos, -K * y * z2 * lp / LB, 0.0)
     out = np.stack([sx, sy, sz, txy, txz, tyz])
+    if mu is not None:
+        t = _traction_part(ax, ay, x, y, z, nu, lam, pos, q_surf, Ix, Iy, Jxy, ints[3:])
+        out = np.where(mu != 0, out + mu * t, out)
     if not np.all(np.isfinite(out)):  # pragma: no cover - a bug, never silently NaN
         raise RuntimeError("subsurface stress kernel produced non-finite values")
     if np.any(surf):
@@ -814,104 +842,45 @@ def _field_kernel(ax, ay, x, y, z, nu):
     return out
 
 
-def _t_integrals(A, B, x2, y2, lam, q0):
-    """(L, L_y, N, N_y, P, P_xy) of the traction field by the trapezoidal rule in ln(w - lambda).
+def _traction_part(ax, ay, x, y, z, nu, lam, pos, q_surf, Ix, Iy, Ly, ints):
+    """Six stress components / (mu p0) of the traction q = mu p along +x (module docs).
 
-    With a = A + w, c = B + w, D = (a c w)^(1/2), s = (w q)^(1/2), r = d(s^2)/dw
-    = q + w (x^2/a^2 + y^2/c^2) (a sum of non-negative terms), F = w^2/(a^3 D),
-    F_xy = w^2/(a^2 c D):
-    L = int dw/(a^2 sqrt(g)), L_y = int dw/(a c sqrt(g)) (g = a c q), N = int w dw/(a^2 D),
-    N_y = int w dw/(a c D), P = int (F/r)' dw/s, P_xy = int (F_xy/r)' dw/s.
-    """
-    n_pts = A.size
-    out = np.zeros((6, n_pts))
-    if n_pts == 0:
-        return out
-    LA, LB = A + lam, B + lam
-    lo = np.log(np.minimum(LA, LB)) - _S_BELOW
-    hi = np.log(np.maximum(LA, LB)) + _S_ABOVE
-    n = int(np.ceil(np.max(hi - lo) / _H_STEP))
-    h = (hi - lo) / n
-    j = np.arange(n) + 0.5
-    chunk = max(1, _CHUNK // n)
-    for s in range(0, n_pts, chunk):
-        sl = slice(s, s + chunk)
-        d = np.exp(lo[sl, None] + h[sl, None] * j)
-        la, lb = LA[sl, None], LB[sl, None]
-        xa, yb = x2[sl, None], y2[sl, None]
-        Aw, Bw = la + d, lb + d
-        w = lam[sl, None] + d
-        iA, iB = 1.0 / Aw, 1.0 / Bw
-        q = q0[sl, None] + d * (xa / la * iA + yb / lb * iB)
-        ga = xa * iA * iA
-        gb = yb * iB * iB
-        r = q + w * (ga + gb)
-        dr = 2.0 * (A[sl, None] * ga * iA + B[sl, None] * gb * iB)          # r'
-        isg = d / np.sqrt(Aw * Bw * q)                 # d / sqrt(g): dw = d ds
-        wD = d * np.sqrt(w * iA * iB)                  # d w / D
-        out[0, sl] = np.sum(iA * iA * isg, axis=1)
-        out[1, sl] = np.sum(iA * iB * isg, axis=1)
-        out[2, sl] = np.sum(iA * iA * wD, axis=1)
-        out[3, sl] = np.sum(iA * iB * wD, axis=1)
-        # F/(r s) = w^2/(a^3 D r s) = w isg/(a^3 r d) * d: (w/D)(1/s) = 1/sqrt(g)
-        common = w * isg / r                         # d w/(r sqrt(g)) = d w^2/(D s r)
-        lw = 1.5 / w - dr / r
-        out[4, sl] = np.sum(common * iA**3 * (lw - 3.5 * iA - 0.5 * iB), axis=1)
-        out[5, sl] = np.sum(common * iA * iA * iB * (lw - 2.5 * iA - 1.5 * iB), axis=1)
-    return out * h
-
-
-def _traction_kernel(ax, ay, x, y, z, nu):
-    """Six stress components / (mu p0) of the traction q = mu p in +x (module docs).
-
-    1-D arrays of one length; lengths in units of b.  From Love's potentials for a
-    tangential surface traction (Johnson 1985 §3.2 eqs. 3.6-3.10) with
-    Phi = iint p Omega dA (Omega = z ln(rho + z) - rho), H = Phi_z, V = H_z:
+    Love's potentials for a tangential surface traction (Johnson 1985 §3.2 eqs.
+    3.6-3.10) with Phi = iint p Omega dA (Omega = z ln(rho + z) - rho), H = Phi_z,
+    V = H_z, per unit C = pi ax ay:
     sxx = f[2(1+nu) V_x + 2 nu Phi_xxx - z H_xxx], syy = f[-2 nu Phi_xxx + z V_xz + z H_xxx],
     szz = -f z V_xz, sxy = f[V_y + 2 nu Phi_xxy - z H_xxy], sxz = f[V_z - z V_xx],
-    syz = -f z V_xy, with f = 1/(2 pi) and the potentials per unit p0.
+    syz = -f z V_xy (f = C/(2 pi)), where Phi_xxx = x[3M - 2x^2(F(l)/r(l) + zP)],
+    Phi_xxy = y[M_y - 2x^2(F_xy(l)/r(l) + zP_xy)], H_xxx = -x(3L + 2x^2 P),
+    H_xxy = -y(L_y + 2x^2 P_xy), M = N - zL, M_y = N_y - zL_y.
     """
-    A, B = ax * ax, ay * ay
-    x2, y2, z2 = x * x, y * y, z * z
-    lam = _solve_lambda(A, B, x2, y2, z2)
-    LA, LB = A + lam, B + lam
-    pos = lam > 0
-    q_surf = np.sqrt(np.clip(1.0 - x2 / A - y2 / B, 0.0, None))
+    L, N, Ny, P, Pxy = ints
+    LA, LB = ax * ax + lam, ay * ay + lam
+    x2, z2 = x * x, z * z
     lp = np.where(pos, lam, 1.0)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        q0 = np.where(pos, z2 / lp, q_surf**2)
-    Ix = (2.0 / 3.0) * special.elliprd(LB, lam, LA)
-    Iy = (2.0 / 3.0) * special.elliprd(LA, lam, LB)
-    f = 0.5 * ax * ay                              # C/(2 pi), C = pi ax ay
-    L, Ly, N, Ny, P, Pxy = _t_integrals(A, B, x2, y2, lam, q0)
     Dl = np.sqrt(LA) * np.sqrt(LB) * np.sqrt(lp)
     E = (x * lp / LA) ** 2 + (y * lp / LB) ** 2 + z2
-    rl = np.where(pos, E / lp, q_surf**2)          # r(lambda) = d(w q)/dw at lambda
-    rs = np.where(rl > 0, rl, 1.0)
-    # lambda G(lambda) / r(lambda), G = 1/((A+w) D); zero on the loaded surface
-    lGr = np.where(pos, np.sqrt(lp) / (LA * np.sqrt(LA) * np.sqrt(LB) * rs), 0.0)
+    rl = np.where(pos, E / lp, 1.0)               # r(lambda) = E/lambda > 0 off the patch
+    # lambda G(lambda)/r(lambda), G(w) = 1/((A+w) D(w)); zero on the loaded surface
+    lGr = np.where(pos, np.sqrt(lp) / (LA * np.sqrt(LA) * np.sqrt(LB) * rl), 0.0)
+    f = 0.5 * ax * ay
     zIz = np.where(pos, 2.0 * z / Dl - z * (Ix + Iy), 2.0 * q_surf / (ax * ay))
-    Vx, Vy, Vz = -x * Ix, -y * Iy, -zIz
     Vxx = -(Ix - 2.0 * x2 * lGr / LA)
     Vxy = 2.0 * x * y * lGr / LB
-    Vxz = np.where(pos, 2.0 * x * z * lGr / lp, 0.0)          # 2 x z G(lambda)/r
-    Fr = lGr * lp / (LA * LA)                      # F(lambda)/r(lambda), F = w^2 G/(A+w)^2
+    Vxz = np.where(pos, 2.0 * x * z * lGr / lp, 0.0)          # 2 x z G(lambda)/r(lambda)
+    Fr = lGr * lp / (LA * LA)                      # F(lambda)/r(lambda)
     Fxyr = lGr * lp / (LA * LB)
-    M, My = N - z * L, Ny - z * Ly
-    Pxxx = x * (3.0 * M - 2.0 * x2 * (Fr + z * P))
-    Pxxy = y * (My - 2.0 * x2 * (Fxyr + z * Pxy))
+    Pxxx = x * (3.0 * (N - z * L) - 2.0 * x2 * (Fr + z * P))
+    Pxxy = y * ((Ny - z * Ly) - 2.0 * x2 * (Fxyr + z * Pxy))
     Hxxx = -x * (3.0 * L + 2.0 * x2 * P)
     Hxxy = -y * (Ly + 2.0 * x2 * Pxy)
-    sx = f * (2.0 * (1.0 + nu) * Vx + 2.0 * nu * Pxxx - z * Hxxx)
+    sx = f * (-2.0 * (1.0 + nu) * x * Ix + 2.0 * nu * Pxxx - z * Hxxx)
     sy = f * (-2.0 * nu * Pxxx + z * Vxz + z * Hxxx)
     sz = -f * z * Vxz
-    txy = f * (Vy + 2.0 * nu * Pxxy - z * Hxxy)
-    txz = f * (Vz - z * Vxx)
+    txy = f * (-y * Iy + 2.0 * nu * Pxxy - z * Hxxy)
+    txz = f * (-zIz - z * Vxx)
     tyz = -f * z * Vxy
-    out = np.stack([sx, sy, sz, txy, txz, tyz])
-    if not np.all(np.isfinite(out)):  # pragma: no cover - a bug, never silently NaN
-        raise RuntimeError("traction stress kernel produced non-finite values")
-    return out
+    return np.stack([sx, sy, sz, txy, txz, tyz])
 
 
 def stress(c: HertzContact, x, y, z, nu=0.3, traction=0.0) -> StressState:
@@ -992,12 +961,10 @@ def stress(c: HertzContact, x, y, z, nu=0.3, traction=0.0) -> StressState:
     bs = np.where(loaded, b, 1.0)
     xn, yn, zn = (_check_far(v / bs, name, loaded) for v, name in ((x, "x"), (y, "y"), (z, "z")))
     zn = np.where(zn < _NEAR, 0.0, zn)        # below 1e-60 b: the surface (powers underflow)
-    out = _field_kernel(axn, ayn, xn, yn, zn, nu) * p
-    rub = (mu != 0) & loaded                  # the traction part only where there is one
-    if np.any(rub):
-        i = np.flatnonzero(rub)
-        t = _traction_kernel(axn[i], ayn[i], xn[i], yn[i], zn[i], nu[i])
-        out[:, i] = out[:, i] + t * (mu[i] * p[i])
+    if np.any(mu != 0):                       # the traction part only where there is one
+        out = _field_kernel(axn, ayn, xn, yn, zn, nu, mu) * p
+    else:                                     # frictionless: exactly the path without it
+        out = _field_kernel(axn, ayn, xn, yn, zn, nu) * p
     out[:, ~loaded] = 0.0
     comps = [_scalar(o.reshape(shape)) for o in out]
     return StressState(*comps)
