@@ -109,7 +109,7 @@ import logging
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import special
+from scipy import optimize, special
 
 from ._checks import as_array, broadcast, check_choice, check_nonnegative, check_range
 from .hertz import HertzContact, LineContact, _scalar
@@ -118,6 +118,7 @@ __all__ = [
     "OrthogonalShear",
     "MaxShear",
     "VonMisesMax",
+    "SurfaceTension",
     "StressState",
     "LP_METHODS",
     "LP_APPROXIMATION_ERROR",
@@ -127,6 +128,9 @@ __all__ = [
     "axis_stress",
     "max_shear",
     "von_mises",
+    "surface_tension",
+    "critical_traction",
+    "CRITERIA",
     "stress",
     "line_stress",
     "line_max_shear",
@@ -193,30 +197,71 @@ class OrthogonalShear:
 
 @dataclass(frozen=True)
 class MaxShear:
-    """Maximum Tresca shear stress on the contact axis x = y = 0 (frozen).
+    """Maximum Tresca shear stress and where it occurs (frozen).
+
+    Without traction the maximum lies on the contact axis x = y = 0; with traction it
+    is searched over the section y = 0 and the surface z = 0.
 
     Attributes
     ----------
-    tau_max : max over depth of (sigma_1 - sigma_3)/2 [Pa].
-    depth : Depth z where it occurs [m].
+    tau_max : max of (sigma_1 - sigma_3)/2 [Pa].
+    depth : Depth z where it occurs [m]; 0 when the maximum is at the surface.
+    x : Position along the rolling direction [m]; 0 on the axis.
+    y : Transverse position [m], >= 0 (the field is symmetric in y); 0 on the axis.
     """
 
     tau_max: np.ndarray
     depth: np.ndarray
+    x: np.ndarray = 0.0
+    y: np.ndarray = 0.0
+
+    @property
+    def at_surface(self):
+        """True where the maximum lies on the surface (depth 0) [-]."""
+        return np.asarray(self.depth == 0)[()]
 
 
 @dataclass(frozen=True)
 class VonMisesMax:
-    """Maximum von Mises equivalent stress on the contact axis x = y = 0 (frozen).
+    """Maximum von Mises equivalent stress and where it occurs (frozen).
+
+    Without traction the maximum lies on the contact axis x = y = 0; with traction it
+    is searched over the section y = 0 and the surface z = 0.
 
     Attributes
     ----------
-    sigma_vm : max over depth of the von Mises stress [Pa].
-    depth : Depth z where it occurs [m].
+    sigma_vm : max of the von Mises stress [Pa].
+    depth : Depth z where it occurs [m]; 0 when the maximum is at the surface.
+    x : Position along the rolling direction [m]; 0 on the axis.
+    y : Transverse position [m], >= 0 (the field is symmetric in y); 0 on the axis.
     """
 
     sigma_vm: np.ndarray
     depth: np.ndarray
+    x: np.ndarray = 0.0
+    y: np.ndarray = 0.0
+
+    @property
+    def at_surface(self):
+        """True where the maximum lies on the surface (depth 0) [-]."""
+        return np.asarray(self.depth == 0)[()]
+
+
+@dataclass(frozen=True)
+class SurfaceTension:
+    """Largest principal stress on the surface z = 0 and where it occurs (frozen).
+
+    Attributes
+    ----------
+    sigma1 : max over the surface of the largest principal stress [Pa]; tension > 0.
+    x : Position along the rolling direction [m] (-semi_axis_x: the trailing edge of
+        a traction along +x).
+    y : Transverse position [m], >= 0.
+    """
+
+    sigma1: np.ndarray
+    x: np.ndarray
+    y: np.ndarray
 
 
 @dataclass(frozen=True)
@@ -612,7 +657,7 @@ def axis_stress(c: HertzContact, z, nu=0.3) -> StressState:
                        sxy=zero, sxz=zero, syz=zero)
 
 
-def max_shear(c: HertzContact, nu=0.3) -> MaxShear:
+def max_shear(c: HertzContact, nu=0.3, traction=0.0) -> MaxShear:
     r"""Maximum shear stress (Tresca) on the contact axis and its depth.
 
     .. math:: \tau_{max} = \max_{z} \tfrac12(\sigma_1 - \sigma_3)(0, 0, z)
@@ -648,16 +693,25 @@ def max_shear(c: HertzContact, nu=0.3) -> MaxShear:
     (0.31, 0.4809)
     """
     _check_contact(c)
-    axn, ayn, b, p, nu = _axis_inputs(c, _check_nu(nu))
+    nu = _check_nu(nu)
+    mu = _check_traction(traction)
+    broadcast(nu=nu, traction=mu, c=np.asarray(c.b))
+    axn, ayn, b, p, nu = _axis_inputs(c, nu)
+    axn, ayn, b, p, nu, mu = np.broadcast_arrays(axn, ayn, b, p, nu, mu)
 
     def fun(zeta):
         return _tresca_axis(*_axis_kernel(axn, ayn, zeta, nu, deriv=True))
 
     v, zeta = _maximize_depth(fun, axn.shape)
-    return MaxShear(tau_max=_scalar(v * p), depth=_scalar(zeta * b))
+    if not np.any(mu != 0):
+        zero = _scalar(np.zeros(np.shape(v)))
+        return MaxShear(tau_max=_scalar(v * p), depth=_scalar(zeta * b), x=zero, y=zero)
+    v, x, y, zeta = _traction_maxima(axn, ayn, nu, mu, v, zeta, "tresca")
+    return MaxShear(tau_max=_scalar(v * p), depth=_scalar(zeta * b), x=_scalar(x * b),
+                    y=_scalar(y * b))
 
 
-def von_mises(c: HertzContact, nu=0.3) -> VonMisesMax:
+def von_mises(c: HertzContact, nu=0.3, traction=0.0) -> VonMisesMax:
     r"""Maximum von Mises stress on the contact axis and its depth.
 
     .. math:: \sigma_{vm} = \max_z \sqrt{\tfrac12\left[(\sigma_x-\sigma_y)^2
@@ -693,13 +747,260 @@ def von_mises(c: HertzContact, nu=0.3) -> VonMisesMax:
     (0.62, 0.4809)
     """
     _check_contact(c)
-    axn, ayn, b, p, nu = _axis_inputs(c, _check_nu(nu))
+    nu = _check_nu(nu)
+    mu = _check_traction(traction)
+    broadcast(nu=nu, traction=mu, c=np.asarray(c.b))
+    axn, ayn, b, p, nu = _axis_inputs(c, nu)
+    axn, ayn, b, p, nu, mu = np.broadcast_arrays(axn, ayn, b, p, nu, mu)
 
     def fun(zeta):
         return _vm_axis(*_axis_kernel(axn, ayn, zeta, nu, deriv=True))
 
     v, zeta = _maximize_depth(fun, axn.shape)
-    return VonMisesMax(sigma_vm=_scalar(v * p), depth=_scalar(zeta * b))
+    if not np.any(mu != 0):
+        zero = _scalar(np.zeros(np.shape(v)))
+        return VonMisesMax(sigma_vm=_scalar(v * p), depth=_scalar(zeta * b), x=zero, y=zero)
+    v, x, y, zeta = _traction_maxima(axn, ayn, nu, mu, v, zeta, "von_mises")
+    return VonMisesMax(sigma_vm=_scalar(v * p), depth=_scalar(zeta * b), x=_scalar(x * b),
+                       y=_scalar(y * b))
+
+
+# ------------------------------------------------------------------------- maxima with traction
+#: Criteria of the searches with traction: Tresca (sigma_1 - sigma_3)/2, von Mises, and
+#: the largest principal stress sigma_1.
+CRITERIA = ("tresca", "von_mises", "principal")
+
+_SEARCH_X = 1.3            # grid over |x| <= 1.3 semi_axis_x (and y <= 1.3 semi_axis_y)
+_SEARCH_Z = 1.5            # section grid over 0 <= z <= 1.5 b
+_INTERIOR_Z = 0.05         # interior maximum: searched at z >= 0.05 b
+_MU_HI = 0.6               # critical traction searched on (0.001, 0.6]
+
+
+def _nd_stress(ax, ay, nu, mu, x, y, z):
+    """Stresses / p0 (6, ...) at points in units of b of one contact; ay = inf: the line."""
+    x, y, z = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (x, y, z)))
+    shape = x.shape
+    x, y, z = x.ravel(), y.ravel(), z.ravel()
+    if np.isinf(ay):
+        sx, sz, txz = _line_kernel(x, z)
+        if mu != 0:
+            tx, tz, tt = _line_traction_kernel(x, z)
+            sx, sz, txz = sx + mu * tx, sz + mu * tz, txz + mu * tt
+        zero = np.zeros_like(sx)
+        out = np.stack([sx, nu * (sx + sz), sz, zero, txz, zero])
+    else:
+        one = np.ones(x.size)
+        out = _field_kernel(ax * one, ay * one, x, y, z, nu * one,
+                            mu * one if mu != 0 else None)
+    return out.reshape((6,) + shape)
+
+
+def _criterion(s, criterion: str):
+    """Tresca, von Mises or sigma_1 of stacked components s (6, ...)."""
+    sxx, syy, szz, sxy, sxz, syz = s
+    if criterion == "von_mises":
+        return np.sqrt(0.5 * ((sxx - syy) ** 2 + (syy - szz) ** 2 + (szz - sxx) ** 2)
+                       + 3.0 * (sxy**2 + syz**2 + sxz**2))
+    t = np.stack([np.stack([sxx, sxy, sxz], -1), np.stack([sxy, syy, syz], -1),
+                  np.stack([sxz, syz, szz], -1)], -2)
+    e = np.linalg.eigvalsh(t)
+    return 0.5 * (e[..., 2] - e[..., 0]) if criterion == "tresca" else e[..., 2]
+
+
+def _search(ax, ay, nu, mu, criterion: str, where: str):
+    """Maximum of a criterion over the section y = 0 ("section", "interior") or the
+    surface z = 0 ("surface") of one contact (units b, p0): (value, x, y, z).
+
+    A grid (|x| <= 1.3 ax, 0 <= z <= 1.5 b, or 0 <= y <= 1.3 ay on the surface) brackets
+    the maximum; Nelder-Mead (bounded: z >= 0) refines it from the best grid point to
+    ~1e-10 in position.  "interior" searches z >= 0.05 b only, so it follows the
+    subsurface maximum even where the surface one is larger.
+    """
+    line = np.isinf(ay)
+    xs = np.linspace(-_SEARCH_X, _SEARCH_X, 53) * ax
+    if where == "surface":
+        ys = np.zeros(1) if line else np.linspace(0.0, _SEARCH_X, 27) * ay
+        G1, G2 = np.meshgrid(xs, ys, indexing="ij")
+        vals = _criterion(_nd_stress(ax, ay, nu, mu, G1, G2, 0.0), criterion)
+        bounds = [(-2.0 * ax, 2.0 * ax)] + ([] if line else [(0.0, 2.0 * ay)])
+
+        def point(v):
+            return (v[0], 0.0 if line else v[1], 0.0)
+    else:
+        zs = np.linspace(0.0, _SEARCH_Z, 31)
+        G1, G2 = np.meshgrid(xs, zs, indexing="ij")
+        vals = _criterion(_nd_stress(ax, ay, nu, mu, G1, 0.0, G2), criterion)
+        if where == "interior":
+            vals = np.where(G2 >= _INTERIOR_Z, vals, -np.inf)
+        bounds = [(-2.0 * ax, 2.0 * ax), (_INTERIOR_Z if where == "interior" else 0.0, 3.0)]
+
+        def point(v):
+            return (v[0], 0.0, v[1])
+    i = np.unravel_index(np.argmax(vals), vals.shape)
+    start = [G1[i]] + ([] if (where == "surface" and line) else [G2[i]])
+    steps = [xs[1] - xs[0], (G2[0, 1] - G2[0, 0]) if G2.shape[1] > 1 else 0.0]
+
+    def neg(v):
+        return -float(_criterion(_nd_stress(ax, ay, nu, mu, *point(v)), criterion))
+
+    simplex = [start] + [[s0 + (0.5 * steps[k] if k == j else 0.0)
+                          for k, s0 in enumerate(start)] for j in range(len(start))]
+    simplex = np.clip(simplex, [bd[0] for bd in bounds], [bd[1] for bd in bounds])
+    res = optimize.minimize(neg, start, method="Nelder-Mead", bounds=bounds,
+                            options=dict(xatol=1e-10, fatol=1e-15, maxiter=4000,
+                                         initial_simplex=simplex))
+    best, v = (res.x, -res.fun) if -res.fun >= vals[i] else (np.asarray(start), vals[i])
+    return (float(v),) + tuple(float(c) for c in point(best))
+
+
+def _nd_maximum(ax, ay, nu, mu, criterion: str):
+    """Global maximum (value, x, y, z) over the section y = 0 and the surface."""
+    a = _search(ax, ay, nu, mu, criterion, "section")
+    b = _search(ax, ay, nu, mu, criterion, "surface")
+    return b if b[0] >= a[0] else a
+
+
+def _traction_maxima(axn, ayn, nu, mu, v, zeta, criterion: str):
+    """Replace the axis maxima (v, zeta) by the global searches where mu != 0."""
+    shape = np.shape(v)
+    v, zeta = np.array(v, dtype=float).reshape(-1), np.array(zeta, dtype=float).reshape(-1)
+    x, y = np.zeros(v.shape), np.zeros(v.shape)
+    axn, ayn, nu, mu = (np.asarray(a, dtype=float).reshape(-1) for a in (axn, ayn, nu, mu))
+    for i in np.flatnonzero(mu != 0):
+        v[i], x[i], y[i], zeta[i] = _nd_maximum(axn[i], ayn[i], nu[i], mu[i], criterion)
+        if zeta[i] < 1e-12:          # the bounded search stops within rounding of z = 0
+            zeta[i] = 0.0
+    return tuple(a.reshape(shape) for a in (v, x, y, zeta))
+
+
+def surface_tension(c: HertzContact, nu=0.3, traction=0.0) -> SurfaceTension:
+    r"""Largest principal (tensile) stress on the surface and where it occurs.
+
+    The maximum over the surface z = 0 (inside and outside the contact) of σ_1, found by
+    a grid over |x| <= 1.3 a_x, 0 <= y <= 1.3 a_y and a bounded Nelder–Mead refinement.
+    Without traction it is the radial tension at the contact edge, (1-2ν)/3 p0 for a
+    circle (Johnson 1985 eq. 3.41).  A traction q = μp along +x adds tension behind
+    the contact: for the circle the maximum sits at the trailing edge x = -a, y = 0 and
+    is
+
+    .. math:: \sigma_1 = p_0\Big[\frac{1-2\nu}{3} + \frac{(4+\nu)\pi\mu}{8}\Big]
+
+    (Hamilton & Goodman 1966; Johnson 1985 §7.2), for the line contact 2μp0 at x = -b.
+
+    Parameters
+    ----------
+    c : HertzContact
+        The contact; arrays give arrays (one search per contact).
+    nu : float or array_like, optional
+        Poisson's ratio of the body [-], in (-1, 0.5]; default 0.3.
+    traction : float or array_like, optional
+        Traction coefficient q/p [-], in [-10, 10]; default 0 (see :func:`stress`).
+
+    Returns
+    -------
+    SurfaceTension
+        ``sigma1`` [Pa], ``x`` [m], ``y`` [m] (y >= 0; the field is symmetric in y).
+
+    References
+    ----------
+    Hamilton, G.M. & Goodman, L.E. (1966) The stress field created by a circular sliding
+    contact. *J. Appl. Mech.* 33, 371–376; Johnson (1985) §§3.4, 7.2.
+
+    Examples
+    --------
+    >>> from ballrace.analytic.hertz import elliptical_contact
+    >>> c = elliptical_contact(1000.0, 0.005, 0.005, 219.78e9)
+    >>> t = surface_tension(c, nu=0.3, traction=0.2)
+    >>> round(float(t.sigma1 / c.p_max), 6), round(float(t.x / c.a), 6)
+    (0.471055, -1.0)
+    >>> round(0.4 / 3 + 4.3 * np.pi * 0.2 / 8, 6)
+    0.471055
+    """
+    _check_contact(c)
+    nu = _check_nu(nu)
+    mu = _check_traction(traction)
+    broadcast(nu=nu, traction=mu, c=np.asarray(c.b))
+    axn, ayn, b, p, nu = _axis_inputs(c, nu)
+    axn, ayn, b, p, nu, mu = np.broadcast_arrays(axn, ayn, b, p, nu, mu)
+    shape = axn.shape
+    out = np.zeros((3, axn.size))
+    for i, (ax, ay, n, m) in enumerate(zip(*(a.reshape(-1) for a in (axn, ayn, nu, mu)))):
+        v, x, y, _ = _search(float(ax), float(ay), float(n), float(m), "principal", "surface")
+        out[:, i] = v, x, y
+    out = out.reshape((3,) + shape)
+    return SurfaceTension(sigma1=_scalar(out[0] * p), x=_scalar(out[1] * b),
+                          y=_scalar(out[2] * b))
+
+
+def critical_traction(ratio, nu=0.3, criterion: str = "von_mises"):
+    r"""Traction coefficient at which the maximum of a stress criterion reaches the surface.
+
+    Below it the maximum of the Tresca or von Mises stress lies below the surface (on
+    the axis without traction, moving towards the leading side as μ rises); above it the
+    surface maximum is larger: surface-initiated damage.  Computed as the root μ_c of
+
+    .. math:: g(\mu) = \max_{z = 0} f - \max_{\text{interior}} f,
+
+    where the interior maximum is the local maximum in the section y = 0 followed from
+    z >= 0.05 b (:func:`max_shear`, :func:`von_mises` search the same places), by
+    Brent's method to 1e-7 in μ on 0.001 <= μ <= 0.6.  The contact has its minor semi-axis b along the
+    traction (the ball-bearing case); ``ratio = 0`` is the line contact (plane strain).
+
+    Parameters
+    ----------
+    ratio : float or array_like
+        b/a [-], in [0, 1]; 0 = line contact, 1 = circle.
+    nu : float or array_like, optional
+        Poisson's ratio [-], in (-1, 0.5]; default 0.3.
+    criterion : {"von_mises", "tresca"}
+        The stress whose maximum is followed.
+
+    Returns
+    -------
+    ndarray
+        μ_c [-].
+
+    Raises
+    ------
+    ConvergenceError
+        If g does not change sign on 0.001 <= μ <= 0.6.
+
+    References
+    ----------
+    Hamilton (1983); Hamilton & Goodman (1966); Smith & Liu (1953); Johnson (1985) §7.2:
+    the maximum reaches the surface at μ ≈ 0.25–0.3 (line and circle).
+
+    Examples
+    --------
+    Line contact, ν = 0.3:
+
+    >>> round(float(critical_traction(0.0, 0.3, "tresca")), 4)
+    0.2468
+    """
+    check_choice(criterion, "criterion", ("von_mises", "tresca"))
+    ratio = check_range(ratio, "ratio", 0.0, 1.0, low_inclusive=True, high_inclusive=True,
+                        unit="-")
+    nu = _check_nu(nu)
+    ratio, nu = broadcast(ratio=ratio, nu=nu)
+    out = np.zeros(ratio.shape)
+    for i in np.ndindex(ratio.shape):
+        ay = np.inf if ratio[i] == 0 else 1.0 / float(ratio[i])
+        n = float(nu[i])
+
+        def g(mu):
+            s = _search(1.0, ay, n, mu, criterion, "surface")[0]
+            return s - _search(1.0, ay, n, mu, criterion, "interior")[0]
+
+        g0, g1 = g(1e-3), g(_MU_HI)
+        if not (g0 < 0 < g1):
+            from .loaddist import ConvergenceError
+            raise ConvergenceError(f"critical_traction: the surface minus interior maximum "
+                                   f"does not change sign on [0.001, {_MU_HI}] (b/a = "
+                                   f"{ratio[i]:g}, "
+                                   f"nu = {n:g}); residuals {g0:.3g}, {g1:.3g} p0, 2 "
+                                   "evaluations")
+        out[i] = optimize.brentq(g, 1e-3, _MU_HI, xtol=1e-7)
+    return _scalar(out)
 
 
 # ------------------------------------------------------------------------- full field
