@@ -64,6 +64,31 @@ at once.  On the z-axis the integrals are elementary and the closed form
 
 *Line contact* — McEwen's (1949) closed form (Johnson 1985 §4.2), plane strain.
 
+*Tangential traction* (``traction`` = μ: q = μ p on the body along +x, so that on the
+patch σ_zz = -p and τ_xz = -μp; the tension is largest at the trailing edge
+x = -a_x) — Love's potentials for a tangential load (Johnson 1985 §3.2 eqs. 3.6–3.10)
+with :math:`\Phi = \iint p\,\Omega\,dA`, Ω = z ln(ρ+z) - ρ, H = Φ_z, V = H_z:
+
+.. math::
+    \sigma_x &= \tfrac{\mu}{2\pi}\left[2(1+\nu)V_x + 2\nu\Phi_{xxx} - zH_{xxx}\right], \quad
+    \sigma_y = \tfrac{\mu}{2\pi}\left[-2\nu\Phi_{xxx} + zV_{xz} + zH_{xxx}\right], \\
+    \sigma_z &= -\tfrac{\mu}{2\pi} z V_{xz}, \quad
+    \tau_{xy} = \tfrac{\mu}{2\pi}\left[V_y + 2\nu\Phi_{xxy} - zH_{xxy}\right], \quad
+    \tau_{xz} = \tfrac{\mu}{2\pi}\left[V_z - zV_{xx}\right], \quad
+    \tau_{yz} = -\tfrac{\mu}{2\pi} z V_{xy}.
+
+With s(w) = (w q(w))^{1/2} (the depth at which the confocal ellipsoid w passes over
+(x, y)), integrating V_x twice in z and exchanging the order of integration gives
+:math:`H_x = C x \int_\lambda^\infty (s-z)\,dw/((a_x^2+w)\Delta)` and
+:math:`\Phi_x = -\tfrac{C}{2} x \int_\lambda^\infty (s-z)^2\,dw/((a_x^2+w)\Delta)`,
+C = π a_x a_y p0.  Their x- and y-derivatives are six more 1-D integrals
+(:func:`_h_integrals`); the 1/s³ terms are integrated by parts (r = d(s²)/dw > 0), which
+removes a cancellation of two O(1/z) terms near the surface.  They are summed on the
+same trapezoid nodes as the H-terms.  Line contact: Smith & Liu (1953), Johnson (1985)
+eq. 7.18.  The maxima with traction leave the axis: :func:`max_shear` and
+:func:`von_mises` then search the section y = 0 and the surface.  Verification and the
+critical traction table: ``docs/traction.md`` and ``tests/test_traction.py``.
+
 Accuracy (measured; asserted by ``tests/test_subsurface.py``; stresses in units of p_max)
 ------------------------------------------------------------------------------------------
 =============================================================== ==================
@@ -78,6 +103,10 @@ field at y = 0 vs McEwen line contact, k = 1e4: σ_z, τ_xz        1.4e-8, 7e-9
 trace/(1+ν) independent of ν (checks H_xx + H_yy = -V_z)          3e-15
 trapezoid step 0.5 vs 0.2 (quadrature converged)                  < 3e-15
 LP τ0 vs the maximum of the field's τ_xz(x, 0, z), k = 1 … 10    4e-16 relative
+traction part vs Cerruti integrated over the ellipse, k = 1 … 9.5  2e-13 (~1e-14)
+traction: circle trailing-edge tension (Hamilton & Goodman 1966)  1e-14
+traction: ellipse at y = 0 vs Smith & Liu line contact, k = 1e4   2.1e-7
+traction: trapezoid step 0.5 vs 0.2                               1.9e-15
 =============================================================== ==================
 
 Near the contact edge on the surface the field is only as well conditioned as
@@ -97,7 +126,11 @@ Thomas, H.R. & Hoersch, V.A. (1930) Stresses due to the pressure of one elastic 
 upon another. *Univ. Illinois Eng. Exp. Sta. Bull.* 212.
 McEwen, E. (1949) Stresses in elastic cylinders in contact along a generatrix.
 *Phil. Mag.* 40, 454–459.
-Johnson, K.L. (1985) *Contact Mechanics*, Cambridge, §§3.2, 3.4, 3.7, 4.2.
+Johnson, K.L. (1985) *Contact Mechanics*, Cambridge, §§3.2, 3.4, 3.7, 4.2, 7.2.
+Smith, J.O. & Liu, C.K. (1953) Stresses due to tangential and normal loads on an elastic
+solid. *J. Appl. Mech.* 20, 157–166.
+Hamilton, G.M. & Goodman, L.E. (1966) The stress field created by a circular sliding
+contact. *J. Appl. Mech.* 33, 371–376.
 Hamilton, G.M. (1983) Explicit equations for the stresses beneath a sliding spherical
 contact. *Proc. IMechE* 197C, 53–59.
 Carlson, B.C. (1995) Numerical computation of real or complex elliptic integrals.
