@@ -1448,7 +1448,7 @@ def line_stress(lc: LineContact, x, z, nu=0.3, traction=0.0) -> StressState:
                        sxy=zero, sxz=_scalar(txz), syz=zero)
 
 
-def line_max_shear(lc: LineContact, nu=0.3) -> MaxShear:
+def line_max_shear(lc: LineContact, nu=0.3, traction=0.0) -> MaxShear:
     r"""Maximum shear stress (Tresca, 3-D with plane-strain σ_y) on the axis of a line contact.
 
     .. math:: \tau_{max} = \max_z \tfrac12(\sigma_1 - \sigma_3)(0, z)
@@ -1465,15 +1465,19 @@ def line_max_shear(lc: LineContact, nu=0.3) -> MaxShear:
         The line contact.
     nu : float or array_like, optional
         Poisson's ratio [-], in (-1, 0.5]; default 0.3.
+    traction : float or array_like, optional
+        Traction coefficient q/p [-], in [-10, 10]; default 0 (see :func:`line_stress`).
+        With traction the maximum leaves the axis; it is searched over the section and
+        the surface as in :func:`max_shear` (``x`` reports where).
 
     Returns
     -------
     MaxShear
-        ``tau_max`` [Pa], ``depth`` [m].
+        ``tau_max`` [Pa], ``depth`` [m], ``x`` [m] (0 without traction), ``y = 0``.
 
     References
     ----------
-    McEwen (1949); Johnson (1985) §4.2.
+    McEwen (1949); Johnson (1985) §§4.2, 7.2.
 
     Examples
     --------
@@ -1487,7 +1491,10 @@ def line_max_shear(lc: LineContact, nu=0.3) -> MaxShear:
     if not isinstance(lc, LineContact):
         raise TypeError(f"lc must be a LineContact; got {type(lc).__name__}")
     nu = _check_nu(nu)
-    b, p, nu = np.broadcast_arrays(np.asarray(lc.b, float), np.asarray(lc.p_max, float), nu)
+    mu = _check_traction(traction)
+    broadcast(nu=nu, traction=mu, lc=np.asarray(lc.b))
+    b, p, nu, mu = np.broadcast_arrays(np.asarray(lc.b, float), np.asarray(lc.p_max, float),
+                                       nu, mu)
     loaded = b > 0
 
     def fun(zeta):
@@ -1501,8 +1508,13 @@ def line_max_shear(lc: LineContact, nu=0.3) -> MaxShear:
         return _tresca_axis((sx, sy, sz), (dsx, dsy, dsz))
 
     v, zeta = _maximize_depth(fun, b.shape)
+    x = np.zeros(np.shape(v))
+    if np.any(mu != 0):
+        v, x, _, zeta = _traction_maxima(np.ones(b.shape), np.full(b.shape, np.inf), nu, mu,
+                                         v, zeta, "tresca")
     return MaxShear(tau_max=_scalar(np.where(loaded, v * p, 0.0)),
-                    depth=_scalar(np.where(loaded, zeta * b, 0.0)))
+                    depth=_scalar(np.where(loaded, zeta * b, 0.0)),
+                    x=_scalar(np.where(loaded, x * b, 0.0)), y=_scalar(np.zeros(np.shape(v))))
 
 
 def line_orthogonal_shear(lc: LineContact) -> OrthogonalShear:

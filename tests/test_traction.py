@@ -301,6 +301,20 @@ class TestMaxima:
         if mu == 0.45:
             assert subsurface.von_mises(c, traction=mu).at_surface
 
+    @pytest.mark.parametrize("mu", [0.1, 0.3])
+    def test_line_max_shear(self, mu):
+        lc = line()
+        b, p = float(lc.b), float(lc.p_max)
+        a, z = subsurface.line_max_shear(lc), subsurface.line_max_shear(lc, traction=0.0)
+        assert (a.tau_max, a.depth, a.x) == (z.tau_max, z.depth, z.x)
+        m = subsurface.line_max_shear(lc, traction=mu)
+        assert subsurface.line_stress(lc, m.x, m.depth, traction=mu).tresca == pytest.approx(
+            m.tau_max, rel=1e-12)
+        X, Z = np.meshgrid(np.linspace(-1.5, 1.5, 301) * b, np.linspace(0, 1.5, 151) * b)
+        assert subsurface.line_stress(lc, X, Z, traction=mu).tresca.max() <= m.tau_max * (1 + 1e-12)
+        assert m.tau_max / p > a.tau_max / p
+        assert m.at_surface == (mu > 0.2468)        # critical_traction(0, 0.3, "tresca")
+
     def test_negative_traction_mirrors_the_maximum(self):
         c = contact(1.0)
         m1, m2 = subsurface.max_shear(c, traction=0.15), subsurface.max_shear(c, traction=-0.15)
