@@ -427,6 +427,23 @@ def test_quadrature_converges(monkeypatch):
     assert d[1.0] > d[0.7] > 10 * d[0.5]
 
 
+# ----------------------------------------------------------------- teaching figure
+def test_teach_traction_figure(tmp_path):
+    """``ballrace teach subsurface --traction``: the figure is written and the numbers it
+    marks are the library's (circle: the Hamilton-Goodman edge tension)."""
+    from ballrace.validation import teach
+
+    out = tmp_path / "t.png"
+    info = teach.traction_figure(2000.0, 6.35e-3, 6.35e-3, E=200e9, nu=0.3, traction=0.3,
+                                 path=out, n=21)
+    assert out.stat().st_size > 10_000
+    ref = 0.4 / 3 + 4.3 * np.pi * 0.3 / 8
+    assert info["trailing-edge sigma_x / p0"] == pytest.approx(ref, abs=1e-4)
+    assert info["largest surface tension / p0 at (x, y) / b"] == pytest.approx((ref, -1, 0),
+                                                                            abs=1e-4)
+    assert info["Tresca max / p0 at (x, z) / b"][2] == 0.0      # above mu_c = 0.288
+
+
 # ----------------------------------------------------------------- input validation
 def test_traction_range():
     c = contact(1.0)
