@@ -106,7 +106,7 @@ def test_bench_line_section_traction(benchmark):
     assert benchmark(line_section_traction).sxx.shape == (100, 100)
 
 
-def _best(fn, n=3):
+def _best(fn, n=7):
     fn()
     times = []
     for _ in range(n):

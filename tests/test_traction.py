@@ -179,6 +179,19 @@ class TestFrictionlessUnchanged:
         assert np.array_equal(s[:, mu == 0], s0[:, mu == 0])
         assert np.max(np.abs(s[:, mu != 0] - s0[:, mu != 0])) > 0.01 * float(c.p_max)
 
+    def test_block_size_does_not_change_a_bit(self, monkeypatch):
+        """The quadrature is summed in blocks of points (cache-sized, 2**16 nodes); each
+        point's sum is the same whatever the block size - also 2**20, the former one."""
+        c = contact(1.0)
+        X, Z = np.meshgrid(np.linspace(-3, 3, 40) * c.b, np.linspace(0, 3, 40) * c.b)
+        out = []
+        for chunk in (1 << 20, 1 << 16, 1 << 12):
+            monkeypatch.setattr(subsurface, "_CHUNK", chunk)
+            out.append([nd(subsurface.stress(c, X, 0.2 * c.a, Z, traction=m), 1.0)
+                        for m in (0.0, 0.3)])
+        for o in out[1:]:
+            assert np.array_equal(o[0], out[0][0]) and np.array_equal(o[1], out[0][1])
+
     def test_line_and_maxima_bit_for_bit(self):
         lc = line()
         x = np.linspace(-3, 3, 61) * lc.b
