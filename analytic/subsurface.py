@@ -701,21 +701,32 @@ def max_shear(c: HertzContact, nu=0.3, traction=0.0) -> MaxShear:
     (ν = 0.3), 0.30 p0 at 0.78 b for the line contact; this gives 0.310 p0 at 0.481 a
     and, for b/a -> 0, 0.300 p0 at 0.786 b (:func:`line_max_shear`).
 
+    With a traction (``traction`` != 0) the maximum leaves the axis: it is searched over
+    the section y = 0 and the surface z = 0 of each contact (a grid over |x| <= 1.3 a_x,
+    0 <= z <= 1.5 b, 0 <= y <= 1.3 a_y, refined by a bounded Nelder–Mead search to
+    ~1e-10 b; :func:`stress` gives the field), and its position is returned.  Above
+    :func:`critical_traction` it lies on the surface.
+
     Parameters
     ----------
     c : HertzContact
         The contact; arrays give arrays.
     nu : float or array_like, optional
         Poisson's ratio of the body [-], in (-1, 0.5]; default 0.3.
+    traction : float or array_like, optional
+        Traction coefficient q/p [-], in [-10, 10]; default 0 (see :func:`stress`).  At
+        0 the axis search above, unchanged.
 
     Returns
     -------
     MaxShear
-        ``tau_max`` [Pa], ``depth`` [m].
+        ``tau_max`` [Pa], ``depth`` [m], ``x`` [m], ``y`` [m] (x = y = 0 without
+        traction); ``at_surface``.
 
     References
     ----------
-    Thomas & Hoersch (1930); Johnson (1985) §3.4 (circle) and §3.7 (ellipse).
+    Thomas & Hoersch (1930); Johnson (1985) §3.4 (circle), §3.7 (ellipse) and §7.2
+    (traction).
 
     Examples
     --------
@@ -724,6 +735,12 @@ def max_shear(c: HertzContact, nu=0.3, traction=0.0) -> MaxShear:
     >>> m = max_shear(c)
     >>> round(float(m.tau_max / c.p_max), 4), round(float(m.depth / c.a), 4)
     (0.31, 0.4809)
+
+    With a traction coefficient 0.1 the maximum moves forward and up:
+
+    >>> m = max_shear(c, traction=0.1)
+    >>> [round(float(v), 4) for v in (m.tau_max / c.p_max, m.x / c.a, m.depth / c.a)]
+    [0.3124, 0.1224, 0.4739]
     """
     _check_contact(c)
     nu = _check_nu(nu)
@@ -755,17 +772,23 @@ def von_mises(c: HertzContact, nu=0.3, traction=0.0) -> VonMisesMax:
     the axis of a circular contact.  For k = 1, 2.5 and 6.9 a search of the full field
     finds no larger value off the axis (test-suite).
 
+    With a traction the maximum is searched over the section y = 0 and the surface, as
+    in :func:`max_shear`.
+
     Parameters
     ----------
     c : HertzContact
         The contact; arrays give arrays.
     nu : float or array_like, optional
         Poisson's ratio of the body [-], in (-1, 0.5]; default 0.3.
+    traction : float or array_like, optional
+        Traction coefficient q/p [-], in [-10, 10]; default 0 (see :func:`stress`).
 
     Returns
     -------
     VonMisesMax
-        ``sigma_vm`` [Pa], ``depth`` [m].
+        ``sigma_vm`` [Pa], ``depth`` [m], ``x`` [m], ``y`` [m] (x = y = 0 without
+        traction); ``at_surface``.
 
     References
     ----------
@@ -1279,6 +1302,13 @@ def stress(c: HertzContact, x, y, z, nu=0.3, traction=0.0) -> StressState:
     >>> s = stress(c, o.x0, 0.0, o.z0)
     >>> round(float(s.sxz / c.p_max), 6), round(float(o.tau0 / c.p_max), 6)
     (-0.213891, 0.213891)
+
+    With a traction coefficient 0.2, the tension at the trailing edge x = -a,
+    p0[(1-2ν)/3 + (4+ν)πμ/8] (Hamilton & Goodman 1966):
+
+    >>> s = stress(c, -c.a, 0.0, 0.0, nu=0.3, traction=0.2)
+    >>> round(float(s.sxx / c.p_max), 6), round(0.4 / 3 + 4.3 * np.pi * 0.2 / 8, 6)
+    (0.471055, 0.471055)
     """
     _check_contact(c)
     x = as_array(x, "x", bounded=True, tiny_ok=True, unit="m")
@@ -1420,6 +1450,11 @@ def line_stress(lc: LineContact, x, z, nu=0.3, traction=0.0) -> StressState:
     >>> s = line_stress(lc, 0.0, lc.b)
     >>> round(float(s.sxx / lc.p_max), 6), round(float(s.szz / lc.p_max), 6)
     (-0.12132, -0.707107)
+
+    The tension 2μp0 at the trailing edge (Johnson 1985 §7.2):
+
+    >>> round(float(line_stress(lc, -lc.b, 0.0, traction=0.3).sxx / lc.p_max), 12)
+    0.6
     """
     if not isinstance(lc, LineContact):
         raise TypeError(f"lc must be a LineContact; got {type(lc).__name__}")
