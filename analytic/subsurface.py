@@ -1335,12 +1335,14 @@ def stress(c: HertzContact, x, y, z, nu=0.3, traction=0.0) -> StressState:
 
 
 # ------------------------------------------------------------------------- line contact
-def _line_kernel(x, z):
+def _line_kernel(x, z, traction: bool = False):
     """McEwen (1949) stresses (sx, sz, txz)/p0 of a line contact; x, z in units of b.
 
     m, n from m^2 - n^2 = 1 - x^2 + z^2, m n = x z (m >= 0, n with the sign of x); the
     larger of m^2, n^2 is computed directly and the other as (x z)^2 / larger, so
-    there is no cancellation outside the contact strip.
+    there is no cancellation outside the contact strip.  With ``traction`` also
+    sx^q/(mu p0) = n (2 - (z^2 - m^2)/(m^2 + n^2)) - 2x of the traction q = mu p along +x
+    (:func:`_line_traction_kernel`) from the same m, n.
     """
     base = 1.0 - x * x + z * z
     R = np.hypot(base, 2.0 * x * z)               # = m^2 + n^2
@@ -1355,8 +1357,13 @@ def _line_kernel(x, z):
         sx = -(m * (1.0 + (z * z + n2) / Rs) - 2.0 * z)
         sz = -m * (1.0 - (z * z + n2) / Rs)
         txz = -n * (m2 - z * z) / Rs
+        if traction:
+            sxq = n * (2.0 - (z * z - m2) / Rs) - 2.0 * x
     edge = R == 0
-    return (np.where(edge, 0.0, sx), np.where(edge, 0.0, sz), np.where(edge, 0.0, txz))
+    out = (np.where(edge, 0.0, sx), np.where(edge, 0.0, sz), np.where(edge, 0.0, txz))
+    if traction:                                   # at the strip edge sx^q = -2x
+        out = out + (np.where(edge, -2.0 * x, sxq),)
+    return out
 
 
 def _line_traction_kernel(x, z):
@@ -1364,24 +1371,12 @@ def _line_traction_kernel(x, z):
 
     Johnson (1985) eq. 7.18 (Smith & Liu 1953) in this frame:
     sx = n (2 - (z^2 - m^2)/(m^2 + n^2)) - 2x, sz = -n (m^2 - z^2)/(m^2 + n^2),
-    txz = -[m (1 + (z^2 + n^2)/(m^2 + n^2)) - 2z]; m, n as in :func:`_line_kernel`.
-    (sz and txz are the normal load's txz and sx: Flamant's line loads.)
+    txz = -[m (1 + (z^2 + n^2)/(m^2 + n^2)) - 2z]; m, n as in :func:`_line_kernel`:
+    sz and txz are the normal load's txz and sx (Flamant's tangential and normal line
+    loads).
     """
-    base = 1.0 - x * x + z * z
-    R = np.hypot(base, 2.0 * x * z)
-    big = 0.5 * (R + np.abs(base))
-    with np.errstate(divide="ignore", invalid="ignore"):
-        small = np.where(big > 0, (x * z) ** 2 / big, 0.0)
-        m2 = np.where(base >= 0, big, small)
-        n2 = np.where(base >= 0, small, big)
-        m = np.sqrt(m2)
-        n = np.sign(x) * np.sqrt(n2)
-        Rs = np.where(R > 0, R, 1.0)
-        sx = n * (2.0 - (z * z - m2) / Rs) - 2.0 * x
-        sz = -n * (m2 - z * z) / Rs
-        txz = -(m * (1.0 + (z * z + n2) / Rs) - 2.0 * z)
-    edge = R == 0                                  # x = +-b, z = 0: sx = -2x, the rest 0
-    return (np.where(edge, -2.0 * x, sx), np.where(edge, 0.0, sz), np.where(edge, 0.0, txz))
+    sx, _, txz, sxq = _line_kernel(x, z, traction=True)
+    return sxq, txz, sx
 
 
 def line_stress(lc: LineContact, x, z, nu=0.3, traction=0.0) -> StressState:
@@ -1468,16 +1463,18 @@ def line_stress(lc: LineContact, x, z, nu=0.3, traction=0.0) -> StressState:
     loaded = b > 0
     bs = np.where(loaded, b, 1.0)
     xn, zn = _check_far(x / bs, "x", loaded), _check_far(z / bs, "z", loaded)
-    sx, sz, txz = _line_kernel(xn, zn)
+    rub = mu != 0
+    k = _line_kernel(xn, zn, traction=bool(np.any(rub)))
+    sx, sz, txz = k[:3]
     p = np.where(loaded, p, 0.0)
+    if len(k) > 3:                 # traction part: sx^q, sz^q = txz^p, txz^q = sx^p
+        mq = mu * p
+        tx, tz, ttxz = k[3] * mq, txz * mq, sx * mq
     sx, sz, txz = sx * p, sz * p, txz * p
-    if np.any(mu != 0):
-        tx, tz, txz_t = _line_traction_kernel(xn, zn)
-        rub = mu != 0
-        mp_ = mu * p
-        sx = np.where(rub, sx + tx * mp_, sx)
-        sz = np.where(rub, sz + tz * mp_, sz)
-        txz = np.where(rub, txz + txz_t * mp_, txz)
+    if len(k) > 3:
+        sx = np.where(rub, sx + tx, sx)
+        sz = np.where(rub, sz + tz, sz)
+        txz = np.where(rub, txz + ttxz, txz)
     zero = _scalar(np.zeros(sx.shape))
     return StressState(sxx=_scalar(sx), syy=_scalar(nu * (sx + sz)), szz=_scalar(sz),
                        sxy=zero, sxz=_scalar(txz), syz=zero)
