@@ -705,7 +705,8 @@ def max_shear(c: HertzContact, nu=0.3, traction=0.0) -> MaxShear:
     the section y = 0 and the surface z = 0 of each contact (a grid over |x| <= 1.3 a_x,
     0 <= z <= 1.5 b, 0 <= y <= 1.3 a_y, refined by a bounded Nelder–Mead search to
     ~1e-10 b; :func:`stress` gives the field), and its position is returned.  Above
-    :func:`critical_traction` it lies on the surface.
+    :func:`critical_traction` it lies on the surface.  This is one search per contact
+    (about 0.3–1 s each), not vectorised over contacts.
 
     Parameters
     ----------
