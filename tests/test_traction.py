@@ -297,6 +297,21 @@ class TestPublished:
             assert s == pytest.approx(i, abs=1e-8)        # the definition of mu_c
 
 
+@pytest.mark.parametrize("ratio, nu, crit, mu_c", [(0.2, 0.3, "von_mises", 0.3244),
+                                                    (1.0, 0.3, "tresca", 0.2879)])
+def test_critical_traction_table_by_grids(ratio, nu, crit, mu_c):
+    """Values of the table in docs/traction.md, checked without the searches: on fine
+    grids over the section y = 0 (z >= 0.05 b) and the surface, the subsurface maximum
+    is larger at mu_c - 0.006 and the surface one at mu_c + 0.006."""
+    ay = 1.0 / ratio
+    X, Z = np.meshgrid(np.linspace(-1.3, 1.3, 131), np.linspace(0.05, 1.5, 59))
+    Xs, Ys = np.meshgrid(np.linspace(-1.3, 1.3, 261), np.linspace(0, 1.3 * ay, 53))
+    for mu, sign in ((mu_c - 0.006, -1), (mu_c + 0.006, 1)):
+        sec = subsurface._criterion(subsurface._nd_stress(1.0, ay, nu, mu, X, 0.0, Z), crit)
+        sur = subsurface._criterion(subsurface._nd_stress(1.0, ay, nu, mu, Xs, Ys, 0.0), crit)
+        assert sign * (sur.max() - sec.max()) > 0, mu
+
+
 # ----------------------------------------------------------------- maxima with traction
 class TestMaxima:
     def test_small_traction_continuous_with_the_axis(self):
