@@ -1000,8 +1000,14 @@ def critical_traction(ratio, nu=0.3, criterion: str = "von_mises"):
 
     where the interior maximum is the local maximum in the section y = 0 followed from
     z >= 0.05 b (:func:`max_shear`, :func:`von_mises` search the same places), by
-    Brent's method to 1e-7 in μ on 0.001 <= μ <= 0.6.  The contact has its minor semi-axis b along the
-    traction (the ball-bearing case); ``ratio = 0`` is the line contact (plane strain).
+    Brent's method to 1e-7 in μ on 0.001 <= μ <= 0.6.  The contact has its minor
+    semi-axis b along the traction (the ball-bearing case); ``ratio = 0`` is the line
+    contact (plane strain).
+
+    At ν = 0.3 it gives 0.2468 (Tresca) and 0.2628 (von Mises) for the line contact,
+    0.2879 and 0.3047 for the circle; Johnson (1985 §7.2, after Smith & Liu 1953 and
+    Hamilton 1983) quotes about 0.25–0.3 (the range as printed, not checked against the
+    original figures).  A table over ν and b/a is in ``docs/traction.md``.
 
     Parameters
     ----------

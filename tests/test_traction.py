@@ -231,7 +231,8 @@ class TestPublished:
         # the largest surface tension sits there (for mu > 0)
         t = subsurface.surface_tension(c, nu, traction=mu)
         assert t.sigma1 / c.p_max == pytest.approx(ref, abs=1e-12)
-        assert t.x / c.a == pytest.approx(-1.0, abs=1e-7) and t.y / c.a == pytest.approx(0, abs=1e-7)
+        assert t.x / c.a == pytest.approx(-1.0, abs=1e-7)
+        assert t.y / c.a == pytest.approx(0, abs=1e-7)
         # and the other direction mirrors it
         m = subsurface.stress(c, c.a, 0.0, 0.0, nu, traction=-mu)
         assert m.sxx / c.p_max == pytest.approx(ref, abs=1e-14)
