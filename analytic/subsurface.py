@@ -64,6 +64,31 @@ at once.  On the z-axis the integrals are elementary and the closed form
 
 *Line contact* — McEwen's (1949) closed form (Johnson 1985 §4.2), plane strain.
 
+*Tangential traction* (``traction`` = μ: q = μ p on the body along +x, so that on the
+patch σ_zz = -p and τ_xz = -μp; the tension is largest at the trailing edge
+x = -a_x) — Love's potentials for a tangential load (Johnson 1985 §3.2 eqs. 3.6–3.10)
+with :math:`\Phi = \iint p\,\Omega\,dA`, Ω = z ln(ρ+z) - ρ, H = Φ_z, V = H_z:
+
+.. math::
+    \sigma_x &= \tfrac{\mu}{2\pi}\left[2(1+\nu)V_x + 2\nu\Phi_{xxx} - zH_{xxx}\right], \quad
+    \sigma_y = \tfrac{\mu}{2\pi}\left[-2\nu\Phi_{xxx} + zV_{xz} + zH_{xxx}\right], \\
+    \sigma_z &= -\tfrac{\mu}{2\pi} z V_{xz}, \quad
+    \tau_{xy} = \tfrac{\mu}{2\pi}\left[V_y + 2\nu\Phi_{xxy} - zH_{xxy}\right], \quad
+    \tau_{xz} = \tfrac{\mu}{2\pi}\left[V_z - zV_{xx}\right], \quad
+    \tau_{yz} = -\tfrac{\mu}{2\pi} z V_{xy}.
+
+With s(w) = (w q(w))^{1/2} (the depth at which the confocal ellipsoid w passes over
+(x, y)), integrating V_x twice in z and exchanging the order of integration gives
+:math:`H_x = C x \int_\lambda^\infty (s-z)\,dw/((a_x^2+w)\Delta)` and
+:math:`\Phi_x = -\tfrac{C}{2} x \int_\lambda^\infty (s-z)^2\,dw/((a_x^2+w)\Delta)`,
+C = π a_x a_y p0.  Their x- and y-derivatives are six more 1-D integrals
+(:func:`_h_integrals`); the 1/s³ terms are integrated by parts (r = d(s²)/dw > 0), which
+removes a cancellation of two O(1/z) terms near the surface.  They are summed on the
+same trapezoid nodes as the H-terms.  Line contact: Smith & Liu (1953), Johnson (1985)
+eq. 7.18.  The maxima with traction leave the axis: :func:`max_shear` and
+:func:`von_mises` then search the section y = 0 and the surface.  Verification and the
+critical traction table: ``docs/traction.md`` and ``tests/test_traction.py``.
+
 Accuracy (measured; asserted by ``tests/test_subsurface.py``; stresses in units of p_max)
 ------------------------------------------------------------------------------------------
 =============================================================== ==================
@@ -78,6 +103,10 @@ field at y = 0 vs McEwen line contact, k = 1e4: σ_z, τ_xz        1.4e-8, 7e-9
 trace/(1+ν) independent of ν (checks H_xx + H_yy = -V_z)          3e-15
 trapezoid step 0.5 vs 0.2 (quadrature converged)                  < 3e-15
 LP τ0 vs the maximum of the field's τ_xz(x, 0, z), k = 1 … 10    4e-16 relative
+traction part vs Cerruti integrated over the ellipse, k = 1 … 9.5  2e-13 (~1e-14)
+traction: circle trailing-edge tension (Hamilton & Goodman 1966)  1e-14
+traction: ellipse at y = 0 vs Smith & Liu line contact, k = 1e4   2.1e-7
+traction: trapezoid step 0.5 vs 0.2                               1.9e-15
 =============================================================== ==================
 
 Near the contact edge on the surface the field is only as well conditioned as
@@ -97,7 +126,11 @@ Thomas, H.R. & Hoersch, V.A. (1930) Stresses due to the pressure of one elastic 
 upon another. *Univ. Illinois Eng. Exp. Sta. Bull.* 212.
 McEwen, E. (1949) Stresses in elastic cylinders in contact along a generatrix.
 *Phil. Mag.* 40, 454–459.
-Johnson, K.L. (1985) *Contact Mechanics*, Cambridge, §§3.2, 3.4, 3.7, 4.2.
+Johnson, K.L. (1985) *Contact Mechanics*, Cambridge, §§3.2, 3.4, 3.7, 4.2, 7.2.
+Smith, J.O. & Liu, C.K. (1953) Stresses due to tangential and normal loads on an elastic
+solid. *J. Appl. Mech.* 20, 157–166.
+Hamilton, G.M. & Goodman, L.E. (1966) The stress field created by a circular sliding
+contact. *J. Appl. Mech.* 33, 371–376.
 Hamilton, G.M. (1983) Explicit equations for the stresses beneath a sliding spherical
 contact. *Proc. IMechE* 197C, 53–59.
 Carlson, B.C. (1995) Numerical computation of real or complex elliptic integrals.
@@ -109,7 +142,7 @@ import logging
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import special
+from scipy import optimize, special
 
 from ._checks import as_array, broadcast, check_choice, check_nonnegative, check_range
 from .hertz import HertzContact, LineContact, _scalar
@@ -118,6 +151,7 @@ __all__ = [
     "OrthogonalShear",
     "MaxShear",
     "VonMisesMax",
+    "SurfaceTension",
     "StressState",
     "LP_METHODS",
     "LP_APPROXIMATION_ERROR",
@@ -127,6 +161,9 @@ __all__ = [
     "axis_stress",
     "max_shear",
     "von_mises",
+    "surface_tension",
+    "critical_traction",
+    "CRITERIA",
     "stress",
     "line_stress",
     "line_max_shear",
@@ -158,11 +195,12 @@ _CSCH_COEF = 0.16          # Hamrock & Dowson (1981) eq. 3.33
 _H_STEP = 0.5              # trapezoid step in s = ln(w - lambda)
 _S_BELOW = 80.0            # s range below ln(min(ax^2, ay^2) + lambda)
 _S_ABOVE = 38.0            # s range above ln(max(ax^2, ay^2) + lambda)
-_CHUNK = 1 << 20           # quadrature nodes per block (memory bound)
+_CHUNK = 1 << 16           # quadrature nodes per block (cache-sized; any size gives the same bits)
 _DEPTH_MAX = 3.0           # depth searches on (0, 3 b]
 _FAR = 1e30                # field: |x|, |y|, z up to 1e30 b (powers stay finite)
 _NEAR = 1e-60              # field: depths below 1e-60 b are the surface
 _N_GRID = 13               # coarse grid for the depth searches
+_MU_MAX = 10.0             # |traction| allowed (q/p)
 
 
 # ------------------------------------------------------------------------- results
@@ -192,30 +230,71 @@ class OrthogonalShear:
 
 @dataclass(frozen=True)
 class MaxShear:
-    """Maximum Tresca shear stress on the contact axis x = y = 0 (frozen).
+    """Maximum Tresca shear stress and where it occurs (frozen).
+
+    Without traction the maximum lies on the contact axis x = y = 0; with traction it
+    is searched over the section y = 0 and the surface z = 0.
 
     Attributes
     ----------
-    tau_max : max over depth of (sigma_1 - sigma_3)/2 [Pa].
-    depth : Depth z where it occurs [m].
+    tau_max : max of (sigma_1 - sigma_3)/2 [Pa].
+    depth : Depth z where it occurs [m]; 0 when the maximum is at the surface.
+    x : Position along the rolling direction [m]; 0 on the axis.
+    y : Transverse position [m], >= 0 (the field is symmetric in y); 0 on the axis.
     """
 
     tau_max: np.ndarray
     depth: np.ndarray
+    x: np.ndarray = 0.0
+    y: np.ndarray = 0.0
+
+    @property
+    def at_surface(self):
+        """True where the maximum lies on the surface (depth 0) [-]."""
+        return np.asarray(self.depth == 0)[()]
 
 
 @dataclass(frozen=True)
 class VonMisesMax:
-    """Maximum von Mises equivalent stress on the contact axis x = y = 0 (frozen).
+    """Maximum von Mises equivalent stress and where it occurs (frozen).
+
+    Without traction the maximum lies on the contact axis x = y = 0; with traction it
+    is searched over the section y = 0 and the surface z = 0.
 
     Attributes
     ----------
-    sigma_vm : max over depth of the von Mises stress [Pa].
-    depth : Depth z where it occurs [m].
+    sigma_vm : max of the von Mises stress [Pa].
+    depth : Depth z where it occurs [m]; 0 when the maximum is at the surface.
+    x : Position along the rolling direction [m]; 0 on the axis.
+    y : Transverse position [m], >= 0 (the field is symmetric in y); 0 on the axis.
     """
 
     sigma_vm: np.ndarray
     depth: np.ndarray
+    x: np.ndarray = 0.0
+    y: np.ndarray = 0.0
+
+    @property
+    def at_surface(self):
+        """True where the maximum lies on the surface (depth 0) [-]."""
+        return np.asarray(self.depth == 0)[()]
+
+
+@dataclass(frozen=True)
+class SurfaceTension:
+    """Largest principal stress on the surface z = 0 and where it occurs (frozen).
+
+    Attributes
+    ----------
+    sigma1 : max over the surface of the largest principal stress [Pa]; tension > 0.
+    x : Position along the rolling direction [m] (-semi_axis_x: the trailing edge of
+        a traction along +x).
+    y : Transverse position [m], >= 0.
+    """
+
+    sigma1: np.ndarray
+    x: np.ndarray
+    y: np.ndarray
 
 
 @dataclass(frozen=True)
@@ -611,7 +690,7 @@ def axis_stress(c: HertzContact, z, nu=0.3) -> StressState:
                        sxy=zero, sxz=zero, syz=zero)
 
 
-def max_shear(c: HertzContact, nu=0.3) -> MaxShear:
+def max_shear(c: HertzContact, nu=0.3, traction=0.0) -> MaxShear:
     r"""Maximum shear stress (Tresca) on the contact axis and its depth.
 
     .. math:: \tau_{max} = \max_{z} \tfrac12(\sigma_1 - \sigma_3)(0, 0, z)
@@ -622,21 +701,33 @@ def max_shear(c: HertzContact, nu=0.3) -> MaxShear:
     (ν = 0.3), 0.30 p0 at 0.78 b for the line contact; this gives 0.310 p0 at 0.481 a
     and, for b/a -> 0, 0.300 p0 at 0.786 b (:func:`line_max_shear`).
 
+    With a traction (``traction`` != 0) the maximum leaves the axis: it is searched over
+    the section y = 0 and the surface z = 0 of each contact (a grid over |x| <= 1.3 a_x,
+    0 <= z <= 1.5 b, 0 <= y <= 1.3 a_y, refined by a bounded Nelder–Mead search to
+    ~1e-10 b; :func:`stress` gives the field), and its position is returned.  Above
+    :func:`critical_traction` it lies on the surface.  This is one search per contact
+    (about 0.3–1 s each), not vectorised over contacts.
+
     Parameters
     ----------
     c : HertzContact
         The contact; arrays give arrays.
     nu : float or array_like, optional
         Poisson's ratio of the body [-], in (-1, 0.5]; default 0.3.
+    traction : float or array_like, optional
+        Traction coefficient q/p [-], in [-10, 10]; default 0 (see :func:`stress`).  At
+        0 the axis search above, unchanged.
 
     Returns
     -------
     MaxShear
-        ``tau_max`` [Pa], ``depth`` [m].
+        ``tau_max`` [Pa], ``depth`` [m], ``x`` [m], ``y`` [m] (x = y = 0 without
+        traction); ``at_surface``.
 
     References
     ----------
-    Thomas & Hoersch (1930); Johnson (1985) §3.4 (circle) and §3.7 (ellipse).
+    Thomas & Hoersch (1930); Johnson (1985) §3.4 (circle), §3.7 (ellipse) and §7.2
+    (traction).
 
     Examples
     --------
@@ -645,18 +736,33 @@ def max_shear(c: HertzContact, nu=0.3) -> MaxShear:
     >>> m = max_shear(c)
     >>> round(float(m.tau_max / c.p_max), 4), round(float(m.depth / c.a), 4)
     (0.31, 0.4809)
+
+    With a traction coefficient 0.1 the maximum moves forward and up:
+
+    >>> m = max_shear(c, traction=0.1)
+    >>> [round(float(v), 4) for v in (m.tau_max / c.p_max, m.x / c.a, m.depth / c.a)]
+    [0.3124, 0.1224, 0.4739]
     """
     _check_contact(c)
-    axn, ayn, b, p, nu = _axis_inputs(c, _check_nu(nu))
+    nu = _check_nu(nu)
+    mu = _check_traction(traction)
+    broadcast(nu=nu, traction=mu, c=np.asarray(c.b))
+    axn, ayn, b, p, nu = _axis_inputs(c, nu)
+    axn, ayn, b, p, nu, mu = np.broadcast_arrays(axn, ayn, b, p, nu, mu)
 
     def fun(zeta):
         return _tresca_axis(*_axis_kernel(axn, ayn, zeta, nu, deriv=True))
 
     v, zeta = _maximize_depth(fun, axn.shape)
-    return MaxShear(tau_max=_scalar(v * p), depth=_scalar(zeta * b))
+    if not np.any(mu != 0):
+        zero = _scalar(np.zeros(np.shape(v)))
+        return MaxShear(tau_max=_scalar(v * p), depth=_scalar(zeta * b), x=zero, y=zero)
+    v, x, y, zeta = _traction_maxima(axn, ayn, nu, mu, v, zeta, "tresca")
+    return MaxShear(tau_max=_scalar(v * p), depth=_scalar(zeta * b), x=_scalar(x * b),
+                    y=_scalar(y * b))
 
 
-def von_mises(c: HertzContact, nu=0.3) -> VonMisesMax:
+def von_mises(c: HertzContact, nu=0.3, traction=0.0) -> VonMisesMax:
     r"""Maximum von Mises stress on the contact axis and its depth.
 
     .. math:: \sigma_{vm} = \max_z \sqrt{\tfrac12\left[(\sigma_x-\sigma_y)^2
@@ -667,17 +773,23 @@ def von_mises(c: HertzContact, nu=0.3) -> VonMisesMax:
     the axis of a circular contact.  For k = 1, 2.5 and 6.9 a search of the full field
     finds no larger value off the axis (test-suite).
 
+    With a traction the maximum is searched over the section y = 0 and the surface, as
+    in :func:`max_shear`.
+
     Parameters
     ----------
     c : HertzContact
         The contact; arrays give arrays.
     nu : float or array_like, optional
         Poisson's ratio of the body [-], in (-1, 0.5]; default 0.3.
+    traction : float or array_like, optional
+        Traction coefficient q/p [-], in [-10, 10]; default 0 (see :func:`stress`).
 
     Returns
     -------
     VonMisesMax
-        ``sigma_vm`` [Pa], ``depth`` [m].
+        ``sigma_vm`` [Pa], ``depth`` [m], ``x`` [m], ``y`` [m] (x = y = 0 without
+        traction); ``at_surface``.
 
     References
     ----------
@@ -692,13 +804,266 @@ def von_mises(c: HertzContact, nu=0.3) -> VonMisesMax:
     (0.62, 0.4809)
     """
     _check_contact(c)
-    axn, ayn, b, p, nu = _axis_inputs(c, _check_nu(nu))
+    nu = _check_nu(nu)
+    mu = _check_traction(traction)
+    broadcast(nu=nu, traction=mu, c=np.asarray(c.b))
+    axn, ayn, b, p, nu = _axis_inputs(c, nu)
+    axn, ayn, b, p, nu, mu = np.broadcast_arrays(axn, ayn, b, p, nu, mu)
 
     def fun(zeta):
         return _vm_axis(*_axis_kernel(axn, ayn, zeta, nu, deriv=True))
 
     v, zeta = _maximize_depth(fun, axn.shape)
-    return VonMisesMax(sigma_vm=_scalar(v * p), depth=_scalar(zeta * b))
+    if not np.any(mu != 0):
+        zero = _scalar(np.zeros(np.shape(v)))
+        return VonMisesMax(sigma_vm=_scalar(v * p), depth=_scalar(zeta * b), x=zero, y=zero)
+    v, x, y, zeta = _traction_maxima(axn, ayn, nu, mu, v, zeta, "von_mises")
+    return VonMisesMax(sigma_vm=_scalar(v * p), depth=_scalar(zeta * b), x=_scalar(x * b),
+                       y=_scalar(y * b))
+
+
+# ------------------------------------------------------------------------- maxima with traction
+#: Criteria of the searches with traction: Tresca (sigma_1 - sigma_3)/2, von Mises, and
+#: the largest principal stress sigma_1.
+CRITERIA = ("tresca", "von_mises", "principal")
+
+_SEARCH_X = 1.3            # grid over |x| <= 1.3 semi_axis_x (and y <= 1.3 semi_axis_y)
+_SEARCH_Z = 1.5            # section grid over 0 <= z <= 1.5 b
+_INTERIOR_Z = 0.05         # interior maximum: searched at z >= 0.05 b
+_MU_HI = 0.6               # critical traction searched on (0.001, 0.6]
+
+
+def _nd_stress(ax, ay, nu, mu, x, y, z):
+    """Stresses / p0 (6, ...) at points in units of b of one contact; ay = inf: the line."""
+    x, y, z = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (x, y, z)))
+    shape = x.shape
+    x, y, z = x.ravel(), y.ravel(), z.ravel()
+    if np.isinf(ay):
+        sx, sz, txz = _line_kernel(x, z)
+        if mu != 0:
+            tx, tz, tt = _line_traction_kernel(x, z)
+            sx, sz, txz = sx + mu * tx, sz + mu * tz, txz + mu * tt
+        zero = np.zeros_like(sx)
+        out = np.stack([sx, nu * (sx + sz), sz, zero, txz, zero])
+    else:
+        one = np.ones(x.size)
+        out = _field_kernel(ax * one, ay * one, x, y, z, nu * one,
+                            mu * one if mu != 0 else None)
+    return out.reshape((6,) + shape)
+
+
+def _criterion(s, criterion: str):
+    """Tresca, von Mises or sigma_1 of stacked components s (6, ...)."""
+    sxx, syy, szz, sxy, sxz, syz = s
+    if criterion == "von_mises":
+        return np.sqrt(0.5 * ((sxx - syy) ** 2 + (syy - szz) ** 2 + (szz - sxx) ** 2)
+                       + 3.0 * (sxy**2 + syz**2 + sxz**2))
+    t = np.stack([np.stack([sxx, sxy, sxz], -1), np.stack([sxy, syy, syz], -1),
+                  np.stack([sxz, syz, szz], -1)], -2)
+    e = np.linalg.eigvalsh(t)
+    return 0.5 * (e[..., 2] - e[..., 0]) if criterion == "tresca" else e[..., 2]
+
+
+def _search(ax, ay, nu, mu, criterion: str, where: str):
+    """Maximum of a criterion over the section y = 0 ("section", "interior") or the
+    surface z = 0 ("surface") of one contact (units b, p0): (value, x, y, z).
+
+    A grid (|x| <= 1.3 ax, 0 <= z <= 1.5 b, or 0 <= y <= 1.3 ay on the surface) brackets
+    the maximum; Nelder-Mead (bounded: z >= 0) refines it from the best grid point to
+    ~1e-10 in position.  "interior" searches z >= 0.05 b only, so it follows the
+    subsurface maximum even where the surface one is larger.
+    """
+    line = np.isinf(ay)
+    xs = np.linspace(-_SEARCH_X, _SEARCH_X, 53) * ax
+    if where == "surface":
+        ys = np.zeros(1) if line else np.linspace(0.0, _SEARCH_X, 27) * ay
+        G1, G2 = np.meshgrid(xs, ys, indexing="ij")
+        vals = _criterion(_nd_stress(ax, ay, nu, mu, G1, G2, 0.0), criterion)
+        bounds = [(-2.0 * ax, 2.0 * ax)] + ([] if line else [(0.0, 2.0 * ay)])
+
+        def point(v):
+            return (v[0], 0.0 if line else v[1], 0.0)
+    else:
+        zs = np.linspace(0.0, _SEARCH_Z, 31)
+        G1, G2 = np.meshgrid(xs, zs, indexing="ij")
+        vals = _criterion(_nd_stress(ax, ay, nu, mu, G1, 0.0, G2), criterion)
+        if where == "interior":
+            vals = np.where(G2 >= _INTERIOR_Z, vals, -np.inf)
+        bounds = [(-2.0 * ax, 2.0 * ax), (_INTERIOR_Z if where == "interior" else 0.0, 3.0)]
+
+        def point(v):
+            return (v[0], 0.0, v[1])
+    i = np.unravel_index(np.argmax(vals), vals.shape)
+    start = [G1[i]] + ([] if (where == "surface" and line) else [G2[i]])
+    steps = [xs[1] - xs[0], (G2[0, 1] - G2[0, 0]) if G2.shape[1] > 1 else 0.0]
+
+    def neg(v):
+        return -float(_criterion(_nd_stress(ax, ay, nu, mu, *point(v)), criterion))
+
+    simplex = [start] + [[s0 + (0.5 * steps[k] if k == j else 0.0)
+                          for k, s0 in enumerate(start)] for j in range(len(start))]
+    simplex = np.clip(simplex, [bd[0] for bd in bounds], [bd[1] for bd in bounds])
+    res = optimize.minimize(neg, start, method="Nelder-Mead", bounds=bounds,
+                            options=dict(xatol=1e-10, fatol=1e-15, maxiter=4000,
+                                         initial_simplex=simplex))
+    best, v = (res.x, -res.fun) if -res.fun >= vals[i] else (np.asarray(start), vals[i])
+    return (float(v),) + tuple(float(c) for c in point(best))
+
+
+def _nd_maximum(ax, ay, nu, mu, criterion: str):
+    """Global maximum (value, x, y, z) over the section y = 0 and the surface."""
+    a = _search(ax, ay, nu, mu, criterion, "section")
+    b = _search(ax, ay, nu, mu, criterion, "surface")
+    return b if b[0] >= a[0] else a
+
+
+def _traction_maxima(axn, ayn, nu, mu, v, zeta, criterion: str):
+    """Replace the axis maxima (v, zeta) by the global searches where mu != 0."""
+    shape = np.shape(v)
+    v, zeta = np.array(v, dtype=float).reshape(-1), np.array(zeta, dtype=float).reshape(-1)
+    x, y = np.zeros(v.shape), np.zeros(v.shape)
+    axn, ayn, nu, mu = (np.asarray(a, dtype=float).reshape(-1) for a in (axn, ayn, nu, mu))
+    for i in np.flatnonzero(mu != 0):
+        v[i], x[i], y[i], zeta[i] = _nd_maximum(axn[i], ayn[i], nu[i], mu[i], criterion)
+        if zeta[i] < 1e-12:          # the bounded search stops within rounding of z = 0
+            zeta[i] = 0.0
+    return tuple(a.reshape(shape) for a in (v, x, y, zeta))
+
+
+def surface_tension(c: HertzContact, nu=0.3, traction=0.0) -> SurfaceTension:
+    r"""Largest principal (tensile) stress on the surface and where it occurs.
+
+    The maximum over the surface z = 0 (inside and outside the contact) of σ_1, found by
+    a grid over |x| <= 1.3 a_x, 0 <= y <= 1.3 a_y and a bounded Nelder–Mead refinement.
+    Without traction it is the radial tension at the contact edge, (1-2ν)/3 p0 for a
+    circle (Johnson 1985 eq. 3.41).  A traction q = μp along +x adds tension behind
+    the contact: for the circle the maximum sits at the trailing edge x = -a, y = 0 and
+    is
+
+    .. math:: \sigma_1 = p_0\Big[\frac{1-2\nu}{3} + \frac{(4+\nu)\pi\mu}{8}\Big]
+
+    (Hamilton & Goodman 1966; Johnson 1985 §7.2), for the line contact 2μp0 at x = -b.
+
+    Parameters
+    ----------
+    c : HertzContact
+        The contact; arrays give arrays (one search per contact).
+    nu : float or array_like, optional
+        Poisson's ratio of the body [-], in (-1, 0.5]; default 0.3.
+    traction : float or array_like, optional
+        Traction coefficient q/p [-], in [-10, 10]; default 0 (see :func:`stress`).
+
+    Returns
+    -------
+    SurfaceTension
+        ``sigma1`` [Pa], ``x`` [m], ``y`` [m] (y >= 0; the field is symmetric in y).
+
+    References
+    ----------
+    Hamilton, G.M. & Goodman, L.E. (1966) The stress field created by a circular sliding
+    contact. *J. Appl. Mech.* 33, 371–376; Johnson (1985) §§3.4, 7.2.
+
+    Examples
+    --------
+    >>> from ballrace.analytic.hertz import elliptical_contact
+    >>> c = elliptical_contact(1000.0, 0.005, 0.005, 219.78e9)
+    >>> t = surface_tension(c, nu=0.3, traction=0.2)
+    >>> round(float(t.sigma1 / c.p_max), 6), round(float(t.x / c.a), 6)
+    (0.471055, -1.0)
+    >>> round(0.4 / 3 + 4.3 * np.pi * 0.2 / 8, 6)
+    0.471055
+    """
+    _check_contact(c)
+    nu = _check_nu(nu)
+    mu = _check_traction(traction)
+    broadcast(nu=nu, traction=mu, c=np.asarray(c.b))
+    axn, ayn, b, p, nu = _axis_inputs(c, nu)
+    axn, ayn, b, p, nu, mu = np.broadcast_arrays(axn, ayn, b, p, nu, mu)
+    shape = axn.shape
+    out = np.zeros((3, axn.size))
+    for i, (ax, ay, n, m) in enumerate(zip(*(a.reshape(-1) for a in (axn, ayn, nu, mu)))):
+        v, x, y, _ = _search(float(ax), float(ay), float(n), float(m), "principal", "surface")
+        out[:, i] = v, x, y
+    out = out.reshape((3,) + shape)
+    return SurfaceTension(sigma1=_scalar(out[0] * p), x=_scalar(out[1] * b),
+                          y=_scalar(out[2] * b))
+
+
+def critical_traction(ratio, nu=0.3, criterion: str = "von_mises"):
+    r"""Traction coefficient at which the maximum of a stress criterion reaches the surface.
+
+    Below it the maximum of the Tresca or von Mises stress lies below the surface (on
+    the axis without traction, moving towards the leading side as μ rises); above it the
+    surface maximum is larger: surface-initiated damage.  Computed as the root μ_c of
+
+    .. math:: g(\mu) = \max_{z = 0} f - \max_{\text{interior}} f,
+
+    where the interior maximum is the local maximum in the section y = 0 followed from
+    z >= 0.05 b (:func:`max_shear`, :func:`von_mises` search the same places), by
+    Brent's method to 1e-7 in μ on 0.001 <= μ <= 0.6.  The contact has its minor
+    semi-axis b along the traction (the ball-bearing case); ``ratio = 0`` is the line
+    contact (plane strain).
+
+    At ν = 0.3 it gives 0.2468 (Tresca) and 0.2628 (von Mises) for the line contact,
+    0.2879 and 0.3047 for the circle; Johnson (1985 §7.2, after Smith & Liu 1953 and
+    Hamilton 1983) quotes about 0.25–0.3 (the range as printed, not checked against the
+    original figures).  A table over ν and b/a is in ``docs/traction.md``.
+
+    Parameters
+    ----------
+    ratio : float or array_like
+        b/a [-], in [0, 1]; 0 = line contact, 1 = circle.
+    nu : float or array_like, optional
+        Poisson's ratio [-], in (-1, 0.5]; default 0.3.
+    criterion : {"von_mises", "tresca"}
+        The stress whose maximum is followed.
+
+    Returns
+    -------
+    ndarray
+        μ_c [-].
+
+    Raises
+    ------
+    ConvergenceError
+        If g does not change sign on 0.001 <= μ <= 0.6.
+
+    References
+    ----------
+    Hamilton (1983); Hamilton & Goodman (1966); Smith & Liu (1953); Johnson (1985) §7.2:
+    the maximum reaches the surface at μ ≈ 0.25–0.3 (line and circle).
+
+    Examples
+    --------
+    Line contact, ν = 0.3:
+
+    >>> round(float(critical_traction(0.0, 0.3, "tresca")), 4)
+    0.2468
+    """
+    check_choice(criterion, "criterion", ("von_mises", "tresca"))
+    ratio = check_range(ratio, "ratio", 0.0, 1.0, low_inclusive=True, high_inclusive=True,
+                        unit="-")
+    nu = _check_nu(nu)
+    ratio, nu = broadcast(ratio=ratio, nu=nu)
+    out = np.zeros(ratio.shape)
+    for i in np.ndindex(ratio.shape):
+        ay = np.inf if ratio[i] == 0 else 1.0 / float(ratio[i])
+        n = float(nu[i])
+
+        def g(mu):
+            s = _search(1.0, ay, n, mu, criterion, "surface")[0]
+            return s - _search(1.0, ay, n, mu, criterion, "interior")[0]
+
+        g0, g1 = g(1e-3), g(_MU_HI)
+        if not (g0 < 0 < g1):
+            from .loaddist import ConvergenceError
+            raise ConvergenceError(f"critical_traction: the surface minus interior maximum "
+                                   f"does not change sign on [0.001, {_MU_HI}] (b/a = "
+                                   f"{ratio[i]:g}, "
+                                   f"nu = {n:g}); residuals {g0:.3g}, {g1:.3g} p0, 2 "
+                                   "evaluations")
+        out[i] = optimize.brentq(g, 1e-3, _MU_HI, xtol=1e-7)
+    return _scalar(out)
 
 
 # ------------------------------------------------------------------------- full field
@@ -734,16 +1099,24 @@ def _solve_lambda(A, B, x2, y2, z2):
     return lam
 
 
-def _h_integrals(A, B, x2, y2, lam, q0):
+def _h_integrals(A, B, x2, y2, lam, q0, traction: bool = False):
     """(J_xx, J_yy, J_xy) by the trapezoidal rule in s = ln(w - lambda) (module docs).
 
     J_xx = int_lambda^inf [(A+w) q - x^2] / ((A+w)^2 sqrt(g)) dw,
     J_yy likewise, J_xy = int dw / ((A+w)(B+w) sqrt(g)), g = (A+w)(B+w) q, with
     q(w) = q0 + (w - lambda)[x^2/((A+l)(A+w)) + y^2/((B+l)(B+w))] >= 0 written so that
     it cannot lose its sign by rounding (q0 = z^2/lambda, or the surface value inside).
+
+    With ``traction`` also, on the same nodes, the integrals of the traction field
+    (module docs) L = int dw/((A+w)^2 sqrt(g)), N = int w dw/((A+w)^2 D),
+    N_y = int w dw/((A+w)(B+w) D), P = int (F/r)' dw/s, P_xy = int (F_xy/r)' dw/s
+    (L_y = J_xy), with D = ((A+w)(B+w)w)^(1/2), s = (w q)^(1/2),
+    r = d(s^2)/dw = q + w[x^2/(A+w)^2 + y^2/(B+w)^2] (a sum of non-negative terms),
+    F = w^2/((A+w)^3 D), F_xy = w^2/((A+w)^2 (B+w) D): rows 3-7 of the result.
+    The first three rows are computed by the same operations either way.
     """
     n_pts = A.size
-    out = np.zeros((3, n_pts))
+    out = np.zeros((8 if traction else 3, n_pts))
     if n_pts == 0:
         return out
     LA, LB = A + lam, B + lam
@@ -764,10 +1137,24 @@ def _h_integrals(A, B, x2, y2, lam, q0):
         out[0, sl] = np.sum((Aw * q - xa) / (Aw * Aw) * wd, axis=1)
         out[1, sl] = np.sum((Bw * q - yb) / (Bw * Bw) * wd, axis=1)
         out[2, sl] = np.sum(wd / (Aw * Bw), axis=1)
+        if traction:
+            w = lam[sl, None] + d
+            iA, iB = 1.0 / Aw, 1.0 / Bw
+            ga, gb = xa * iA * iA, yb * iB * iB
+            r = q + w * (ga + gb)
+            lw = 1.5 / w - 2.0 * (A[sl, None] * ga * iA + B[sl, None] * gb * iB) / r
+            wD = d * np.sqrt(w * iA * iB)                  # w dw / D
+            iA2 = iA * iA
+            out[3, sl] = np.einsum("ij,ij->i", iA2, wd)
+            out[4, sl] = np.einsum("ij,ij->i", iA2, wD)
+            out[5, sl] = np.einsum("ij,ij->i", iA * iB, wD)
+            c = (w / r) * wd * iA2                         # F/(r s) (A+w) dw
+            out[6, sl] = np.einsum("ij,ij->i", c * iA, lw - 3.5 * iA - 0.5 * iB)
+            out[7, sl] = np.einsum("ij,ij->i", c * iB, lw - 2.5 * iA - 1.5 * iB)
     return out * h
 
 
-def _field_kernel(ax, ay, x, y, z, nu):
+def _field_kernel(ax, ay, x, y, z, nu, mu=None):
     """Six stress components / p0 at (x, y, z) below the ellipse with semi-axes (ax, ay).
 
     1-D arrays of one length; lengths in any one unit (the callers use b).  See the module
@@ -776,6 +1163,8 @@ def _field_kernel(ax, ay, x, y, z, nu):
     sz = -ax ay z^3 / (E Delta), txz = -ax ay x z^2 l / ((A+l) E Delta), ...
     On the loaded surface (z = 0, lambda = 0) the limits are taken explicitly:
     sz = -p/p0, txz = tyz = 0, z I_z -> 2 (p/p0) / (ax ay).
+    With ``mu`` (traction coefficients, same length) the traction part is added where
+    mu != 0 (:func:`_traction_part`); the normal part is computed the same way either way.
     """
     A, B = ax * ax, ay * ay
     x2, y2, z2 = x * x, y * y, z * z
@@ -789,7 +1178,8 @@ def _field_kernel(ax, ay, x, y, z, nu):
     Ix = (2.0 / 3.0) * special.elliprd(LB, lam, LA)
     Iy = (2.0 / 3.0) * special.elliprd(LA, lam, LB)
     f = 0.5 * ax * ay
-    Jxx, Jyy, Jxy = _h_integrals(A, B, x2, y2, lam, q0)
+    ints = _h_integrals(A, B, x2, y2, lam, q0, traction=mu is not None)
+    Jxx, Jyy, Jxy = ints[:3]
 
     lp = np.where(pos, lam, 1.0)
     Dl = np.sqrt(LA) * np.sqrt(LB) * np.sqrt(lp)
@@ -806,6 +1196,9 @@ def _field_kernel(ax, ay, x, y, z, nu):
     txz = np.where(pos, -K * x * z2 * lp / LA, 0.0)
     tyz = np.where(pos, -K * y * z2 * lp / LB, 0.0)
     out = np.stack([sx, sy, sz, txy, txz, tyz])
+    if mu is not None:
+        t = _traction_part(ax, ay, x, y, z, nu, lam, pos, q_surf, Ix, Iy, Jxy, ints[3:])
+        out = np.where(mu != 0, out + mu * t, out)
     if not np.all(np.isfinite(out)):  # pragma: no cover - a bug, never silently NaN
         raise RuntimeError("subsurface stress kernel produced non-finite values")
     if np.any(surf):
@@ -813,15 +1206,58 @@ def _field_kernel(ax, ay, x, y, z, nu):
     return out
 
 
-def stress(c: HertzContact, x, y, z, nu=0.3) -> StressState:
+def _traction_part(ax, ay, x, y, z, nu, lam, pos, q_surf, Ix, Iy, Ly, ints):
+    """Six stress components / (mu p0) of the traction q = mu p along +x (module docs).
+
+    Love's potentials for a tangential surface traction (Johnson 1985 §3.2 eqs.
+    3.6-3.10) with Phi = iint p Omega dA (Omega = z ln(rho + z) - rho), H = Phi_z,
+    V = H_z, per unit C = pi ax ay:
+    sxx = f[2(1+nu) V_x + 2 nu Phi_xxx - z H_xxx], syy = f[-2 nu Phi_xxx + z V_xz + z H_xxx],
+    szz = -f z V_xz, sxy = f[V_y + 2 nu Phi_xxy - z H_xxy], sxz = f[V_z - z V_xx],
+    syz = -f z V_xy (f = C/(2 pi)), where Phi_xxx = x[3M - 2x^2(F(l)/r(l) + zP)],
+    Phi_xxy = y[M_y - 2x^2(F_xy(l)/r(l) + zP_xy)], H_xxx = -x(3L + 2x^2 P),
+    H_xxy = -y(L_y + 2x^2 P_xy), M = N - zL, M_y = N_y - zL_y.
+    """
+    L, N, Ny, P, Pxy = ints
+    LA, LB = ax * ax + lam, ay * ay + lam
+    x2, z2 = x * x, z * z
+    lp = np.where(pos, lam, 1.0)
+    Dl = np.sqrt(LA) * np.sqrt(LB) * np.sqrt(lp)
+    E = (x * lp / LA) ** 2 + (y * lp / LB) ** 2 + z2
+    rl = np.where(pos, E / lp, 1.0)               # r(lambda) = E/lambda > 0 off the patch
+    # lambda G(lambda)/r(lambda), G(w) = 1/((A+w) D(w)); zero on the loaded surface
+    lGr = np.where(pos, np.sqrt(lp) / (LA * np.sqrt(LA) * np.sqrt(LB) * rl), 0.0)
+    f = 0.5 * ax * ay
+    zIz = np.where(pos, 2.0 * z / Dl - z * (Ix + Iy), 2.0 * q_surf / (ax * ay))
+    Vxx = -(Ix - 2.0 * x2 * lGr / LA)
+    Vxy = 2.0 * x * y * lGr / LB
+    Vxz = np.where(pos, 2.0 * x * z * lGr / lp, 0.0)          # 2 x z G(lambda)/r(lambda)
+    Fr = lGr * lp / (LA * LA)                      # F(lambda)/r(lambda)
+    Fxyr = lGr * lp / (LA * LB)
+    Pxxx = x * (3.0 * (N - z * L) - 2.0 * x2 * (Fr + z * P))
+    Pxxy = y * ((Ny - z * Ly) - 2.0 * x2 * (Fxyr + z * Pxy))
+    Hxxx = -x * (3.0 * L + 2.0 * x2 * P)
+    Hxxy = -y * (Ly + 2.0 * x2 * Pxy)
+    sx = f * (-2.0 * (1.0 + nu) * x * Ix + 2.0 * nu * Pxxx - z * Hxxx)
+    sy = f * (-2.0 * nu * Pxxx + z * Vxz + z * Hxxx)
+    sz = -f * z * Vxz
+    txy = f * (-y * Iy + 2.0 * nu * Pxxy - z * Hxxy)
+    txz = f * (-zIz - z * Vxx)
+    tyz = -f * z * Vxy
+    return np.stack([sx, sy, sz, txy, txz, tyz])
+
+
+def stress(c: HertzContact, x, y, z, nu=0.3, traction=0.0) -> StressState:
     r"""Full stress tensor at points (x, y, z) below an elliptical Hertz contact.
 
     Exact linear-elastic half-space solution for the Hertz pressure
-    :math:`p = p_{max}(1 - x^2/a_x^2 - y^2/a_y^2)^{1/2}` (no friction), from Love's
-    potentials (module docs): the V-derivatives are Carlson R_D integrals, the
-    H-derivatives 1-D integrals summed by an exponentially convergent trapezoidal
-    rule.  Valid everywhere in z >= 0, including the surface inside and outside the
-    contact, the axis, the circle (k = 1) and slender ellipses (k up to ~1e4).
+    :math:`p = p_{max}(1 - x^2/a_x^2 - y^2/a_y^2)^{1/2}` and, with ``traction`` mu != 0,
+    the tangential traction q = mu p along +x (full sliding, or a traction coefficient
+    in rolling), from Love's potentials (module docs): the V-derivatives are Carlson
+    R_D integrals, the H- and Φ-derivatives 1-D integrals summed by an exponentially
+    convergent trapezoidal rule.  Valid everywhere in z >= 0, including the surface
+    inside and outside the contact, the axis, the circle (k = 1) and slender ellipses
+    (k up to ~1e4).
 
     Parameters
     ----------
@@ -835,12 +1271,21 @@ def stress(c: HertzContact, x, y, z, nu=0.3) -> StressState:
     nu : float or array_like, optional
         Poisson's ratio of the body [-], in (-1, 0.5]; default 0.3.  Only sxx, syy and
         sxy depend on it.
+    traction : float or array_like, optional
+        Traction coefficient mu = q/p [-], in [-10, 10]; default 0 (frictionless).  The
+        surface carries the tangential traction q = mu p along +x acting on this body
+        (the body whose stresses are computed), e.g. the friction of a counter-body
+        sliding over it in +x; the surface is stretched behind the traction, at the
+        trailing edge x = -semi_axis_x, where the tension is largest.  Negative values
+        reverse it.  Where it is 0 the result is the frictionless field, bit for bit
+        (the traction part is not evaluated there).
 
     Returns
     -------
     StressState
         ``sxx, syy, szz, sxy, sxz, syz`` [Pa] in the broadcast shape; properties
-        ``von_mises``, ``tresca``; method ``principal()``.
+        ``von_mises``, ``tresca``; method ``principal()``.  On the loaded surface
+        ``szz = -p``, ``sxz = -traction * p``, ``syz = 0``.
 
     Raises
     ------
@@ -864,34 +1309,47 @@ def stress(c: HertzContact, x, y, z, nu=0.3) -> StressState:
     >>> s = stress(c, o.x0, 0.0, o.z0)
     >>> round(float(s.sxz / c.p_max), 6), round(float(o.tau0 / c.p_max), 6)
     (-0.213891, 0.213891)
+
+    With a traction coefficient 0.2, the tension at the trailing edge x = -a,
+    p0[(1-2ν)/3 + (4+ν)πμ/8] (Hamilton & Goodman 1966):
+
+    >>> s = stress(c, -c.a, 0.0, 0.0, nu=0.3, traction=0.2)
+    >>> round(float(s.sxx / c.p_max), 6), round(0.4 / 3 + 4.3 * np.pi * 0.2 / 8, 6)
+    (0.471055, 0.471055)
     """
     _check_contact(c)
     x = as_array(x, "x", bounded=True, tiny_ok=True, unit="m")
     y = as_array(y, "y", bounded=True, tiny_ok=True, unit="m")
     z = check_nonnegative(z, "z", "m", bounded=True, tiny_ok=True)
     nu = _check_nu(nu)
-    broadcast(x=x, y=y, z=z, nu=nu, c=np.asarray(c.b))
+    mu = _check_traction(traction)
+    broadcast(x=x, y=y, z=z, nu=nu, traction=mu, c=np.asarray(c.b))
     axn, ayn, b, p, nu = _axis_inputs(c, nu)
-    arrs = np.broadcast_arrays(x, y, z, axn, ayn, b, p, nu)
+    arrs = np.broadcast_arrays(x, y, z, axn, ayn, b, p, nu, mu)
     shape = arrs[0].shape
-    x, y, z, axn, ayn, b, p, nu = (np.ravel(a).astype(float) for a in arrs)
+    x, y, z, axn, ayn, b, p, nu, mu = (np.ravel(a).astype(float) for a in arrs)
     loaded = b > 0
     bs = np.where(loaded, b, 1.0)
     xn, yn, zn = (_check_far(v / bs, name, loaded) for v, name in ((x, "x"), (y, "y"), (z, "z")))
     zn = np.where(zn < _NEAR, 0.0, zn)        # below 1e-60 b: the surface (powers underflow)
-    out = _field_kernel(axn, ayn, xn, yn, zn, nu) * p
+    if np.any(mu != 0):                       # the traction part only where there is one
+        out = _field_kernel(axn, ayn, xn, yn, zn, nu, mu) * p
+    else:                                     # frictionless: exactly the path without it
+        out = _field_kernel(axn, ayn, xn, yn, zn, nu) * p
     out[:, ~loaded] = 0.0
     comps = [_scalar(o.reshape(shape)) for o in out]
     return StressState(*comps)
 
 
 # ------------------------------------------------------------------------- line contact
-def _line_kernel(x, z):
+def _line_kernel(x, z, traction: bool = False):
     """McEwen (1949) stresses (sx, sz, txz)/p0 of a line contact; x, z in units of b.
 
     m, n from m^2 - n^2 = 1 - x^2 + z^2, m n = x z (m >= 0, n with the sign of x); the
     larger of m^2, n^2 is computed directly and the other as (x z)^2 / larger, so
-    there is no cancellation outside the contact strip.
+    there is no cancellation outside the contact strip.  With ``traction`` also
+    sx^q/(mu p0) = n (2 - (z^2 - m^2)/(m^2 + n^2)) - 2x of the traction q = mu p along +x
+    (:func:`_line_traction_kernel`) from the same m, n.
     """
     base = 1.0 - x * x + z * z
     R = np.hypot(base, 2.0 * x * z)               # = m^2 + n^2
@@ -906,11 +1364,29 @@ def _line_kernel(x, z):
         sx = -(m * (1.0 + (z * z + n2) / Rs) - 2.0 * z)
         sz = -m * (1.0 - (z * z + n2) / Rs)
         txz = -n * (m2 - z * z) / Rs
+        if traction:
+            sxq = n * (2.0 - (z * z - m2) / Rs) - 2.0 * x
     edge = R == 0
-    return (np.where(edge, 0.0, sx), np.where(edge, 0.0, sz), np.where(edge, 0.0, txz))
+    out = (np.where(edge, 0.0, sx), np.where(edge, 0.0, sz), np.where(edge, 0.0, txz))
+    if traction:                                   # at the strip edge sx^q = -2x
+        out = out + (np.where(edge, -2.0 * x, sxq),)
+    return out
 
 
-def line_stress(lc: LineContact, x, z, nu=0.3) -> StressState:
+def _line_traction_kernel(x, z):
+    """Stresses (sx, sz, txz)/(mu p0) of the traction q = mu p in +x on a line contact.
+
+    Johnson (1985) eq. 7.18 (Smith & Liu 1953) in this frame:
+    sx = n (2 - (z^2 - m^2)/(m^2 + n^2)) - 2x, sz = -n (m^2 - z^2)/(m^2 + n^2),
+    txz = -[m (1 + (z^2 + n^2)/(m^2 + n^2)) - 2z]; m, n as in :func:`_line_kernel`:
+    sz and txz are the normal load's txz and sx (Flamant's tangential and normal line
+    loads).
+    """
+    sx, _, txz, sxq = _line_kernel(x, z, traction=True)
+    return sxq, txz, sx
+
+
+def line_stress(lc: LineContact, x, z, nu=0.3, traction=0.0) -> StressState:
     r"""Stresses below a Hertz line contact (plane strain), McEwen's closed form.
 
     .. math::
@@ -933,15 +1409,37 @@ def line_stress(lc: LineContact, x, z, nu=0.3) -> StressState:
         Depth [m], >= 0.
     nu : float or array_like, optional
         Poisson's ratio [-], in (-1, 0.5]; default 0.3.
+    traction : float or array_like, optional
+        Traction coefficient mu = q/p [-], in [-10, 10]; default 0.  The tangential
+        traction q = mu p acts on this body along +x; the tension 2 mu p0 sits at the
+        trailing edge x = -b.  Where it is 0 the result is the frictionless field, bit
+        for bit.
 
     Returns
     -------
     StressState
         ``sxx, syy, szz, sxz`` [Pa]; ``sxy = syz = 0``.
 
+    Notes
+    -----
+    The traction part (Smith & Liu 1953; McEwen 1949; Johnson 1985 §7.2 eq. 7.18), in
+    this frame:
+
+    .. math::
+        \sigma_x^q &= \frac{\mu p_0}{b}\Big[n\Big(2 - \frac{z^2 - m^2}{m^2+n^2}\Big)
+            - 2x\Big], \quad
+        \sigma_z^q = -\frac{\mu p_0}{b}\, n\,\frac{m^2 - z^2}{m^2+n^2}, \\
+        \tau_{xz}^q &= -\frac{\mu p_0}{b}\Big[m\Big(1 + \frac{z^2+n^2}{m^2+n^2}\Big)
+            - 2z\Big], \qquad \sigma_y^q = \nu(\sigma_x^q + \sigma_z^q),
+
+    i.e. σ_z^q = μ τ_xz^p and τ_xz^q = μ σ_x^p (Flamant's tangential and normal line
+    loads).  On the surface σ_x^q = -2μ p0 x/b inside the strip: +2μp0 at x = -b.
+
     References
     ----------
-    McEwen (1949); Johnson (1985) §4.2.
+    McEwen (1949); Johnson (1985) §4.2 and §7.2; Smith, J.O. & Liu, C.K. (1953)
+    Stresses due to tangential and normal loads on an elastic solid. *J. Appl. Mech.*
+    20, 157–166.
 
     Examples
     --------
@@ -954,26 +1452,42 @@ def line_stress(lc: LineContact, x, z, nu=0.3) -> StressState:
     >>> s = line_stress(lc, 0.0, lc.b)
     >>> round(float(s.sxx / lc.p_max), 6), round(float(s.szz / lc.p_max), 6)
     (-0.12132, -0.707107)
+
+    The tension 2μp0 at the trailing edge (Johnson 1985 §7.2):
+
+    >>> round(float(line_stress(lc, -lc.b, 0.0, traction=0.3).sxx / lc.p_max), 12)
+    0.6
     """
     if not isinstance(lc, LineContact):
         raise TypeError(f"lc must be a LineContact; got {type(lc).__name__}")
     x = as_array(x, "x", bounded=True, tiny_ok=True, unit="m")
     z = check_nonnegative(z, "z", "m", bounded=True, tiny_ok=True)
     nu = _check_nu(nu)
-    broadcast(x=x, z=z, nu=nu, lc=np.asarray(lc.b))
+    mu = _check_traction(traction)
+    broadcast(x=x, z=z, nu=nu, traction=mu, lc=np.asarray(lc.b))
     b, p = np.asarray(lc.b, float), np.asarray(lc.p_max, float)
-    x, z, b, p, nu = np.broadcast_arrays(x, z, b, p, nu)
+    x, z, b, p, nu, mu = np.broadcast_arrays(x, z, b, p, nu, mu)
     loaded = b > 0
     bs = np.where(loaded, b, 1.0)
-    sx, sz, txz = _line_kernel(_check_far(x / bs, "x", loaded), _check_far(z / bs, "z", loaded))
+    xn, zn = _check_far(x / bs, "x", loaded), _check_far(z / bs, "z", loaded)
+    rub = mu != 0
+    k = _line_kernel(xn, zn, traction=bool(np.any(rub)))
+    sx, sz, txz = k[:3]
     p = np.where(loaded, p, 0.0)
+    if len(k) > 3:                 # traction part: sx^q, sz^q = txz^p, txz^q = sx^p
+        mq = mu * p
+        tx, tz, ttxz = k[3] * mq, txz * mq, sx * mq
     sx, sz, txz = sx * p, sz * p, txz * p
+    if len(k) > 3:
+        sx = np.where(rub, sx + tx, sx)
+        sz = np.where(rub, sz + tz, sz)
+        txz = np.where(rub, txz + ttxz, txz)
     zero = _scalar(np.zeros(sx.shape))
     return StressState(sxx=_scalar(sx), syy=_scalar(nu * (sx + sz)), szz=_scalar(sz),
                        sxy=zero, sxz=_scalar(txz), syz=zero)
 
 
-def line_max_shear(lc: LineContact, nu=0.3) -> MaxShear:
+def line_max_shear(lc: LineContact, nu=0.3, traction=0.0) -> MaxShear:
     r"""Maximum shear stress (Tresca, 3-D with plane-strain σ_y) on the axis of a line contact.
 
     .. math:: \tau_{max} = \max_z \tfrac12(\sigma_1 - \sigma_3)(0, z)
@@ -990,15 +1504,19 @@ def line_max_shear(lc: LineContact, nu=0.3) -> MaxShear:
         The line contact.
     nu : float or array_like, optional
         Poisson's ratio [-], in (-1, 0.5]; default 0.3.
+    traction : float or array_like, optional
+        Traction coefficient q/p [-], in [-10, 10]; default 0 (see :func:`line_stress`).
+        With traction the maximum leaves the axis; it is searched over the section and
+        the surface as in :func:`max_shear` (``x`` reports where).
 
     Returns
     -------
     MaxShear
-        ``tau_max`` [Pa], ``depth`` [m].
+        ``tau_max`` [Pa], ``depth`` [m], ``x`` [m] (0 without traction), ``y = 0``.
 
     References
     ----------
-    McEwen (1949); Johnson (1985) §4.2.
+    McEwen (1949); Johnson (1985) §§4.2, 7.2.
 
     Examples
     --------
@@ -1012,7 +1530,10 @@ def line_max_shear(lc: LineContact, nu=0.3) -> MaxShear:
     if not isinstance(lc, LineContact):
         raise TypeError(f"lc must be a LineContact; got {type(lc).__name__}")
     nu = _check_nu(nu)
-    b, p, nu = np.broadcast_arrays(np.asarray(lc.b, float), np.asarray(lc.p_max, float), nu)
+    mu = _check_traction(traction)
+    broadcast(nu=nu, traction=mu, lc=np.asarray(lc.b))
+    b, p, nu, mu = np.broadcast_arrays(np.asarray(lc.b, float), np.asarray(lc.p_max, float),
+                                       nu, mu)
     loaded = b > 0
 
     def fun(zeta):
@@ -1026,8 +1547,13 @@ def line_max_shear(lc: LineContact, nu=0.3) -> MaxShear:
         return _tresca_axis((sx, sy, sz), (dsx, dsy, dsz))
 
     v, zeta = _maximize_depth(fun, b.shape)
+    x = np.zeros(np.shape(v))
+    if np.any(mu != 0):
+        v, x, _, zeta = _traction_maxima(np.ones(b.shape), np.full(b.shape, np.inf), nu, mu,
+                                         v, zeta, "tresca")
     return MaxShear(tau_max=_scalar(np.where(loaded, v * p, 0.0)),
-                    depth=_scalar(np.where(loaded, zeta * b, 0.0)))
+                    depth=_scalar(np.where(loaded, zeta * b, 0.0)),
+                    x=_scalar(np.where(loaded, x * b, 0.0)), y=_scalar(np.zeros(np.shape(v))))
 
 
 def line_orthogonal_shear(lc: LineContact) -> OrthogonalShear:
@@ -1090,3 +1616,9 @@ def _check_far(v: np.ndarray, name: str, loaded: np.ndarray) -> np.ndarray:
 
 def _check_nu(nu) -> np.ndarray:
     return check_range(nu, "nu", -1.0, 0.5, high_inclusive=True, unit="-")
+
+
+def _check_traction(traction) -> np.ndarray:
+    """Traction coefficient q/p: finite, |traction| <= 10 (beyond any friction coefficient)."""
+    return check_range(traction, "traction", -_MU_MAX, _MU_MAX, low_inclusive=True,
+                       high_inclusive=True, unit="-")

@@ -1,12 +1,16 @@
-"""Subsurface stresses: vectorized on-axis maxima and a full-field section.
+"""Subsurface stresses: vectorized on-axis maxima and full-field sections, with and without
+a tangential traction.
 
 Run with ``make bench`` (pytest-benchmark) or by hand::
 
     .venv/bin/python benchmarks/bench_subsurface.py
 
-Two workloads: the on-axis Tresca and von Mises maxima (depth search) of 10^4 elliptical
-contacts of radius ratios 1 ... 200, and the full stress tensor on a 100 x 100 section of a
-k = 20 contact (Love's potentials).  Both were timed tests before; speed lives here now.
+Workloads: the on-axis Tresca and von Mises maxima (depth search) of 10^4 elliptical
+contacts of radius ratios 1 ... 200; the full stress tensor on a 100 x 100 section of a
+k = 20 contact (Love's potentials); the same section of the ellipse, of a circle and of a
+line contact with a traction coefficient 0.3, each next to its frictionless peer measured
+in the same run (the goal: an ellipse section with traction in <= 0.5 s; the circle and
+the line at the speed of their frictionless fields, printed as ratios).
 """
 from __future__ import annotations
 
@@ -14,6 +18,7 @@ import time
 
 import numpy as np
 
+import ballrace
 from ballrace.analytic import hertz, subsurface
 
 E_PRIME = 219.78e9
@@ -31,6 +36,42 @@ def section_100x100():
     return subsurface.stress(c, X, 0.3 * c.a, Z)
 
 
+def _section(Ry, traction):
+    c = hertz.elliptical_contact(2000.0, 0.005, Ry, E_PRIME)
+    X, Z = np.meshgrid(np.linspace(-3, 3, 100) * c.b, np.linspace(0, 3, 100) * c.b)
+    return subsurface.stress(c, X, 0.0, Z, traction=traction)
+
+
+def ellipse_section_frictionless():
+    return _section(0.1, 0.0)
+
+
+def ellipse_section_traction():
+    return _section(0.1, 0.3)
+
+
+def circle_section_frictionless():
+    return _section(0.005, 0.0)
+
+
+def circle_section_traction():
+    return _section(0.005, 0.3)
+
+
+def _line(traction):
+    lc = hertz.line_contact(1e6, 0.01, np.inf, ballrace.BEARING_STEEL)
+    X, Z = np.meshgrid(np.linspace(-3, 3, 100) * lc.b, np.linspace(0, 3, 100) * lc.b)
+    return subsurface.line_stress(lc, X, Z, traction=traction)
+
+
+def line_section_frictionless():
+    return _line(0.0)
+
+
+def line_section_traction():
+    return _line(0.3)
+
+
 def test_bench_depth_search(benchmark):
     m, v = benchmark(depth_search)
     assert np.all(np.isfinite(m.tau_max)) and np.all(np.isfinite(v.sigma_vm))
@@ -41,9 +82,45 @@ def test_bench_section_100x100(benchmark):
     assert s.sxx.shape == (100, 100)
 
 
-if __name__ == "__main__":
-    for fn in (depth_search, section_100x100):
-        fn()
+def test_bench_ellipse_section_frictionless(benchmark):
+    assert benchmark(ellipse_section_frictionless).sxx.shape == (100, 100)
+
+
+def test_bench_ellipse_section_traction(benchmark):
+    assert benchmark(ellipse_section_traction).sxx.shape == (100, 100)
+
+
+def test_bench_circle_section_frictionless(benchmark):
+    assert benchmark(circle_section_frictionless).sxx.shape == (100, 100)
+
+
+def test_bench_circle_section_traction(benchmark):
+    assert benchmark(circle_section_traction).sxx.shape == (100, 100)
+
+
+def test_bench_line_section_frictionless(benchmark):
+    assert benchmark(line_section_frictionless).sxx.shape == (100, 100)
+
+
+def test_bench_line_section_traction(benchmark):
+    assert benchmark(line_section_traction).sxx.shape == (100, 100)
+
+
+def _best(fn, n=7):
+    fn()
+    times = []
+    for _ in range(n):
         t0 = time.perf_counter()
         fn()
-        print(f"{fn.__name__}: {time.perf_counter() - t0:.3f} s")
+        times.append(time.perf_counter() - t0)
+    return min(times)
+
+
+if __name__ == "__main__":
+    for fn in (depth_search, section_100x100):
+        print(f"{fn.__name__}: {_best(fn, 1):.3f} s")
+    for name in ("ellipse", "circle", "line"):
+        t0 = _best(globals()[f"{name}_section_frictionless"])
+        t1 = _best(globals()[f"{name}_section_traction"])
+        print(f"{name} 100 x 100: frictionless {t0:.4f} s, traction 0.3 {t1:.4f} s, "
+              f"ratio {t1 / t0:.2f}")

@@ -307,6 +307,8 @@ def teach_subsurface(
     nu1: Annotated[float, typer.Option("--nu1", help="Poisson's ratio (both bodies).")] = 0.3,
     out: Annotated[Path, typer.Option("--out", help="PNG to write (its folder is created).")]
         = TEACH_OUT / "subsurface.png",
+    traction: Annotated[float, typer.Option(
+        help="Traction coefficient q/p along +x: draw the contact with and without it.")] = 0.0,
 ):
     """Draw max shear, von Mises and orthogonal shear under a contact, depths marked."""
     from rich.console import Console
@@ -336,7 +338,10 @@ def teach_subsurface(
     except ValueError as exc:
         _usage(console, str(exc))
     try:
-        info = teach.subsurface_figure(q, *radii, E=e, nu=nu1, path=out)
+        if traction:
+            info = teach.traction_figure(q, *radii, E=e, nu=nu1, traction=traction, path=out)
+        else:
+            info = teach.subsurface_figure(q, *radii, E=e, nu=nu1, path=out)
     except ImportError as exc:
         typer.echo(f"error: the subsurface module is not available ({exc})", err=True)
         raise typer.Exit(code=1)

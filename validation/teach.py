@@ -1,4 +1,5 @@
-"""``ballrace teach subsurface``: the stress fields under a contact, depths marked.
+"""``ballrace teach subsurface``: the stress fields under a contact, depths marked
+(with ``--traction``: the same contact with a tangential traction, :func:`traction_figure`).
 
 Draws, in the plane y = 0 through the contact centre, the maximum shear stress
 (Tresca), the von Mises stress and the orthogonal shear stress tau_xz (Lundberg &
@@ -12,7 +13,7 @@ import logging
 import math
 from pathlib import Path
 
-__all__ = ["subsurface_figure"]
+__all__ = ["subsurface_figure", "traction_figure", "TRACTION_SWEEP"]
 
 log = logging.getLogger(__name__)
 
@@ -98,3 +99,119 @@ def subsurface_figure(load, rx1, ry1, rx2=math.inf, ry2=math.inf, *, E=200e9, nu
     return {"p_max [Pa]": p0, "b (semi-axis along x) [m]": b,
             **{f"{k}: value / p0, depth / b": (round(v, 4), round(d, 4))
                for k, (_, d, v) in marks.items()}}
+
+
+#: Traction coefficients of the sweep drawn by :func:`traction_figure`.
+TRACTION_SWEEP = (0.0, 0.1, 0.2, 0.3, 0.4, 0.5)
+
+
+def traction_figure(load, rx1, ry1, rx2=math.inf, ry2=math.inf, *, E=200e9, nu=0.3,
+                    traction=0.3, path="subsurface-traction.png", n: int = 101) -> dict:
+    """Write the traction teaching figure to ``path``; returns the marked numbers.
+
+    Four panels for one contact: the von Mises field in the plane y = 0 without traction
+    and with ``traction`` (maxima marked), the maxima of the von Mises and Tresca
+    stresses and their depths over the traction coefficients of :data:`TRACTION_SWEEP`
+    plus ``traction``, and the surface stress sigma_x along y = 0 (the tension at the
+    trailing edge x = -b).  The traction q = traction * p acts on the body along +x.
+
+    Parameters
+    ----------
+    load : float
+        Normal load [N].
+    rx1, ry1, rx2, ry2 : float
+        Principal radii [m] (concave < 0, ``inf`` flat).
+    E, nu : float
+        Young's modulus [Pa] and Poisson's ratio [-] of both bodies.
+    traction : float
+        Traction coefficient q/p [-], in [-10, 10].
+    path : path
+        PNG to write.
+    n : int
+        Grid points per side of the section.
+    """
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+    import numpy as np
+
+    from ballrace import Material
+    from ballrace.analytic import hertz, subsurface
+
+    c = hertz.point_contact(load, rx1, ry1, rx2, ry2, Material(E=E, nu=nu))
+    mu = float(traction)
+    b, p0 = float(c.semi_axis_x), float(c.p_max)
+    x = np.linspace(-2.0, 2.0, n)
+    z = np.linspace(0.0, 1.5, (n + 1) // 2)
+    X, Z = np.meshgrid(x, z)
+    sweep = sorted(set(TRACTION_SWEEP) | {abs(mu)})
+    vms = [subsurface.von_mises(c, nu=nu, traction=m) for m in sweep]
+    trs = [subsurface.max_shear(c, nu=nu, traction=m) for m in sweep]
+    vm_mu = subsurface.von_mises(c, nu=nu, traction=mu)
+    tr_mu = subsurface.max_shear(c, nu=nu, traction=mu)
+    edge = -np.sign(mu) * b if mu else -b
+    tension = float(subsurface.stress(c, edge, 0.0, 0.0, nu=nu, traction=mu).sxx) / p0
+    st = subsurface.surface_tension(c, nu=nu, traction=mu)
+    fig, axes = plt.subplots(2, 2, figsize=(11, 8))
+    try:
+        for ax, m, v in ((axes[0, 0], 0.0, vms[0]), (axes[0, 1], mu, vm_mu)):
+            f = subsurface.stress(c, X * b, 0.0, Z * b, nu=nu, traction=m).von_mises / p0
+            cs = ax.contourf(x, z, f, levels=24, cmap="viridis")
+            ax.contour(x, z, f, levels=12, colors="k", linewidths=0.3)
+            fig.colorbar(cs, ax=ax, shrink=0.85)
+            xm, zm = float(v.x) / b, float(v.depth) / b
+            ax.plot(xm, zm, "w+", ms=12, mew=2)
+            ax.set_title(f"von Mises / p0, traction {m:g}: max {float(v.sigma_vm) / p0:.3f} "
+                         f"at x = {xm:.2f} b, z = {zm:.2f} b", fontsize=9)
+            ax.set_xlabel("x / b (traction along +x)")
+            ax.set_ylabel("depth z / b")
+            ax.invert_yaxis()
+            ax.set_aspect("equal")
+        ax = axes[1, 0]
+        ax.plot(sweep, [float(v.sigma_vm) / p0 for v in vms], "o-", label="max von Mises / p0")
+        ax.plot(sweep, [float(t.tau_max) / p0 for t in trs], "s-", label="max Tresca / p0")
+        ax2 = ax.twinx()
+        ax2.plot(sweep, [float(v.depth) / b for v in vms], "o--", color="C2",
+                 label="depth of the von Mises max / b")
+        ax2.plot(sweep, [float(t.depth) / b for t in trs], "s--", color="C3",
+                 label="depth of the Tresca max / b")
+        ax2.set_ylabel("depth / b")
+        ax.axvline(abs(mu), color="k", lw=0.7, ls=":")
+        ax.set_xlabel("traction coefficient")
+        ax.set_ylabel("stress / p0")
+        ax.legend(fontsize=7, loc="upper left")
+        ax2.legend(fontsize=7, loc="center right")
+        ax.grid(alpha=0.3)
+        ax = axes[1, 1]
+        xs = np.linspace(-2.0, 2.0, 801)
+        for m in (0.0, mu):
+            ax.plot(xs, subsurface.stress(c, xs * b, 0.0, 0.0, nu=nu, traction=m).sxx / p0,
+                    label=f"sigma_x at the surface, traction {m:g}")
+        ax.plot(edge / b, tension, "ko")
+        ax.set_title(f"surface: tension {tension:.3f} p0 at the trailing edge "
+                     f"x = {edge / b:g} b", fontsize=9)
+        ax.axhline(0.0, color="k", lw=0.5)
+        ax.set_xlabel("x / b")
+        ax.set_ylabel("stress / p0")
+        ax.legend(fontsize=8)
+        ax.grid(alpha=0.3)
+        fig.suptitle(f"Traction {mu:g}: Q = {load:g} N, a = {float(c.a) * 1e3:.3f} mm, "
+                     f"b = {float(c.b) * 1e3:.3f} mm, p0 = {p0 / 1e9:.3f} GPa, nu = {nu}")
+        fig.tight_layout()
+        Path(path).parent.mkdir(parents=True, exist_ok=True)
+        fig.savefig(path, dpi=110)
+    finally:
+        plt.close(fig)
+    log.info("wrote %s", path)
+    return {"p_max [Pa]": p0, "b (semi-axis along x) [m]": b, "traction [-]": mu,
+            "von Mises max / p0 at (x, z) / b": (round(float(vm_mu.sigma_vm) / p0, 4),
+                                                 round(float(vm_mu.x) / b, 4),
+                                                 round(float(vm_mu.depth) / b, 4)),
+            "Tresca max / p0 at (x, z) / b": (round(float(tr_mu.tau_max) / p0, 4),
+                                              round(float(tr_mu.x) / b, 4),
+                                              round(float(tr_mu.depth) / b, 4)),
+            "trailing-edge sigma_x / p0": round(tension, 4),
+            "largest surface tension / p0 at (x, y) / b": (round(float(st.sigma1) / p0, 4),
+                                                           round(float(st.x) / b, 4),
+                                                           round(float(st.y) / b, 4))}
