@@ -129,3 +129,23 @@ def test_cli_reference_page_is_generated_from_every_command():
     for c in commands:
         assert f"``ballrace {c}``" in text and f"Usage: ballrace {c}" in text
     assert "--units UNITS" in text and "take precedence over the file" in text
+
+
+def test_teach_prints_engineering_units(tmp_path):
+    pytest.importorskip("matplotlib")
+    from typer.testing import CliRunner
+
+    from ballrace.analytic import hertz
+    from ballrace.cli import app
+    import ballrace
+
+    res = CliRunner().invoke(app, ["teach", "subsurface", "--out", str(tmp_path / "t.png")])
+    assert res.exit_code == 0, res.output
+    c = hertz.point_contact(2000.0, 6.35e-3, 6.35e-3, float("inf"), float("inf"),
+                            ballrace.Material(200e9, 0.3))
+    rows = {ln.split("  ")[0].strip(): ln.split() for ln in res.stdout.splitlines()}
+    assert rows["p_max"][-2:] == [f"{float(c.p_max) / 1e6:.6g}", "MPa"]
+    assert "[Pa]" not in res.stdout and str(int(float(c.p_max))) not in res.stdout
+    us = CliRunner().invoke(app, ["teach", "subsurface", "--units", "us",
+                                  "--out", str(tmp_path / "u.png")])
+    assert " ksi" in us.stdout and " in " in us.stdout

@@ -12,7 +12,7 @@ from typing import Annotated, Optional
 
 import typer
 
-from ballrace.console import literal
+from ballrace.console import UNITS_HELP, literal
 
 __all__ = ["register"]
 
@@ -309,6 +309,7 @@ def teach_subsurface(
         = TEACH_OUT / "subsurface.png",
     traction: Annotated[float, typer.Option(
         help="Traction coefficient q/p along +x: draw the contact with and without it.")] = 0.0,
+    units: Annotated[str, typer.Option("--units", help=UNITS_HELP)] = "eng",
 ):
     """Draw max shear, von Mises and orthogonal shear under a contact, depths marked."""
     from rich.console import Console
@@ -318,6 +319,8 @@ def teach_subsurface(
     from . import teach
 
     console = Console()
+    if units not in ("eng", "si", "us"):
+        _usage(console, f"--units must be one of eng, si, us; got {units!r}")
     if out.is_dir():                      # --out FOLDER: the figure goes inside it
         out = out / "subsurface.png"
     elif not out.suffix:                  # matplotlib would add ".png" behind our back
@@ -347,9 +350,24 @@ def teach_subsurface(
         raise typer.Exit(code=1)
     except (ValueError, TypeError, OSError) as exc:
         _usage(console, str(exc))
+    from ballrace.console import print_sections
+
     console.print(literal(f"wrote {out}"))
-    for k, v in info.items():
-        console.print(literal(f"  {k}: {v}"))
+    print_sections(console, [("Marked on the figure", _teach_rows(info))], units)
+
+
+def _teach_rows(info: dict) -> list:
+    """``teach``'s numbers as table rows in display units: a key ending in [Pa] is a stress,
+    [m] a length, [-] a number; a tuple (value / p0, position / b) is printed as such."""
+    rows = []
+    for key, v in info.items():
+        kind = {"[Pa]": "stress", "[m]": "length", "[-]": None}.get(key.rsplit(" ", 1)[-1], "")
+        name = key.rsplit(" [", 1)[0] if kind != "" else key
+        if isinstance(v, tuple):
+            rows.append((name, ", ".join(f"{x:.4g}" for x in v), None))
+        else:
+            rows.append((name, float(v), kind or None))
+    return rows
 
 
 def register(app: typer.Typer) -> None:

@@ -68,8 +68,10 @@ def subsurface_figure(load, rx1, ry1, rx2=math.inf, ry2=math.inf, *, E=200e9, nu
             for xm in xs:
                 ax.plot(xm, mz0, "w+", ms=12, mew=2)
             ax.axhline(mz0, color="w", ls="--", lw=0.8)
-            ax.annotate(f"{mv:.3f} p0 at z = {mz0:.3f} b", (xs[0], mz0), color="w",
-                        xytext=(6, -12), textcoords="offset points", fontsize=8)
+            # the value in a corner of the panel (inside it, whatever the mark's place)
+            ax.text(0.02, 0.03, f"{mark}: {mv:.3f} p0 at z = {mz0:.3f} b",
+                    transform=ax.transAxes, fontsize=8, va="bottom", ha="left",
+                    bbox=dict(boxstyle="round,pad=0.2", fc="white", ec="none", alpha=0.8))
             ax.set_title(title, fontsize=10)
             ax.set_xlabel("x / b (rolling direction)")
             ax.set_ylabel("depth z / b")
@@ -80,9 +82,13 @@ def subsurface_figure(load, rx1, ry1, rx2=math.inf, ry2=math.inf, *, E=200e9, nu
         ax.plot(f["tau_max"][:, mid], z, label="max shear on the axis")
         ax.plot(f["von_mises"][:, mid], z, label="von Mises on the axis")
         ax.plot(np.max(np.abs(f["tau_xz"]), axis=1), z, label="max |tau_xz| over x")
-        for name, (_, mz0, _) in marks.items():
+        depths: dict[float, list[str]] = {}        # one label per depth: names that share
+        for name, (_, mz0, _) in marks.items():    # a depth (the circle's max shear and
+            depths.setdefault(round(mz0, 3), []).append(name)   # von Mises) are joined
+        for mz0, names in depths.items():
             ax.axhline(mz0, ls="--", lw=0.7, color="k")
-            ax.annotate(name, (ax.get_xlim()[1], mz0), ha="right", va="bottom", fontsize=7)
+            ax.annotate(", ".join(names), (0.98, mz0), xycoords=("axes fraction", "data"),
+                        ha="right", va="bottom", fontsize=7)
         ax.invert_yaxis()
         ax.set_xlabel("stress / p0")
         ax.set_ylabel("depth z / b")
