@@ -28,15 +28,15 @@ SYSTEMS = {
     "si": {"length": ("m", "m"), "small": ("m", "m"), "force": ("N", "N"),
            "stress": ("Pa", "Pa"), "modulus": ("Pa", "Pa"), "angle": ("rad", "rad"),
            "stiffness": ("N/m^1.5", "N/m**1.5"), "speed": ("m/s", "m/s"),
-           "moment": ("N·m", "N*m")},
+           "moment": ("N·m", "N*m"), "temperature": ("K", "K")},
     "eng": {"length": ("mm", "mm"), "small": ("µm", "um"), "force": ("N", "N"),
             "stress": ("MPa", "MPa"), "modulus": ("GPa", "GPa"), "angle": ("deg", "deg"),
             "stiffness": ("N/mm^1.5", "N/mm**1.5"), "speed": ("m/s", "m/s"),
-            "moment": ("N·m", "N*m")},
+            "moment": ("N·m", "N*m"), "temperature": ("°C", "degC")},
     "us": {"length": ("in", "in"), "small": ("µin", "uin"), "force": ("lbf", "lbf"),
            "stress": ("ksi", "kpsi"), "modulus": ("Mpsi", "Mpsi"), "angle": ("deg", "deg"),
            "stiffness": ("lbf/in^1.5", "lbf/in**1.5"), "speed": ("ft/min", "ft/min"),
-           "moment": ("lbf·in", "lbf*in")},
+           "moment": ("lbf·in", "lbf*in"), "temperature": ("°F", "degF")},
 }
 
 #: Help text of the ``--units`` option of the table-printing commands.
@@ -45,7 +45,12 @@ UNITS_HELP = ("Units of the printed tables: eng (mm, µm, MPa, N, deg), si (m, P
 
 #: SI unit (pint expression) of each kind.
 _SI = {"length": "m", "small": "m", "force": "N", "stress": "Pa", "modulus": "Pa",
-       "angle": "rad", "stiffness": "N/m**1.5", "speed": "m/s", "moment": "N*m"}
+       "angle": "rad", "stiffness": "N/m**1.5", "speed": "m/s", "moment": "N*m",
+       "temperature": "K"}
+
+#: Absolute temperatures are affine, not a factor: K -> display (°C, K, °F).
+_TEMPERATURE = {"eng": lambda k: k - 273.15, "si": lambda k: k,
+                "us": lambda k: (k - 273.15) * 1.8 + 32.0}
 
 
 @functools.cache
@@ -64,11 +69,15 @@ def convert(value, kind: str | None, system: str = "eng"):
     (6.35, 2100.0, 'MPa')
     >>> round(convert(4448.2216152605, "force", "us"), 9), unit_label("force", "us")
     (1000.0, 'lbf')
+    >>> round(convert(343.15, "temperature"), 9), round(convert(343.15, "temperature", "us"), 9)
+    (70.0, 158.0)
     """
     if kind is None or value is None:
         return value
     if system not in SYSTEMS:
         raise ValueError(f"units must be one of {', '.join(SYSTEMS)}; got {system!r}")
+    if kind == "temperature":
+        return _TEMPERATURE[system](value)
     return value * _factor(kind, system)
 
 

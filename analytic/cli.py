@@ -151,7 +151,7 @@ def analyze(case) -> dict:
     oc = case.clearance
     if oc is not None and "P" in out_life:
         # every number of the report from one operating state: say which do not see it
-        notes.append(f"* operating clearance {oc.operating * 1e6:.3g} um (fits, temperatures)"
+        notes.append("* the operating clearance (fits, temperatures; in the tables)"
                      " is used by the load distribution, the Lundberg-Palmgren and the "
                      "ISO/TS 16281 lives (L10r, L10mr); the catalogue lives L10 and L_nm come "
                      "from P = X Fr + Y Fa, which does not see the clearance"

@@ -105,10 +105,8 @@ def iso_life(case, result, P=None) -> dict:
                             "fit_outer": oc.fit_outer, "thermal": oc.thermal,
                             "operating": oc.operating, "pressure_inner": oc.pressure_inner,
                             "pressure_outer": oc.pressure_outer}
-        if oc.operating < 0:
-            notes.append(f"operating clearance {oc.operating * 1e6:.3g} um: preload")
-    notes.append(f"C_u from {Cu_src}; simplified C0/22 = {Cu_simple:.4g} N, 1.5 GPa Hertz method = "
-                 f"{Cu_hertz:.4g} N (ratio {Cu_hertz / Cu_simple:.3f})")
+    notes.append(f"C_u from {Cu_src} (both methods are in the table; Hertz / simplified = "
+                 f"{Cu_hertz / Cu_simple:.3f})")
     out["notes"] = notes
     return out
 
@@ -132,9 +130,12 @@ def rows(iso: dict, catalogue_mark: str = "") -> list[tuple[str, object, object]
         ("C (ISO 281:2007)", iso["C"], "force"),
         ("fatigue load limit C_u", iso["C_u"], "force"),
     ]
+    if "C_u_simplified" in iso and "C_u_hertz" in iso:
+        r += [("- C_u by C0/22 (Annex B, simplified)", iso["C_u_simplified"], "force"),
+              ("- C_u by 1.5 GPa contact stress (Hertz)", iso["C_u_hertz"], "force")]
     if "viscosity" in iso:
         if "oil_temperature" in iso:
-            r.append(("oil temperature", iso["oil_temperature"] - 273.15, "=degC"))
+            r.append(("oil temperature", iso["oil_temperature"], "temperature"))
         r += [("operating viscosity nu", iso["viscosity"] * 1e6, "=mm^2/s"),
               ("reference viscosity nu1", iso["nu1"] * 1e6, "=mm^2/s"),
               ("viscosity ratio kappa", iso["kappa"], None)]

@@ -105,7 +105,7 @@ def test_one_operating_state_in_the_bearing_report(tmp_path):
     assert geo["diametral clearance, unmounted"] == r["iso"]["clearance"]["initial"]
     life = [n for n, _, _ in sections(r)[1][1]] + [n for n, _, _ in sections(r)[-1][1]]
     assert "L10h (ISO 281:2007) *" in life and "modified rating life L_nmh *" in life
-    note = [n for n in r["notes"] if n.startswith("* operating clearance")]
+    note = [n for n in r["notes"] if n.startswith("* the operating clearance")]
     assert len(note) == 1 and "not its life" in note[0]
     assert not any("is used by the load distribution" in n and "free contact" in n
                    for n in r["notes"])
@@ -149,3 +149,19 @@ def test_teach_prints_engineering_units(tmp_path):
     us = CliRunner().invoke(app, ["teach", "subsurface", "--units", "us",
                                   "--out", str(tmp_path / "u.png")])
     assert " ksi" in us.stdout and " in " in us.stdout
+
+
+def test_us_units_reach_every_number_of_the_bearing_output():
+    """--units us: the oil temperature in °F, forces in lbf, no SI number left in the notes."""
+    import re
+
+    from typer.testing import CliRunner
+
+    from ballrace.cli import app
+
+    p = Path(__file__).resolve().parents[1] / "examples" / "bearing_6305_iso.toml"
+    out = CliRunner().invoke(app, ["bearing", str(p), "--units", "us"]).stdout
+    temp = [ln.split() for ln in out.splitlines() if ln.strip().startswith("oil temperature")]
+    assert temp and temp[0][-2:] == ["158", "°F"]                  # 70 degC
+    notes = " ".join(ln for ln in out.splitlines() if ln.startswith("note"))
+    assert not re.search(r"\d\s*(N|um|mm|MPa)\b", notes), notes
