@@ -400,8 +400,7 @@ def lundberg_palmgren_t(k, method: str = "exact"):
 
     whose errors over 0.01 <= b/a <= 1 are :data:`LP_APPROXIMATION_ERROR`: up to 3.4 %
     in t, 4.7 % in z0 and 2.2 % in tau0, near b/a = 0.56 (H&D quote "within 2 percent";
-    the coefficient could not be checked against the printed original, whose equation
-    was lost in the scan).
+    the coefficient is not checked against the printed equation).
 
     Parameters
     ----------
