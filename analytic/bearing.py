@@ -39,8 +39,9 @@ log = logging.getLogger(__name__)
 RACES = ("inner", "outer")
 
 
-#: Groove conformity r/D above which a warning is given: real ball bearings have
-#: 0.505-0.57 (Harris 2001 §2.3; ISO 281:2007 §6.1.1 rates 0.515-0.53 inner/outer).
+#: Groove conformity r/D above which a warning is given: catalogue ball bearings have
+#: about 0.505-0.57 (ISO 281:2007 §6.1.1 takes its ratings for groove radii up to 0.52 D
+#: inner and 0.53 D outer).
 CONFORMITY_WARN = 0.6
 
 
