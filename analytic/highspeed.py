@@ -91,8 +91,10 @@ from .kinematics import _kinematics_beta
 from .loaddist import ConvergenceError
 
 __all__ = [
+    "CAGE_RATIO_RANGE",
     "CONTROLS",
     "GYROSCOPIC",
+    "TRACTION_LIMIT",
     "ORBITALS",
     "HighSpeedResult",
     "ConvergenceError",
@@ -112,6 +114,17 @@ CONTROLS = ("outer", "inner", "jones")
 ORBITALS = ("cage", "ball")
 #: Treatments of the gyroscopic moment accepted by :func:`solve`.
 GYROSCOPIC = ("harris", "controlling-race", "none")
+#: Traction coefficient [-] above which a ball is flagged as skidding when no
+#: ``friction_coefficient`` is given: an upper value of the traction of lubricated
+#: rolling contacts (order of magnitude; not checked against a specific source).
+TRACTION_LIMIT = 0.1
+#: Rolling range of the cage speed ratio f = (omega_c - omega_o)/(omega_i - omega_o):
+#: flagged below CAGE_RATIO_RANGE[0] (1 - D/d_m) and above CAGE_RATIO_RANGE[1].  Rolling
+#: without slip on both races at contact angles between 0 and 90 deg gives
+#: f = (1 - (D/d_m) cos alpha)/2, between (1 - D/d_m)/2 and 1/2 (H&D 1981 eq. 3.77);
+#: the flags are set at half the lower and 0.9 (the balls nearly carried round with the
+#: ring) -- screening limits, not material data.
+CAGE_RATIO_RANGE = (0.25, 0.9)
 
 
 # =========================================================================== formulas
@@ -304,12 +317,6 @@ def _lambdas(outer, gyro):
     return li, lo
 
 
-def _fold(a):
-    """Angle of a line folded into (-pi/2, pi/2] [rad] (a contact normal has no sense)."""
-    a = np.where(a > 0.5 * np.pi, a - np.pi, a)
-    return np.where(a <= -0.5 * np.pi, a + np.pi, a)
-
-
 class _Balls:
     """Per-ball state: geometry, loads, kinematics, residuals and ring contributions."""
 
@@ -337,20 +344,27 @@ class _Balls:
         self.sai, self.cai = e1 / li, e2 / li
         self.ao = np.arctan2(X1, X2)
         self.ai = np.arctan2(e1, e2)
+        # The grooves are half tori: a race touches the ball only where the line of
+        # centres lies less than 90 deg from its groove bottom (e2 > 0 at the inner race,
+        # X2 > 0 at the outer race); beyond that there is no ring material and the
+        # contact carries nothing, as in the static model (loaddist._State).
+        self.on_i, self.on_o = e2 > 0, X2 > 0
         Ki, Ko = _stiffness(m, self.ai, self.ao)
-        self.Qi = Ki * np.maximum(self.di, 0.0) ** 1.5
-        self.Qo = Ko * np.maximum(self.do, 0.0) ** 1.5
+        self.Qi = np.where(self.on_i, Ki * np.maximum(self.di, 0.0) ** 1.5, 0.0)
+        self.Qo = np.where(self.on_o, Ko * np.maximum(self.do, 0.0) ** 1.5, 0.0)
         # An open contact has no contact angle: for the kinematics it takes the angle of
         # the line of groove centres, blended in over a deflection of 1e-5 D (loads there
         # are ~1 N or less) so that the equations stay continuous.
         # (the line, not its direction: folded into (-pi/2, pi/2], so that a far-side ball
         # of a ring displaced by more than A cos(beta_f) does not get an angle near pi)
+        # These kinematic angles set only the speeds; the forces act along the
+        # mechanical angles ai, ao (|ai|, |ao| < pi/2 wherever the contact is loaded).
         base = np.arctan(self.A1 / np.where(self.A2 == 0.0, 1e-300, self.A2))
         d_ref = 1e-5 * m.D
-        self.wgt_i = np.clip(self.di / d_ref, 0.0, 1.0)
-        self.wgt_o = np.clip(self.do / d_ref, 0.0, 1.0)
-        self.ai_k = base + self.wgt_i * (_fold(self.ai) - base)
-        self.ao_k = base + self.wgt_o * (_fold(self.ao) - base)
+        self.wgt_i = np.where(self.on_i, np.clip(self.di / d_ref, 0.0, 1.0), 0.0)
+        self.wgt_o = np.where(self.on_o, np.clip(self.do / d_ref, 0.0, 1.0), 0.0)
+        self.ai_k = base + self.wgt_i * (np.where(self.on_i, self.ai, base) - base)
+        self.ao_k = base + self.wgt_o * (np.where(self.on_o, self.ao, base) - base)
         # kinematics (race control) at the current angles
         rho = m.D / m.dm
         # a ball cannot be controlled by a race it does not touch: inner control fades
@@ -424,9 +438,19 @@ class HighSpeedResult:
     inner_loads, outer_loads : ndarray
         Ball–race normal loads Q_i, Q_o [N].
     inner_contact_angles, outer_contact_angles : ndarray
-        Contact angles alpha_i, alpha_o [rad].
+        Contact angles alpha_i, alpha_o [rad]: the angles of the lines of centres along
+        which Q_i, Q_o and the friction forces act in the force balances (the module
+        equations hold with exactly these).  A contact without load reports its line of
+        centres, limited to the groove edge (+-pi/2) where it lies beyond it.
+    inner_kinematic_angles, outer_kinematic_angles : ndarray
+        Angles [rad] used for the speeds (omega_c, omega_R, beta): the contact angle of a
+        loaded contact, blended into the angle of the line of groove centres over the
+        first 1e-5 D of deflection (an open contact has no rolling point).  Not used in
+        the force balances.
     inner_deflections, outer_deflections : ndarray
-        Contact deflections delta_i, delta_o [m] (negative: contact open).
+        Contact deflections delta_i, delta_o [m] (negative: contact open; positive
+        without load where the line of centres is past the groove edge, see
+        ``beyond_groove_inner``).
     ball_positions : ndarray, shape (Z, 2)
         Axial and radial position (X1, X2) of each ball centre relative to its
         outer-groove curvature centre [m].
@@ -469,6 +493,29 @@ class HighSpeedResult:
     gyroscopic_slip : ndarray of bool or None
         Per ball, True where the friction needed to resist M_g exceeds mu Q at a
         reacting contact (the ball would pivot; Harris 2001 ch. 25).
+    inner_friction_share, outer_friction_share : ndarray
+        lambda_i, lambda_o [-]: the friction force resisting M_g at each contact is
+        lambda M_g / D (module equations; 0 for a contact without load and for
+        ``gyroscopic="none"``).  With the reported loads, angles, M_g and F_c they
+        rebuild every ball balance and the ring balance.
+    beyond_groove_inner, beyond_groove_outer : ndarray of bool
+        Per ball, True where the ball overlaps the full groove torus but its line of
+        centres lies 90 deg or more from the groove bottom (no ring material there: the
+        contact is taken as unloaded, as in the static model; the ball would bear on
+        the land), or where a loaded contact lies beyond the shoulder edge
+        (``BallBearing.shoulder_angle``, when given).
+    skidding : ndarray of bool
+        Per ball, True where the friction needed at a loaded contact to resist the
+        gyroscopic moment exceeds ``friction_coefficient`` (default 0.1) times its
+        normal load, so that the ball cannot roll as the race-control hypothesis
+        assumes (always False with ``gyroscopic="none"``).
+    cage_speed_ratio : float
+        (omega_c - omega_o) / (omega_i - omega_o) [-] of the mean orbital speed (nan
+        when the rings turn together).
+    warnings : tuple of str
+        Where the quasi-static model's assumptions break: contacts past the groove edge,
+        skidding balls, or a cage speed outside the rolling range
+        (:data:`CAGE_RATIO_RANGE`); each also logged at WARNING level.  Empty when none.
     """
 
     bearing: BallBearing
@@ -499,6 +546,15 @@ class HighSpeedResult:
     gyroscopic: str
     friction_coefficient: float | None = None
     gyroscopic_slip: np.ndarray | None = None
+    inner_kinematic_angles: np.ndarray | None = None
+    outer_kinematic_angles: np.ndarray | None = None
+    inner_friction_share: np.ndarray | None = None
+    outer_friction_share: np.ndarray | None = None
+    beyond_groove_inner: np.ndarray | None = None
+    beyond_groove_outer: np.ndarray | None = None
+    skidding: np.ndarray | None = None
+    cage_speed_ratio: float = float("nan")
+    warnings: tuple = ()
 
     @property
     def axial_displacement(self) -> float:
@@ -965,14 +1021,55 @@ def _result(bearing, model, psi, sysm, x, b, L, wi, wo, outer, gyro, mu, iters, 
     sr_o = (1 + rho * np.cos(b.ao_k)) * np.tan(b.ao_k - b.beta) - rho * np.sin(b.ao_k)
     sr_i = np.where(outer, sr_i, 0.0)              # no spin on the controlling race
     sr_o = np.where(outer, 0.0, sr_o)
-    slip = None
-    if mu is not None:
-        fi = np.abs(b.lam_i * b.Mg) / model.D
-        fo = np.abs(b.lam_o * b.Mg) / model.D
-        slip = (fi > mu * b.Qi) | (fo > mu * b.Qo)
-        if np.any(slip):
-            log.warning("highspeed: friction (mu=%g) cannot resist the gyroscopic moment on "
-                        "%d balls (gyroscopic pivoting)", mu, int(np.sum(slip)))
+    # ---- where the model's assumptions break (flags and warnings)
+    warn = []
+
+    def balls_(mask):
+        return ", ".join(str(k + 1) for k in np.flatnonzero(mask))
+
+    fi = np.abs(b.lam_i * b.Mg) / model.D
+    fo = np.abs(b.lam_o * b.Mg) / model.D
+    mu_s = TRACTION_LIMIT if mu is None else mu
+    skid = ((b.Qi > 0) & (fi > mu_s * b.Qi)) | ((b.Qo > 0) & (fo > mu_s * b.Qo))
+    slip = None if mu is None else skid
+    if np.any(skid):
+        need = np.maximum(np.where(b.Qi > 0, fi / np.where(b.Qi > 0, b.Qi, 1.0), 0.0),
+                          np.where(b.Qo > 0, fo / np.where(b.Qo > 0, b.Qo, 1.0), 0.0))
+        warn.append(f"balls {balls_(skid)} skid: the friction needed to resist the "
+                    f"gyroscopic moment is up to {float(np.max(need)):.3g} x the contact "
+                    f"load (> {mu_s:g}); the balls cannot roll as race control assumes")
+    past_i = ~b.on_i & (b.di > 0)
+    past_o = ~b.on_o & (b.do > 0)
+    for race, past, Q, a in (("inner", past_i, b.Qi, b.ai), ("outer", past_o, b.Qo, b.ao)):
+        if np.any(past):
+            warn.append(f"balls {balls_(past)}: {race} line of centres 90 deg or more from "
+                        "the groove bottom (no ring material there; taken as unloaded, the "
+                        "ball would bear on the land)")
+        ts = bearing.shoulder_angle(race)
+        if ts is not None:
+            over = (Q > 0) & (np.abs(a) > ts)
+            if np.any(over):
+                warn.append(f"balls {balls_(over)}: {race} contact angle beyond the shoulder "
+                            f"edge ({np.degrees(ts):.1f} deg from the groove bottom)")
+            past = past | over
+        if race == "inner":
+            past_i = past
+        else:
+            past_o = past
+    ratio = float("nan")
+    if wi != wo and not sysm.static:
+        f = (b.wc - wo) / (wi - wo)
+        ratio = float(np.mean(f))
+        lo_, hi_ = CAGE_RATIO_RANGE[0] * (1.0 - rho), CAGE_RATIO_RANGE[1]
+        out = (f < lo_) | (f > hi_)
+        if np.any(out):
+            warn.append(f"balls {balls_(out)}: orbital speed {float(np.min(f)):.3g}"
+                        + (f"-{float(np.max(f)):.3g}" if np.ptp(f) > 1e-9 else "")
+                        + f" x the relative ring speed, outside the rolling range "
+                        f"[{lo_:.3g}, {hi_:.3g}]: the balls cannot roll on both races "
+                        "(gross sliding; the quasi-static model does not apply)")
+    for w in warn:
+        log.warning("highspeed: %s", w)
     loads = b.C.sum(axis=0)
     arrays = (b.Qi, b.Qo, b.ai_k, b.ao_k, b.di, b.do, b.X1, b.X2, b.Fc, b.Mg, b.wc, b.wR,
               b.beta, sr_i, sr_o, u, loads)
@@ -982,11 +1079,17 @@ def _result(bearing, model, psi, sysm, x, b, L, wi, wo, outer, gyro, mu, iters, 
                                "Newton iterations")
     return HighSpeedResult(
         bearing=bearing, azimuths=psi, speed_inner=wi, speed_outer=wo,
-        inner_loads=b.Qi, outer_loads=b.Qo, inner_contact_angles=b.ai_k,
-        outer_contact_angles=b.ao_k, inner_deflections=b.di, outer_deflections=b.do,
+        inner_loads=b.Qi, outer_loads=b.Qo,
+        inner_contact_angles=np.clip(b.ai, -0.5 * np.pi, 0.5 * np.pi),
+        outer_contact_angles=np.clip(b.ao, -0.5 * np.pi, 0.5 * np.pi),
+        inner_deflections=b.di, outer_deflections=b.do,
         ball_positions=np.stack([b.X1, b.X2], axis=-1), centrifugal_force=b.Fc,
         gyroscopic_moment=b.Mg, orbital_speed=b.wc, spin_speed=b.wR, pitch_angle=b.beta,
         spin_to_roll_inner=sr_i, spin_to_roll_outer=sr_o,
         control=np.where(outer, "outer", "inner"), displacements=u, loads=loads, applied=L,
         residual=res, relative_residual=res / F_ref, iterations=int(iters), gyroscopic=gyro,
-        friction_coefficient=mu, gyroscopic_slip=slip)
+        friction_coefficient=mu, gyroscopic_slip=slip,
+        inner_kinematic_angles=b.ai_k, outer_kinematic_angles=b.ao_k,
+        inner_friction_share=np.array(b.lam_i, float), outer_friction_share=np.array(b.lam_o, float),
+        beyond_groove_inner=past_i, beyond_groove_outer=past_o, skidding=skid,
+        cage_speed_ratio=ratio, warnings=tuple(warn))
