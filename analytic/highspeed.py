@@ -317,6 +317,12 @@ def _lambdas(outer, gyro):
     return li, lo
 
 
+def _smoothstep(t):
+    """0 for t <= 0, 1 for t >= 1, 3t^2 - 2t^3 between (continuous slope) [-]."""
+    t = np.clip(t, 0.0, 1.0)
+    return t * t * (3.0 - 2.0 * t)
+
+
 class _Balls:
     """Per-ball state: geometry, loads, kinematics, residuals and ring contributions."""
 
@@ -361,8 +367,8 @@ class _Balls:
         # mechanical angles ai, ao (|ai|, |ao| < pi/2 wherever the contact is loaded).
         base = np.arctan(self.A1 / np.where(self.A2 == 0.0, 1e-300, self.A2))
         d_ref = 1e-5 * m.D
-        self.wgt_i = np.where(self.on_i, np.clip(self.di / d_ref, 0.0, 1.0), 0.0)
-        self.wgt_o = np.where(self.on_o, np.clip(self.do / d_ref, 0.0, 1.0), 0.0)
+        self.wgt_i = np.where(self.on_i, _smoothstep(self.di / d_ref), 0.0)
+        self.wgt_o = np.where(self.on_o, _smoothstep(self.do / d_ref), 0.0)
         self.ai_k = base + self.wgt_i * (np.where(self.on_i, self.ai, base) - base)
         self.ao_k = base + self.wgt_o * (np.where(self.on_o, self.ao, base) - base)
         # kinematics (race control) at the current angles
@@ -733,14 +739,19 @@ def _newton(sysm, x, rtol, max_iter):
     return x1, b, err, it + it2
 
 
-def _damped_newton(sysm, x, rtol, max_iter):
-    """Damped Newton; returns (x, balls, scaled max residual, iterations)."""
+def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39):
+    """Damped Newton; returns (x, balls, scaled max residual, iterations).
+
+    Stops (unconverged) when the line search needs a step below ``min_step``, or steps
+    below 1/32 in 5 successive iterations (stalled: the Newton direction does not
+    describe the residual, e.g. at the kinks of the contact law or of the blends)."""
     b = sysm.balls(x)
     r = sysm.scaled(sysm.residual(b))
     err = np.max(np.abs(r))
     it = 0
     step_cap = 0.05 * sysm.m.D
-    while err > rtol and it < max_iter:
+    short = 0
+    while err > rtol and it < max_iter and short < 5:
         it += 1
         J = sysm.jacobian(x)
         r_raw = sysm.residual(b)
@@ -756,7 +767,7 @@ def _damped_newton(sysm, x, rtol, max_iter):
             dx *= step_cap / big
         f0 = 0.5 * float(r @ r)
         t = 1.0
-        for _ in range(40):
+        while t >= min_step:
             xn = x + t * dx
             bn = sysm.balls(xn)
             rn = sysm.scaled(sysm.residual(bn))
@@ -767,6 +778,7 @@ def _damped_newton(sysm, x, rtol, max_iter):
             log.debug("highspeed: line search failed at iteration %d (residual %.3e)", it, err)
             break
         x, b, r = xn, bn, rn
+        short = short + 1 if t < 1.0 / 32 else 0
         err = float(np.max(np.abs(r)))
         log.debug("highspeed: iteration %d, step %.3g, scaled residual %.3e", it, t, err)
     return x, b, err, it
@@ -947,42 +959,13 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
     Q_ref = max(F_ref / Z, Fc0)
 
     outer = np.full(Z, control != "inner")
-    total_it = 0
+    count = [0]
+    what = (f"Fa={L[0]:g} N, Fr={L[1]:g} N, Fz={L[2]:g} N, speed_inner={wi:g} rad/s, "
+            f"speed_outer={wo:g} rad/s, control={control!r}, gyroscopic={gyroscopic!r}, "
+            f"orbital={orbital!r}")
     for _ in range(8 if control == "jones" else 1):
-        x = None
-        b = err = None
-        for fraction in ((1.0,) if static else (1.0, None)):
-            if fraction is None:
-                # continuation in speed (F_c grows as speed^2)
-                log.info("highspeed: direct Newton failed (residual %.3e); continuing in speed",
-                         err)
-                steps = (0.25, 0.5, 0.75, 1.0)
-            else:
-                steps = (fraction,)
-            xs = _start(model, psi, u0, wi * steps[0], wo * steps[0], free, static)
-            ok = True
-            for s in steps:
-                sysm = _System(model, psi, L, free, wi * s, wo * s, gyroscopic, static,
-                               F_ref, Q_ref, orbital)
-                sysm.outer = outer
-                xs, b, err, it = _newton(sysm, xs, rtol, max_iter)
-                total_it += it
-                if not err <= rtol:
-                    ok = False
-                    break
-            if ok:
-                x = xs
-                break
-        if x is None:
-            raise ConvergenceError(
-                f"high-speed equilibrium did not converge: scaled residual {err:.3e} "
-                f"(rtol {rtol:g}) after {total_it} Newton iterations (Fa={L[0]:g} N, "
-                f"Fr={L[1]:g} N, speed_inner={wi:g} rad/s, speed_outer={wo:g} rad/s, "
-                f"control={control!r}, orbital={orbital!r})"
-                + (". With inner-race control the gyroscopic moment may need more friction "
-                   "than a lightly loaded inner contact can give; try control='outer' or "
-                   "'jones', or gyroscopic='none'"
-                   if control == "inner" and gyroscopic != "none" else ""))
+        sysm, x, b = _equilibrium(model, psi, L, free, wi, wo, gyroscopic, static, F_ref,
+                                  Q_ref, orbital, outer, u0, rtol, max_iter, count, what)
         if control != "jones" or static:
             break
         new = _jones_outer(bearing, b)
@@ -993,9 +976,107 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
         u0 = sysm.unpack(x)[2]
     else:
         log.warning("highspeed: Jones race-control choice did not settle after 8 rounds")
+    total_it = count[0]
 
     return _result(bearing, model, psi, sysm, x, b, L, wi, wo, sysm.outer, gyroscopic, mu,
                    total_it, F_ref, Q_ref, rtol)
+
+
+def _equilibrium(model, psi, L, free, wi, wo, gyro, static, F_ref, Q_ref, orbital, outer,
+                 u0, rtol, max_iter, count, what):
+    """Solve the equilibrium at the full speeds; returns (system, x, balls).
+
+    Damped Newton from the static start first.  If that fails, the solution branch is
+    followed in speed (omega s, s from 0 to 1; F_c grows as s^2) from the static
+    solution with an adaptive step and a secant predictor.  If the branch cannot be
+    continued to s = 1 (the step falls below 1/1000 at a turning point of the branch,
+    or at the edge of the model: a contact at the groove edge, a friction force needed
+    beyond the contact load), ConvergenceError names the speed fraction reached and the
+    state of the balls there.
+    """
+    def system(s):
+        sysm = _System(model, psi, L, free, wi * s, wo * s, gyro, static, F_ref, Q_ref,
+                       orbital)
+        sysm.outer = outer
+        return sysm
+
+    sysm = system(1.0)
+    x, b, err, it = _damped_newton(sysm, _start(model, psi, u0, wi, wo, free, static), rtol,
+                                   max_iter if static else min(max_iter, 30))
+    count[0] += it
+    if err <= rtol:
+        return sysm, x, b
+    if static:
+        raise ConvergenceError(
+            f"high-speed equilibrium (zero speed) did not converge: scaled residual "
+            f"{err:.3e} (rtol {rtol:g}) after {count[0]} Newton iterations ({what})")
+    log.info("highspeed: direct Newton failed (residual %.3e); continuing in speed", err)
+    s, ds, hist = 0.0, 0.25, []
+    last = None
+    while s < 1.0 and ds >= 1.0 / 128:
+        s_new = min(1.0, s + ds)
+        if not hist:
+            xg = _start(model, psi, u0, wi * s_new, wo * s_new, free, static)
+        elif len(hist) == 1:
+            xg = hist[-1][1]
+        else:
+            (s1, x1), (s2, x2) = hist[-2], hist[-1]
+            xg = x2 + (x2 - x1) * ((s_new - s2) / (s2 - s1))
+        sy = system(s_new)
+        # from the predictor a step converges in 2-5 full Newton steps; a step that needs
+        # heavy damping or more iterations is halved instead
+        xn, bn, err, it = (_damped_newton(sy, xg, rtol, min(max_iter, 30)) if not hist else
+                           _damped_newton(sy, xg, rtol, min(max_iter, 8), 1.0 / 16))
+        count[0] += it
+        log.debug("highspeed: continuation to %.4g of the speed: %s after %d iterations",
+                  s_new, "converged" if err <= rtol else f"failed ({err:.3e})", it)
+        if err <= rtol:
+            s = s_new
+            hist = (hist + [(s, xn)])[-2:]
+            last = (sy, xn, bn)
+            ds = min(2.0 * ds, 0.5)
+        else:
+            ds *= 0.5
+    if s >= 1.0:
+        return last
+    if last is None:
+        raise ConvergenceError(
+            f"high-speed equilibrium not found: Newton did not converge at full speed nor "
+            f"at {100 / 128:.2g} % of it (scaled residual {err:.3e}, rtol {rtol:g}, "
+            f"{count[0]} Newton iterations; {what})")
+    reasons = _model_limits(model, last[2])
+    raise ConvergenceError(
+        f"high-speed equilibrium not found: Newton from the static start failed, and the "
+        f"equilibrium followed in speed from the static solution ends at {100 * s:.4g} % "
+        f"of the speed (none found within {100 / 64:.2g} % beyond; scaled residual "
+        f"{err:.3e}, rtol {rtol:g}, {count[0]} Newton iterations; {what}). There: "
+        + ("; ".join(reasons) if reasons else "a turning point of the solution branch")
+        + ". The quasi-static model has no solution on this branch at the given speed"
+        + ("; with gyroscopic='none' or control='outer'/'jones' it may have one"
+           if gyro != "none" and np.any(~outer) else ""))
+
+
+def _model_limits(model, b):
+    """Descriptions of balls at the limits of the model (for error messages)."""
+    out = []
+
+    def balls_(mask):
+        return ", ".join(str(k + 1) for k in np.flatnonzero(mask))
+
+    for race, Q, a, lam in (("inner", b.Qi, b.ai, b.lam_i), ("outer", b.Qo, b.ao, b.lam_o)):
+        edge = (Q > 0) & (np.abs(a) > np.radians(80.0))
+        if np.any(edge):
+            out.append(f"balls {balls_(edge)} have {race} contact angles up to "
+                       f"{np.degrees(np.max(np.abs(a[edge]))):.1f} deg, approaching the "
+                       "groove edge (90 deg), beyond which the race carries nothing")
+        f = np.abs(lam * b.Mg) / model.D
+        need = np.where(Q > 0, f / np.where(Q > 0, Q, 1.0), 0.0)
+        big = need > 1.0
+        if np.any(big):
+            out.append(f"the friction resisting the gyroscopic moment at the {race} race is "
+                       f"up to {float(np.max(need)):.3g} x the contact load (balls "
+                       f"{balls_(big)}): no traction can hold it")
+    return out
 
 
 def _jones_outer(bearing, b):
