@@ -1077,7 +1077,7 @@ def _equilibrium(model, psi, L, free, wi, wo, gyro, static, F_ref, Q_ref, orbita
                     tangent = np.zeros_like(xn)
             ds = min(2.0 * ds, 0.5)
         else:
-            ds *= 0.5
+            ds = 0.5 * (s_new - s)
     if s >= 1.0:
         return last
     if last is None:
