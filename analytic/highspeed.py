@@ -363,10 +363,13 @@ class _Balls:
 
     def __init__(self, model, psi, X1, X2, u, wi, wo, outer, gyro, static,
                  orbital="ball", wc_fixed=None):
+        # (arrays: X1, X2 (..., Z), u (..., 5): several states at once for the Jacobian)
         m = model
         cp, sp = np.cos(psi), np.sin(psi)
-        self.A1 = m.A * m.sbf + u[0] + m.Ri * (u[3] * sp - u[4] * cp)
-        self.A2 = m.A * m.cbf + u[1] * cp + u[2] * sp
+        u = np.asarray(u, float)
+        U = [u[..., k:k + 1] for k in range(5)]
+        self.A1 = m.A * m.sbf + U[0] + m.Ri * (U[3] * sp - U[4] * cp)
+        self.A2 = m.A * m.cbf + U[1] * cp + U[2] * sp
         if static:
             # zero speed: ball on the line of centres, deflection shared by stiffness
             s = np.hypot(self.A1, self.A2)
@@ -424,14 +427,16 @@ class _Balls:
                          self.Qi * self.Qo / np.where(self.Qi + self.Qo > 0,
                                                       self.Qi + self.Qo, 1.0), 0.0)
             self.num, self.den = q * np.where(q > 0, self.wc, 0.0), q
-            if wc_fixed is not None:                    # (Jacobian: hold the cage speed)
-                wc = wc_fixed
-            elif np.sum(q) > 0:
-                wc = np.sum(self.num) / np.sum(q)
-            else:                                       # no ball drives: classical value
-                wc = 0.5 * (wi * (1 - rho * np.cos(base)) + wo * (1 + rho * np.cos(base)))
-            self.wc_cage = float(np.mean(wc))
+            sq = np.sum(q, axis=-1, keepdims=True)
+            wc = np.where(sq > 0, np.sum(self.num, axis=-1, keepdims=True)
+                          / np.where(sq > 0, sq, 1.0),
+                          # no ball drives: classical value
+                          0.5 * (wi * (1 - rho * np.cos(base)) + wo * (1 + rho * np.cos(base))))
+            if wc_fixed is not None:      # (Jacobian: hold the cage speed; nan: do not)
+                wf = np.asarray(wc_fixed, float)
+                wc = np.where(np.isnan(wf), wc, wf)
             self.wc = np.broadcast_to(wc, self.Qi.shape).astype(float)
+            self.wc_cage = np.mean(self.wc, axis=-1)
             wR_o = (wo - self.wc) * (1.0 + rho * np.cos(self.ao_k)) / (
                 rho * np.cos(self.ao_k - b_o))
             wR_i = (self.wc - wi) * (1.0 - rho * np.cos(self.ai_k)) / (
@@ -673,23 +678,25 @@ class _System:
                       self.static, self.orbital, wc_fixed)
 
     def residual(self, b):
-        ring = self.L[self.free] - b.C.sum(axis=0)[self.free]
-        return np.concatenate([b.R[:, 0], b.R[:, 1], ring])
+        ring = self.L[self.free] - b.C.sum(axis=-2)[..., self.free]
+        return np.concatenate([b.R[..., 0], b.R[..., 1], ring], axis=-1)
 
     def scaled(self, r):
         Z = self.Z
         return np.concatenate([r[:2 * Z] * self.ball_sc, r[2 * Z:] * self.load_sc])
 
-    def jacobian(self, x):
-        """Central differences: all balls' X1 (then X2) at once, then each ring DOF."""
+    def jacobian(self, x, b0=None):
+        """Central differences: all balls' X1 (then X2) at once, then each ring DOF; all
+        perturbed states evaluated together in one batch."""
         Z, nf = self.Z, self.free.size
         n = 2 * Z + nf
         J = np.zeros((n, n))
-        # steps: 1e-7 D, but below 1 % of each closed contact's deflection so that the
-        # difference never straddles the contact edge (delta^1.5 is not smooth at 0)
-        b0 = self.balls(x)
-        d = np.where(b0.di > 0, b0.di, np.inf)
-        d = np.minimum(d, np.where(b0.do > 0, b0.do, np.inf))
+        # steps: 1e-9 D (1e-4 of the blend width 1e-5 D, so that the differences resolve
+        # the blends to ~1e-8), but below 1 % of each contact's deflection or gap so that
+        # the difference never straddles the contact edge (delta^1.5 is not smooth at 0)
+        if b0 is None:
+            b0 = self.balls(x)
+        d = np.minimum(np.abs(b0.di), np.abs(b0.do))
         hmax, hmin = 1e-9 * self.m.D, 1e-12 * self.m.D
         hb = np.clip(1e-2 * d, hmin, hmax)
         h = float(np.clip(np.min(1e-2 * d), hmin, hmax))
@@ -697,81 +704,48 @@ class _System:
         # one cage speed couples all balls: hold it fixed for the per-ball blocks and add
         # the rank-one coupling d(residual)/d(omega_c) x d(omega_c)/dX afterwards
         cage = self.orbital == "cage" and not self.static
-        wc0 = b0.wc_cage if cage else None
+        X1, X2, u = self.unpack(x)
+        N = 4 + 2 * cage + 2 * nf
+        X1s, X2s = np.tile(X1, (N, 1)), np.tile(X2, (N, 1))
+        us = np.tile(u, (N, 1))
+        wcf = np.full((N, 1), np.nan)
+        X1s[0] += hb
+        X1s[1] -= hb
+        X2s[2] += hb
+        X2s[3] -= hb
         if cage:
+            wc0 = float(b0.wc_cage)
             hw = 1e-7 * max(abs(wc0), abs(self.wi), abs(self.wo), 1e-300)
-            bp, bm = self.balls(x, wc0 + hw), self.balls(x, wc0 - hw)
-            rw = (bp.R - bm.R) / (2 * hw)                      # (Z, 2)
-            cw = (bp.C - bm.C)[:, self.free].sum(axis=0) / (2 * hw)   # (nf,)
+            wcf[:4] = wc0
+            wcf[4:6] = [[wc0 + hw], [wc0 - hw]]
+        k0 = 4 + 2 * cage
+        hu = h / self.u_sc
+        for j in range(nf):
+            us[k0 + 2 * j, self.free[j]] += hu[j]
+            us[k0 + 2 * j + 1, self.free[j]] -= hu[j]
+        B = _Balls(self.m, self.psi, X1s, X2s, us, self.wi, self.wo, self.outer, self.gyro,
+                   self.static, self.orbital, wcf)
+        R, C = B.R, B.C[..., self.free]
+        if cage:
+            rw = (R[4] - R[5]) / (2 * hw)                      # (Z, 2)
+            cw = (C[4] - C[5]).sum(axis=0) / (2 * hw)          # (nf,)
             den = np.sum(b0.den)
         for k in (0, 1):
-            xp, xm = x.copy(), x.copy()
-            xp[k * Z:(k + 1) * Z] += hb
-            xm[k * Z:(k + 1) * Z] -= hb
-            bp, bm = self.balls(xp, wc0), self.balls(xm, wc0)
-            dR = (bp.R - bm.R) / (2 * hb[:, None])             # (Z, 2)
-            dC = (bp.C - bm.C)[:, self.free] / (2 * hb[:, None])   # (Z, nf)
+            p, q = 2 * k, 2 * k + 1
+            dR = (R[p] - R[q]) / (2 * hb[:, None])             # (Z, 2)
+            dC = (C[p] - C[q]) / (2 * hb[:, None])             # (Z, nf)
             J[idx, k * Z + idx] = dR[:, 0]
             J[Z + idx, k * Z + idx] = dR[:, 1]
             J[2 * Z:, k * Z:(k + 1) * Z] = -dC.T
             if cage and den > 0:
-                g = ((bp.num - bm.num) - wc0 * (bp.den - bm.den)) / (2 * hb * den)
+                g = ((B.num[p] - B.num[q]) - wc0 * (B.den[p] - B.den[q])) / (2 * hb * den)
                 J[:Z, k * Z:(k + 1) * Z] += np.outer(rw[:, 0], g)
                 J[Z:2 * Z, k * Z:(k + 1) * Z] += np.outer(rw[:, 1], g)
                 J[2 * Z:, k * Z:(k + 1) * Z] -= np.outer(cw, g)
-        for j in range(nf):
-            hu = h / self.u_sc[j]
-            xp, xm = x.copy(), x.copy()
-            xp[2 * Z + j] += hu
-            xm[2 * Z + j] -= hu
-            rp = self.residual(self.balls(xp))
-            rm = self.residual(self.balls(xm))
-            J[:, 2 * Z + j] = (rp - rm) / (2 * hu)
+        if nf:
+            res = self.residual(B)[k0:]
+            J[:, 2 * Z:] = ((res[0::2] - res[1::2]) / (2 * hu[:, None])).T
         return J
-
-
-def _newton(sysm, x, rtol, max_iter):
-    """Damped Newton, with a Levenberg–Marquardt rescue when it stalls.
-
-    Light thrust at moderate speed (218 bearing, 200 N, 3000–4000 rpm, where the
-    centrifugal force outweighs the thrust share of a ball) leaves the damped Newton
-    creeping at step 1/64 with a sufficient-decrease line search; MINPACK's
-    Levenberg–Marquardt (Moré 1978; ``scipy.optimize.root(method="lm")``) with the same
-    Jacobian reaches the basin in ~70 evaluations and Newton then polishes to ``rtol``.
-    Returns (x, balls, scaled max residual, iterations).
-    """
-    x1, b, err, it = _damped_newton(sysm, x, rtol, max_iter)
-    if err <= rtol:
-        return x1, b, err, it
-    from scipy.optimize import root
-
-    Z = sysm.Z
-    row = np.concatenate([np.full(2 * Z, sysm.ball_sc), sysm.load_sc])
-
-    def fun(xx):
-        if not np.all(np.isfinite(xx)):
-            return np.full(xx.shape, 1e10)
-        with np.errstate(all="ignore"):
-            r = sysm.scaled(sysm.residual(sysm.balls(xx)))
-        return r if np.all(np.isfinite(r)) else np.full(r.shape, 1e10)
-
-    def jac(xx):
-        if not np.all(np.isfinite(xx)):
-            return np.eye(xx.size)
-        with np.errstate(all="ignore"):
-            J = sysm.jacobian(xx) * row[:, None]
-        return J if np.all(np.isfinite(J)) else np.eye(xx.size)
-
-    sol = root(fun, x1, jac=jac, method="lm",
-               options={"xtol": 1e-15, "ftol": 1e-15, "maxiter": 50 * (x1.size + 1)})
-    if not np.all(np.isfinite(fun(sol.x))):
-        return x1, b, err, it
-    x2, b2, err2, it2 = _damped_newton(sysm, sol.x, rtol, max_iter)
-    log.info("highspeed: Newton stalled at %.3e; Levenberg-Marquardt (%d evaluations) then "
-             "Newton: %.3e", err, sol.nfev, err2)
-    if err2 < err:
-        return x2, b2, err2, it + it2
-    return x1, b, err, it + it2
 
 
 def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39):
@@ -788,7 +762,7 @@ def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39):
     short = 0
     while err > rtol and it < max_iter and short < 5:
         it += 1
-        J = sysm.jacobian(x)
+        J = sysm.jacobian(x, b)
         r_raw = sysm.residual(b)
         try:
             dx = np.linalg.solve(J, -r_raw)
@@ -834,8 +808,21 @@ def _start(model, psi, u, wi, wo, free, static):
             wc = 0.5 * (wi * (1 - model.D / model.dm) + wo * (1 + model.D / model.dm))
             Fc = model.mass * (model.Roc + model.ro) * wc**2
             _, Ko = _stiffness(model, np.zeros(1), np.zeros(1))
-            X1 = np.where(unl, 0.0, X1)
-            X2 = np.where(unl, model.ro + (Fc / Ko[0]) ** (2.0 / 3.0), X2)
+            # as near the outer-groove bottom as the inner race lets it: the ball centre
+            # on the circle |X| = r_o + d, d the approach under F_c, on the arc within
+            # r_i + d of the inner-groove centre (angle a +- phi, law of cosines), at the
+            # angle nearest 0 (where F_c alone would hold it): at the arc's end both
+            # contacts carry about F_c, and the ball is held in both directions.  (At
+            # the bottom itself an angular-contact ball can overlap the inner race by up
+            # to ~A sin(beta_f).)
+            a = np.arctan2(b.A1, b.A2)
+            dc = (Fc / Ko[0]) ** (2.0 / 3.0)
+            lo = model.ro + dc
+            cphi = (lo**2 + s**2 - (model.ri + dc)**2) / (2.0 * lo * np.maximum(s, 1e-300))
+            phi = np.arccos(np.clip(cphi, -1.0, 1.0))
+            th = np.clip(0.0, a - phi, a + phi)
+            X1 = np.where(unl, lo * np.sin(th), X1)
+            X2 = np.where(unl, lo * np.cos(th), X2)
     x[:Z], x[Z:2 * Z] = X1, X2
     return x
 
