@@ -821,6 +821,11 @@ def _start(model, psi, u, wi, wo, free, static):
             cphi = (lo**2 + s**2 - (model.ri + dc)**2) / (2.0 * lo * np.maximum(s, 1e-300))
             phi = np.arccos(np.clip(cphi, -1.0, 1.0))
             th = np.clip(0.0, a - phi, a + phi)
+            # ... unless the inner race does not hold it at the bottom (contact open there,
+            # or past the inner groove's edge)
+            e2 = b.A2 - lo
+            free_ = ~((e2 > 0) & (np.hypot(b.A1, e2) > model.ri))
+            th = np.clip(np.where(free_, 0.0, th), -0.49 * np.pi, 0.49 * np.pi)
             X1 = np.where(unl, lo * np.sin(th), X1)
             X2 = np.where(unl, lo * np.cos(th), X2)
     x[:Z], x[Z:2 * Z] = X1, X2
@@ -1067,21 +1072,24 @@ def _equilibrium(model, psi, L, free, wi, wo, gyro, static, F_ref, Q_ref, orbita
             ds = 0.5 * (s_new - s)
     if s >= 1.0:
         return last
+    hint = (". With inner-race control the gyroscopic moment may need more friction than "
+            "a lightly loaded inner contact can give; control='outer' or 'jones', or "
+            "gyroscopic='none', may have a solution" if gyro != "none" and np.any(~outer)
+            else "")
     if last is None:
         raise ConvergenceError(
             f"high-speed equilibrium not found: Newton did not converge at full speed nor "
-            f"at {100 / 128:.2g} % of it (scaled residual {err:.3e}, rtol {rtol:g}, "
-            f"{count[0]} Newton iterations; {what})")
+            f"at {100 / 128:.2g} % of it (scaled residual {err:.3e}, rtol {rtol:g}, after "
+            f"{count[0]} Newton iterations; {what})" + hint)
     reasons = _model_limits(model, last[2])
     raise ConvergenceError(
         f"high-speed equilibrium not found: Newton from the static start failed, and the "
         f"equilibrium followed in speed from the static solution ends at {100 * s:.4g} % "
         f"of the speed (none found within {100 / 64:.2g} % beyond; scaled residual "
-        f"{err:.3e}, rtol {rtol:g}, {count[0]} Newton iterations; {what}). There: "
+        f"{err:.3e}, rtol {rtol:g}, after {count[0]} Newton iterations; {what}). There: "
         + ("; ".join(reasons) if reasons else "a turning point of the solution branch")
         + ". The quasi-static model has no solution on this branch at the given speed"
-        + ("; with gyroscopic='none' or control='outer'/'jones' it may have one"
-           if gyro != "none" and np.any(~outer) else ""))
+        + hint)
 
 
 def _model_limits(model, b):
