@@ -337,8 +337,8 @@ def _stiffness(model, ai, ao):
     if fi is None or fo is None:
         return _stiffness_exact(model, np.cos(ai), np.cos(ao))
     # T_k(cos a) = cos(k a): the series is a cosine series in the angle itself
-    k = np.arange(fi.size)
-    return np.cos(np.multiply.outer(ai, k)) @ fi, np.cos(np.multiply.outer(ao, k)) @ fo
+    return (np.cos(np.multiply.outer(ai, np.arange(fi.size))) @ fi,
+            np.cos(np.multiply.outer(ao, np.arange(fo.size))) @ fo)
 
 
 def _lambdas(outer, gyro):

@@ -9,7 +9,7 @@ steel bearings (E = 208 GPa, nu = 0.3, rho = 7850 kg/m^3), D 5-25 mm, D/d_m 0.12
 f_i 0.505-0.52, f_o 0.515-0.54, loads 1e-3-0.5 C (C = ``dynamic_rating()``, log-uniform;
 axial, radial or combined), d_m n 5e4-1.5e6 mm rpm (log-uniform, inner ring), the three
 race-control hypotheses.  Every returned result is re-derived independently
-(``tests/test_fuzz.py::rederive_highspeed``).  Prints: calls, successes,
+(``tests/hsref.py``).  Prints: calls, successes,
 ConvergenceErrors, other errors, flagged (``result.warnings``), wrong by the
 re-derivation, median / p95 / max time per call.
 """
@@ -27,9 +27,9 @@ from ballrace.analytic.loaddist import ConvergenceError
 from ballrace.analytic.materials import Material
 
 HERE = pathlib.Path(__file__).resolve().parent
-_spec = importlib.util.spec_from_file_location("_fuzz", HERE.parent / "tests" / "test_fuzz.py")
-_fuzz = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(_fuzz)
+_spec = importlib.util.spec_from_file_location("_hsref", HERE.parent / "tests" / "hsref.py")
+_hsref = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(_hsref)
 
 STEEL = Material(E=208e9, nu=0.3, density=7850.0)
 
@@ -91,7 +91,7 @@ def main(n=400, seed=21):
         counts["ok"] += 1
         if getattr(r, "warnings", ()):
             counts["flagged"] += 1
-        bad = _fuzz.rederive_highspeed(brg, r)
+        bad = _hsref.rederive_highspeed(brg, r)
         if bad:
             counts["wrong"] += 1
             wrong_examples.append((kind, kw, bad[:2]))
