@@ -443,11 +443,10 @@ class _Balls:
                 rho * np.cos(self.ai_k - b_i))
             self.wR = np.where(outer, wR_o, wR_o + self.wgt_i * (wR_i - wR_o))
         self.Fc = m.mass * (m.Roc + X2) * self.wc**2              # (1/2) m d_orbit wc^2
-        if gyro == "none":
-            self.Mg = np.zeros_like(self.Fc)
+        self.Mg = m.J * self.wR * self.wc * np.sin(self.beta)      # H&D eq. 3.108
+        if gyro == "none":                      # (reported, not in the equilibrium)
             li_, lo_ = np.zeros_like(self.Fc), np.zeros_like(self.Fc)
         else:
-            self.Mg = m.J * self.wR * self.wc * np.sin(self.beta)  # H&D eq. 3.108
             li_, lo_ = _lambdas(outer, gyro)
             # no friction without a normal load: an open contact passes its share on
             li_ = self.wgt_i * li_
