@@ -352,6 +352,11 @@ def _lambdas(outer, gyro):
     return li, lo
 
 
+#: Largest reported angle [rad]: the groove edge, just inside pi/2 (Hertz curvatures need
+#: |alpha| < pi/2).
+_EDGE = float(np.nextafter(0.5 * np.pi, 0.0))
+
+
 def _smoothstep(t):
     """0 for t <= 0, 1 for t >= 1, 3t^2 - 2t^3 between (continuous slope) [-]."""
     t = np.clip(t, 0.0, 1.0)
@@ -486,7 +491,7 @@ class HighSpeedResult:
         Contact angles alpha_i, alpha_o [rad]: the angles of the lines of centres along
         which Q_i, Q_o and the friction forces act in the force balances (the module
         equations hold with exactly these).  A contact without load reports its line of
-        centres, limited to the groove edge (+-pi/2) where it lies beyond it.
+        centres, limited to the groove edge (+-pi/2, just inside) where it lies beyond.
     inner_kinematic_angles, outer_kinematic_angles : ndarray
         Angles [rad] used for the speeds (omega_c, omega_R, beta): the contact angle of a
         loaded contact, blended into the angle of the line of groove centres over the
@@ -1196,8 +1201,8 @@ def _result(bearing, model, psi, sysm, x, b, L, wi, wo, outer, gyro, mu, iters, 
     return HighSpeedResult(
         bearing=bearing, azimuths=psi, speed_inner=wi, speed_outer=wo,
         inner_loads=b.Qi, outer_loads=b.Qo,
-        inner_contact_angles=np.clip(b.ai, -0.5 * np.pi, 0.5 * np.pi),
-        outer_contact_angles=np.clip(b.ao, -0.5 * np.pi, 0.5 * np.pi),
+        inner_contact_angles=np.clip(b.ai, -_EDGE, _EDGE),
+        outer_contact_angles=np.clip(b.ao, -_EDGE, _EDGE),
         inner_deflections=b.di, outer_deflections=b.do,
         ball_positions=np.stack([b.X1, b.X2], axis=-1), centrifugal_force=b.Fc,
         gyroscopic_moment=b.Mg, orbital_speed=b.wc, spin_speed=b.wR, pitch_angle=b.beta,
