@@ -66,15 +66,41 @@ moment f_i lambda_i M_g of the inner friction force about the groove centre):
     M_y = \sum_j (\mathcal{R}_i T_j + f_i\lambda_i M_{gj})\sin\psi_j, \qquad
     M_z = -\sum_j (\mathcal{R}_i T_j + f_i\lambda_i M_{gj})\cos\psi_j .
 
+The grooves are half tori, as in :mod:`~ballrace.analytic.loaddist`: a race touches a
+ball only where the line of centres lies less than 90 deg from its groove bottom
+(A_2 - X_2 > 0 at the inner race, X_2 > 0 at the outer race); a ball that overlaps the
+full torus beyond that edge carries nothing there (it would bear on the land) and is
+flagged.  The angles reported (``inner_contact_angles``, ``outer_contact_angles``) are
+those of the lines of centres, along which Q and the friction forces lambda M_g / D act:
+with the reported loads, friction shares (``inner_friction_share``,
+``outer_friction_share``), M_g and F_c they satisfy every ball balance and the ring
+balance above to the solver tolerance.  The speeds use kinematic angles (reported
+separately) that blend an open contact's undefined angle into the line of groove centres
+over its first 1e-5 D of approach; with it inner-race control fades into outer-race
+control, and the friction share of a contact into zero, as the contact opens (a smooth
+step, 3t^2 - 2t^3).
+
+Where the quasi-static model's assumptions break, the result says so
+(``result.warnings``, per-ball flags, each also logged as a warning): a ball past a
+groove edge (or beyond a given shoulder), a ball whose contact would need more friction
+than ``friction_coefficient`` (default :data:`TRACTION_LIMIT`) times its load to resist
+M_g (it skids), or a cage speed outside the rolling range (:data:`CAGE_RATIO_RANGE`).
+
 Solution: Newton on all 2Z + (free ring DOFs) unknowns at once, the Jacobian by central
 differences exploiting the block structure (ball residuals depend only on their own
-ball and the ring; ring residuals are sums over balls), a backtracking line search on
-the scaled residual and, if the direct solve fails, continuation in speed.  Starting
-values come from the static solution (:func:`ballrace.analytic.loaddist.solve`): loaded
-balls on their static line of centres, unloaded balls pressed on the outer race by the
-centrifugal force.  At zero speed every ball lies on the line of centres with the
-deflection shared in the ratio of the contact stiffnesses, which is exactly the static
-model; this is used when both ring speeds are zero.
+ball, the cage speed and the ring; ring residuals are sums over balls; all perturbed
+states evaluated in one batch), with a backtracking line search on the scaled residual.
+Starting values come from the static solution (:func:`ballrace.analytic.loaddist.solve`):
+loaded balls on their static line of centres, unloaded balls pressed by the centrifugal
+force onto the outer race as near its groove bottom as the inner race lets them.  If
+Newton fails from there, the solution is followed in speed from the static one (Euler
+predictor, Newton corrector, adaptive step); where that branch ends before the full
+speed -- at a groove edge, or where the friction needed exceeds the contact loads --
+:class:`ConvergenceError` says where and why.  At zero speed every ball lies on the line
+of centres with the deflection shared in the ratio of the contact stiffnesses, which is
+exactly the static model; this is used when both ring speeds are zero.  The exact-Hertz
+K(alpha) of each race is evaluated from a Chebyshev series in cos(alpha) fitted once per
+bearing to 1e-13 of :func:`ballrace.analytic.hertz.contact_stiffness`.
 """
 from __future__ import annotations
 
@@ -891,7 +917,8 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
         d_m N = 3e6 mm rpm, 5 of ~130 "ball" cases above 14,000 rpm on the 218 bearing did
         not converge; "cage" converged in all 400).
     friction_coefficient : float, optional
-        Coefficient of friction mu for the gyroscopic-slip check (``result.gyroscopic_slip``).
+        Coefficient of friction mu for the gyroscopic-slip check (``result.gyroscopic_slip``
+        and ``result.skidding``; without it ``skidding`` uses :data:`TRACTION_LIMIT`).
     rtol : float, optional
         Tolerance on the residuals relative to the load scale [-].
     max_iter : int, optional
@@ -904,7 +931,11 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
     Raises
     ------
     ConvergenceError
-        If the equilibrium is not found (the message gives residual and iterations).
+        If the equilibrium is not found: the message gives residual and iterations, the
+        fraction of the speed up to which the equilibrium was followed from the static
+        one, and the state of the balls there (contact angles at the groove edge,
+        friction needed beyond the contact load).  Results where the model's
+        assumptions break are returned flagged instead (``result.warnings``).
     ValueError
         For invalid arguments (named in the message), and for loads beyond the
         load-deflection range (as :func:`ballrace.analytic.loaddist.solve`).
