@@ -1072,6 +1072,7 @@ def _equilibrium(model, psi, L, free, wi, wo, gyro, static, F_ref, Q_ref, orbita
         raise ConvergenceError(
             f"high-speed equilibrium (zero speed) did not converge: scaled residual "
             f"{err:.3e} (rtol {rtol:g}) after {count[0]} Newton iterations ({what})")
+    b_direct = b
     log.info("highspeed: direct Newton failed (residual %.3e); continuing in speed", err)
     s, ds = 0.0, 0.25
     last = tangent = None
@@ -1115,7 +1116,9 @@ def _equilibrium(model, psi, L, free, wi, wo, gyro, static, F_ref, Q_ref, orbita
         raise ConvergenceError(
             f"high-speed equilibrium not found: Newton did not converge at full speed nor "
             f"at {100 / 128:.2g} % of it (scaled residual {err:.3e}, rtol {rtol:g}, after "
-            f"{count[0]} Newton iterations; {what})" + hint)
+            f"{count[0]} Newton iterations; {what})"
+            + "".join(f"; at the last full-speed iterate {w}"
+                      for w in _model_limits(model, b_direct)) + hint)
     reasons = _model_limits(model, last[2])
     raise ConvergenceError(
         f"high-speed equilibrium not found: Newton from the static start failed, and the "
@@ -1134,7 +1137,13 @@ def _model_limits(model, b):
     def balls_(mask):
         return ", ".join(str(k + 1) for k in np.flatnonzero(mask))
 
-    for race, Q, a, lam in (("inner", b.Qi, b.ai, b.lam_i), ("outer", b.Qo, b.ao, b.lam_o)):
+    for race, Q, a, lam, d, on in (("inner", b.Qi, b.ai, b.lam_i, b.di, b.on_i),
+                                   ("outer", b.Qo, b.ao, b.lam_o, b.do, b.on_o)):
+        past = ~on & (d > 0)
+        if np.any(past):
+            out.append(f"balls {balls_(past)} are pressed past the {race} groove edge (90 "
+                       "deg from the groove bottom, no ring material: they would ride on "
+                       "the land)")
         edge = (Q > 0) & (np.abs(a) > np.radians(80.0))
         if np.any(edge):
             out.append(f"balls {balls_(edge)} have {race} contact angles up to "
