@@ -70,13 +70,17 @@ def main(n=400, seed=21):
     t_all, counts, wrong_examples = [], dict.fromkeys(
         ("calls", "ok", "ConvergenceError", "other error", "flagged", "wrong"), 0), []
     slow = []
+    by_control = {c: [0, 0] for c in highspeed.CONTROLS}      # calls, ConvergenceErrors
+    reasons = {"skid": 0, "groove": 0, "orbital speed": 0}
     for brg, kw, kind in population(n, seed):
+        by_control[kw["control"]][0] += 1
         counts["calls"] += 1
         t = time.perf_counter()
         try:
             r = highspeed.solve(brg, **kw)
         except ConvergenceError:
             counts["ConvergenceError"] += 1
+            by_control[kw["control"]][1] += 1
             r = None
         except Exception as exc:                 # noqa: BLE001 - counted and shown
             counts["other error"] += 1
@@ -91,6 +95,8 @@ def main(n=400, seed=21):
         counts["ok"] += 1
         if getattr(r, "warnings", ()):
             counts["flagged"] += 1
+            for k in reasons:
+                reasons[k] += any(k in w for w in r.warnings)
         bad = _hsref.rederive_highspeed(brg, r)
         if bad:
             counts["wrong"] += 1
@@ -100,6 +106,9 @@ def main(n=400, seed=21):
     print(" ".join(f"{k}={v}" for k, v in counts.items()))
     print(f"time per call [ms]: median {np.median(t_all):.1f}  p95 {np.percentile(t_all, 95):.1f}"
           f"  max {t_all.max():.0f}  total {t_all.sum() / 1e3:.1f} s")
+    print("ConvergenceErrors by control: " + ", ".join(
+        f"{c} {e}/{n_} ({100 * e / max(n_, 1):.1f} %)" for c, (n_, e) in by_control.items()))
+    print("flagged results by reason: " + ", ".join(f"{k} {v}" for k, v in reasons.items()))
     for w in wrong_examples[:8]:
         print("wrong:", w)
     for s in slow[:8]:

@@ -366,8 +366,8 @@ def test_no_nan_for_valid_inputs(Fa, Fr, rpm, outer_ring, control, gyro):
 def test_inner_control_light_inner_contact_converges_and_flags_slip():
     """Fa = 1000 N at 8641 rpm, inner control, gyroscopic moment reacted at the inner race:
     the inner contact carries ~3 N against ~220 N at the outer.  The equations do have a
-    solution (the damped Newton alone stalled here and this test used to expect an error;
-    the Levenberg-Marquardt rescue finds it), but with mu = 0.1 every ball would pivot.
+    solution (the damped Newton from the static start stalls here; the continuation in
+    speed finds it), but with mu = 0.1 every ball would pivot.
     An unreachable rtol still raises, naming residual, iterations and the hint."""
     kw = dict(Fa=1000.0, speed_inner=8641 * RPM, control="inner",
               gyroscopic="controlling-race")
