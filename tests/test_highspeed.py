@@ -577,3 +577,25 @@ def test_skidding_flag_without_friction_coefficient(caplog):
                for rec in caplog.records)
     need = np.abs(r.inner_friction_share * r.gyroscopic_moment) / BRG.ball_diameter
     assert np.all(need > hs.TRACTION_LIMIT * r.inner_loads)
+
+
+def test_issue21_tight_inner_loose_outer_light_preload_is_not_silent(caplog):
+    """40 deg, tight inner / loose outer groove (f_i 0.511, f_o 0.54), preload 0.1 % C at
+    d_m n 6e5 mm rpm.  Outer-race control: the inner contact angle runs into the groove
+    edge before full speed (the solver once returned angles of 91-98 deg there), so
+    ConvergenceError names it.  Inner-race control: a result, flagged -- the balls skid
+    (M_g needs more than 0.1 Q of friction) and the cage turns at 0.16 of the shaft
+    speed, below the rolling range CAGE_RATIO_RANGE[0] (1 - D/d_m); both logged."""
+    brg = ballrace.BallBearing(0.0127, 12, 0.0635, 0.511, 0.54, free_contact_angle=R40,
+                               material=STEEL208)
+    kw = dict(Fa=1e-3 * brg.dynamic_rating(), speed_inner=6e5 / 63.5 * RPM)
+    with pytest.raises(hs.ConvergenceError, match="groove edge"):
+        hs.solve(brg, control="outer", **kw)
+    with caplog.at_level("WARNING", logger="ballrace.analytic.highspeed"):
+        r = hs.solve(brg, control="inner", **kw)
+    g = brg.ball_diameter / brg.pitch_diameter
+    assert r.cage_speed_ratio < hs.CAGE_RATIO_RANGE[0] * (1 - g)
+    assert np.all(r.skidding)
+    assert any("orbital speed" in w and "outside the rolling range" in w for w in r.warnings)
+    assert sum("highspeed:" in rec.getMessage() for rec in caplog.records) >= 2
+    assert rederive_highspeed(brg, r) == []
