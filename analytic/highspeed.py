@@ -913,9 +913,8 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
         orbital speed from its own contact angles.  The two agree when all balls are
         loaded alike (pure thrust); under combined load at high speed "ball" gives the
         lightly loaded balls, whose inner contact angle approaches 80 deg, orbital speeds
-        near 0.8 omega_i and can make the equilibrium ill-posed (in a random sweep up to
-        d_m N = 3e6 mm rpm, 5 of ~130 "ball" cases above 14,000 rpm on the 218 bearing did
-        not converge; "cage" converged in all 400).
+        near 0.8 omega_i and can make the equilibrium ill-posed (such balls are flagged
+        when their orbital speed leaves the rolling range, see ``result.warnings``).
     friction_coefficient : float, optional
         Coefficient of friction mu for the gyroscopic-slip check (``result.gyroscopic_slip``
         and ``result.skidding``; without it ``skidding`` uses :data:`TRACTION_LIMIT`).
