@@ -1253,6 +1253,7 @@ def _result(bearing, model, psi, sysm, x, b, L, wi, wo, outer, gyro, mu, iters, 
         residual=res, relative_residual=res / F_ref, iterations=int(iters), gyroscopic=gyro,
         friction_coefficient=mu, gyroscopic_slip=slip,
         inner_kinematic_angles=b.ai_k, outer_kinematic_angles=b.ao_k,
-        inner_friction_share=np.array(b.lam_i, float), outer_friction_share=np.array(b.lam_o, float),
+        inner_friction_share=np.array(b.lam_i, float),
+        outer_friction_share=np.array(b.lam_o, float),
         beyond_groove_inner=past_i, beyond_groove_outer=past_o, skidding=skid,
         cage_speed_ratio=ratio, warnings=tuple(warn))
