@@ -411,7 +411,11 @@ class _Balls:
             Ki, Ko = _stiffness(m, a, a)
             wo_ = Ko ** (-2.0 / 3.0) / (Ki ** (-2.0 / 3.0) + Ko ** (-2.0 / 3.0))
             lo_ = m.ro + wo_ * (s - m.A)
-            self.X1s, self.X2s = lo_ * np.sin(a), lo_ * np.cos(a)
+            # (a ball whose line of groove centres points past 90 deg is unloaded, as in
+            # loaddist: it rests at the outer-groove bottom, clear of both races)
+            past = ~(self.A2 > 0)
+            self.X1s = np.where(past, 0.0, lo_ * np.sin(a))
+            self.X2s = np.where(past, m.ro, lo_ * np.cos(a))
         self.X1, self.X2 = X1, X2
         lo = np.hypot(X1, X2)
         e1, e2 = self.A1 - X1, self.A2 - X2
@@ -427,6 +431,11 @@ class _Balls:
         # X2 > 0 at the outer race); beyond that there is no ring material and the
         # contact carries nothing, as in the static model (loaddist._State).
         self.on_i, self.on_o = e2 > 0, X2 > 0
+        if static:
+            # on the line of centres both contacts share its angle: one test for both, on
+            # the groove-centre line itself as in loaddist (x > 0), so that round-off at
+            # 90 deg cannot load one contact of a ball and not the other
+            self.on_i = self.on_o = self.A2 > 0
         Ki, Ko = _stiffness(m, self.ai, self.ao)
         self.Qi = np.where(self.on_i, Ki * np.maximum(self.di, 0.0) ** 1.5, 0.0)
         self.Qo = np.where(self.on_o, Ko * np.maximum(self.do, 0.0) ** 1.5, 0.0)
