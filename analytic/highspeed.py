@@ -432,10 +432,11 @@ class _Balls:
         # contact carries nothing, as in the static model (loaddist._State).
         self.on_i, self.on_o = e2 > 0, X2 > 0
         if static:
-            # on the line of centres both contacts share its angle: one test for both, on
-            # the groove-centre line itself as in loaddist (x > 0), so that round-off at
-            # 90 deg cannot load one contact of a ball and not the other
-            self.on_i = self.on_o = self.A2 > 0
+            # on the line of centres both contacts share its angle: the groove-centre
+            # line itself must point outwards, as in loaddist (x > 0), so that round-off
+            # at 90 deg cannot load one contact of a ball and not the other
+            self.on_i = self.on_i & (self.A2 > 0)
+            self.on_o = self.on_o & (self.A2 > 0)
         Ki, Ko = _stiffness(m, self.ai, self.ao)
         self.Qi = np.where(self.on_i, Ki * np.maximum(self.di, 0.0) ** 1.5, 0.0)
         self.Qo = np.where(self.on_o, Ko * np.maximum(self.do, 0.0) ** 1.5, 0.0)
