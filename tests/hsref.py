@@ -74,11 +74,12 @@ def rederive_highspeed(brg, r):
     scale = max(float(np.max(np.abs(r.applied))), float(np.max(Qi, initial=0.0)),
                 float(np.max(Qo, initial=0.0)), float(np.max(Fc)), 1e-300)
     bad = []
-    # round-off floor of the force checks: Q ~ delta^1.5 with delta the difference of
-    # positions of size |X|, known to a few eps |X| (matters only for loads so small that
-    # delta ~ 1e-8 |X|, e.g. 1e-8 N on a 1 mm ball)
+    # round-off floor of the force checks: Q ~ delta^1.5 with delta a difference of
+    # lengths of size |X| and A, each known to some eps |X| (differences of differences,
+    # hypot, s - A: 1000 eps is generous); this matters only for loads so small that
+    # delta ~ 1e-8 |X|, e.g. 1e-7 N on a 3 mm ball (2e-10 of the load at delta = 1e-3 |X|)
     d_max = max(float(np.max(np.r_[d_i, d_o])), 1e-300)
-    floor = 30 * np.finfo(float).eps * max(float(np.max(np.abs(r.ball_positions))), A) / d_max
+    floor = 1e3 * np.finfo(float).eps * max(float(np.max(np.abs(r.ball_positions))), A) / d_max
 
     def check(what, err, tol=1e-8):
         e = float(np.max(np.abs(err), initial=0.0)) / scale
