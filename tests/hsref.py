@@ -78,7 +78,8 @@ def rederive_highspeed(brg, r):
     # lengths of size |X| and A, each known to some eps |X| (differences of differences,
     # hypot, s - A: 1000 eps is generous); this matters only for loads so small that
     # delta ~ 1e-8 |X|, e.g. 1e-7 N on a 3 mm ball (2e-10 of the load at delta = 1e-3 |X|)
-    d_max = max(float(np.max(np.r_[d_i, d_o])), 1e-300)
+    d_max = max(float(np.max(np.r_[np.where(on_i, d_i, 0.0), np.where(on_o, d_o, 0.0)])),
+                1e-300)                                     # (of the loaded contacts)
     floor = 1e3 * np.finfo(float).eps * max(float(np.max(np.abs(r.ball_positions))), A) / d_max
 
     def check(what, err, tol=1e-8):
