@@ -66,15 +66,41 @@ moment f_i lambda_i M_g of the inner friction force about the groove centre):
     M_y = \sum_j (\mathcal{R}_i T_j + f_i\lambda_i M_{gj})\sin\psi_j, \qquad
     M_z = -\sum_j (\mathcal{R}_i T_j + f_i\lambda_i M_{gj})\cos\psi_j .
 
+The grooves are half tori, as in :mod:`~ballrace.analytic.loaddist`: a race touches a
+ball only where the line of centres lies less than 90 deg from its groove bottom
+(A_2 - X_2 > 0 at the inner race, X_2 > 0 at the outer race); a ball that overlaps the
+full torus beyond that edge carries nothing there (it would bear on the land) and is
+flagged.  The angles reported (``inner_contact_angles``, ``outer_contact_angles``) are
+those of the lines of centres, along which Q and the friction forces lambda M_g / D act:
+with the reported loads, friction shares (``inner_friction_share``,
+``outer_friction_share``), M_g and F_c they satisfy every ball balance and the ring
+balance above to the solver tolerance.  The speeds use kinematic angles (reported
+separately) that blend an open contact's undefined angle into the line of groove centres
+over its first 1e-5 D of approach; with it inner-race control fades into outer-race
+control, and the friction share of a contact into zero, as the contact opens (a smooth
+step, 3t^2 - 2t^3).
+
+Where the quasi-static model's assumptions break, the result says so
+(``result.warnings``, per-ball flags, each also logged as a warning): a ball past a
+groove edge (or beyond a given shoulder), a ball whose contact would need more friction
+than ``friction_coefficient`` (default :data:`TRACTION_LIMIT`) times its load to resist
+M_g (it skids), or a cage speed outside the rolling range (:data:`CAGE_RATIO_RANGE`).
+
 Solution: Newton on all 2Z + (free ring DOFs) unknowns at once, the Jacobian by central
 differences exploiting the block structure (ball residuals depend only on their own
-ball and the ring; ring residuals are sums over balls), a backtracking line search on
-the scaled residual and, if the direct solve fails, continuation in speed.  Starting
-values come from the static solution (:func:`ballrace.analytic.loaddist.solve`): loaded
-balls on their static line of centres, unloaded balls pressed on the outer race by the
-centrifugal force.  At zero speed every ball lies on the line of centres with the
-deflection shared in the ratio of the contact stiffnesses, which is exactly the static
-model; this is used when both ring speeds are zero.
+ball, the cage speed and the ring; ring residuals are sums over balls; all perturbed
+states evaluated in one batch), with a backtracking line search on the scaled residual.
+Starting values come from the static solution (:func:`ballrace.analytic.loaddist.solve`):
+loaded balls on their static line of centres, unloaded balls pressed by the centrifugal
+force onto the outer race as near its groove bottom as the inner race lets them.  If
+Newton fails from there, the solution is followed in speed from the static one (Euler
+predictor, Newton corrector, adaptive step); where that branch ends before the full
+speed -- at a groove edge, or where the friction needed exceeds the contact loads --
+:class:`ConvergenceError` says where and why.  At zero speed every ball lies on the line
+of centres with the deflection shared in the ratio of the contact stiffnesses, which is
+exactly the static model; this is used when both ring speeds are zero.  The exact-Hertz
+K(alpha) of each race is evaluated from a Chebyshev series in cos(alpha) fitted once per
+bearing to 1e-13 of :func:`ballrace.analytic.hertz.contact_stiffness`.
 """
 from __future__ import annotations
 
@@ -91,8 +117,10 @@ from .kinematics import _kinematics_beta
 from .loaddist import ConvergenceError
 
 __all__ = [
+    "CAGE_RATIO_RANGE",
     "CONTROLS",
     "GYROSCOPIC",
+    "TRACTION_LIMIT",
     "ORBITALS",
     "HighSpeedResult",
     "ConvergenceError",
@@ -112,6 +140,17 @@ CONTROLS = ("outer", "inner", "jones")
 ORBITALS = ("cage", "ball")
 #: Treatments of the gyroscopic moment accepted by :func:`solve`.
 GYROSCOPIC = ("harris", "controlling-race", "none")
+#: Traction coefficient [-] above which a ball is flagged as skidding when no
+#: ``friction_coefficient`` is given: an upper value of the traction of lubricated
+#: rolling contacts (order of magnitude; not checked against a specific source).
+TRACTION_LIMIT = 0.1
+#: Rolling range of the cage speed ratio f = (omega_c - omega_o)/(omega_i - omega_o):
+#: flagged below CAGE_RATIO_RANGE[0] (1 - D/d_m) and above CAGE_RATIO_RANGE[1].  Rolling
+#: without slip on both races at contact angles between 0 and 90 deg gives
+#: f = (1 - (D/d_m) cos alpha)/2, between (1 - D/d_m)/2 and 1/2 (H&D 1981 eq. 3.77);
+#: the flags are set at half the lower and 0.9 (the balls nearly carried round with the
+#: ring) -- screening limits, not material data.
+CAGE_RATIO_RANGE = (0.25, 0.9)
 
 
 # =========================================================================== formulas
@@ -261,6 +300,7 @@ class _Model:
     Ry_o: float
     mass: float
     J: float
+    cheb: tuple = (None, None)
 
     @staticmethod
     @functools.lru_cache(maxsize=64)
@@ -271,7 +311,7 @@ class _Model:
         D = b.ball_diameter
         A = b.curvature_center_distance
         m = b.ball_mass
-        return _Model(D=D, dm=b.pitch_diameter, Z=b.n_balls, A=A,
+        model = _Model(D=D, dm=b.pitch_diameter, Z=b.n_balls, A=A,
                       sbf=float(np.sin(b.free_contact_angle)),
                       cbf=float(np.cos(b.free_contact_angle)),
                       Ri=b.inner_groove_center_radius,
@@ -279,18 +319,55 @@ class _Model:
                       ri=(b.f_inner - 0.5) * D, ro=(b.f_outer - 0.5) * D, f_i=b.f_inner,
                       Ep=b.E_prime, Ry_i=b.f_inner * D / (2 * b.f_inner - 1),
                       Ry_o=b.f_outer * D / (2 * b.f_outer - 1), mass=m, J=m * D * D / 10.0)
+        return _Model(**{**model.__dict__, "cheb": _stiffness_fit(model)})
+
+
+def _stiffness_exact(model, ci, co):
+    """K_i, K_o [N/m^1.5] at cos(alpha_i) = ci, cos(alpha_o) = co (H&D 1981 eq. 3.33)."""
+    rho = model.D / model.dm
+    Rx = np.concatenate([0.5 * model.D * (1.0 - rho * ci), 0.5 * model.D * (1.0 + rho * co)])
+    Ry = np.concatenate([np.full(np.shape(ci), model.Ry_i), np.full(np.shape(co), model.Ry_o)])
+    K = hertz.contact_stiffness(Rx, Ry, model.Ep)
+    n = np.size(ci)
+    return K[:n], K[n:]
+
+
+def _stiffness_fit(model):
+    """Chebyshev series of K_i, K_o in cos(alpha) over [-1, 1] (degree 80), or None where
+    the series is not within 1e-13 of the exact K at 97 check points.
+
+    K is analytic in cos(alpha) on [-1, 1] (R_x > 0 for D/d_m < 1), so the series
+    converges geometrically; the solver evaluates it instead of solving for the
+    ellipticity at every call (same values to ~1e-15)."""
+    from numpy.polynomial import chebyshev as ch
+    n = 81                                  # Chebyshev nodes; coefficients by the DCT
+    th = np.pi * (np.arange(n) + 0.5) / n
+    c = np.cos(th)
+    Ki, Ko = _stiffness_exact(model, c, c)
+    dct = (2.0 / n) * np.cos(np.outer(np.arange(n), th))
+    dct[0] *= 0.5
+    t = np.linspace(-1.0, 1.0, 97)
+    ti, to = _stiffness_exact(model, t, t)
+    out = []
+    for K, T in ((Ki, ti), (Ko, to)):
+        full = dct @ K
+        coef = None
+        for n in (12, 16, 20, 24, 32, 40, 48, 64, 80):     # shortest series that is exact
+            if np.max(np.abs(ch.chebval(t, full[:n + 1]) / T - 1.0)) <= 1e-13:
+                coef = full[:n + 1]
+                break
+        out.append(coef)
+    return tuple(out)
 
 
 def _stiffness(model, ai, ao):
     """Race contact stiffnesses K_i(alpha_i), K_o(alpha_o) [N/m^1.5] (H&D 1981 eq. 3.33)."""
-    rho = model.D / model.dm
-    gi = rho * np.cos(ai)
-    go = rho * np.cos(ao)
-    Rx = np.concatenate([0.5 * model.D * (1.0 - gi), 0.5 * model.D * (1.0 + go)])
-    Ry = np.concatenate([np.full(gi.shape, model.Ry_i), np.full(go.shape, model.Ry_o)])
-    K = hertz.contact_stiffness(Rx, Ry, model.Ep)
-    n = gi.size
-    return K[:n], K[n:]
+    fi, fo = model.cheb
+    if fi is None or fo is None:
+        return _stiffness_exact(model, np.cos(ai), np.cos(ao))
+    # T_k(cos a) = cos(k a): the series is a cosine series in the angle itself
+    return (np.cos(np.multiply.outer(ai, np.arange(fi.size))) @ fi,
+            np.cos(np.multiply.outer(ao, np.arange(fo.size))) @ fo)
 
 
 def _lambdas(outer, gyro):
@@ -304,10 +381,15 @@ def _lambdas(outer, gyro):
     return li, lo
 
 
-def _fold(a):
-    """Angle of a line folded into (-pi/2, pi/2] [rad] (a contact normal has no sense)."""
-    a = np.where(a > 0.5 * np.pi, a - np.pi, a)
-    return np.where(a <= -0.5 * np.pi, a + np.pi, a)
+#: Largest reported angle [rad]: the groove edge, just inside pi/2 (Hertz curvatures need
+#: |alpha| < pi/2).
+_EDGE = float(np.nextafter(0.5 * np.pi, 0.0))
+
+
+def _smoothstep(t):
+    """0 for t <= 0, 1 for t >= 1, 3t^2 - 2t^3 between (continuous slope) [-]."""
+    t = np.clip(t, 0.0, 1.0)
+    return t * t * (3.0 - 2.0 * t)
 
 
 class _Balls:
@@ -315,10 +397,13 @@ class _Balls:
 
     def __init__(self, model, psi, X1, X2, u, wi, wo, outer, gyro, static,
                  orbital="ball", wc_fixed=None):
+        # (arrays: X1, X2 (..., Z), u (..., 5): several states at once for the Jacobian)
         m = model
         cp, sp = np.cos(psi), np.sin(psi)
-        self.A1 = m.A * m.sbf + u[0] + m.Ri * (u[3] * sp - u[4] * cp)
-        self.A2 = m.A * m.cbf + u[1] * cp + u[2] * sp
+        u = np.asarray(u, float)
+        U = [u[..., k:k + 1] for k in range(5)]
+        self.A1 = m.A * m.sbf + U[0] + m.Ri * (U[3] * sp - U[4] * cp)
+        self.A2 = m.A * m.cbf + U[1] * cp + U[2] * sp
         if static:
             # zero speed: ball on the line of centres, deflection shared by stiffness
             s = np.hypot(self.A1, self.A2)
@@ -326,7 +411,11 @@ class _Balls:
             Ki, Ko = _stiffness(m, a, a)
             wo_ = Ko ** (-2.0 / 3.0) / (Ki ** (-2.0 / 3.0) + Ko ** (-2.0 / 3.0))
             lo_ = m.ro + wo_ * (s - m.A)
-            self.X1s, self.X2s = lo_ * np.sin(a), lo_ * np.cos(a)
+            # (a ball whose line of groove centres points past 90 deg is unloaded, as in
+            # loaddist: it rests at the outer-groove bottom, clear of both races)
+            past = ~(self.A2 > 0)
+            self.X1s = np.where(past, 0.0, lo_ * np.sin(a))
+            self.X2s = np.where(past, m.ro, lo_ * np.cos(a))
         self.X1, self.X2 = X1, X2
         lo = np.hypot(X1, X2)
         e1, e2 = self.A1 - X1, self.A2 - X2
@@ -337,20 +426,33 @@ class _Balls:
         self.sai, self.cai = e1 / li, e2 / li
         self.ao = np.arctan2(X1, X2)
         self.ai = np.arctan2(e1, e2)
+        # The grooves are half tori: a race touches the ball only where the line of
+        # centres lies less than 90 deg from its groove bottom (e2 > 0 at the inner race,
+        # X2 > 0 at the outer race); beyond that there is no ring material and the
+        # contact carries nothing, as in the static model (loaddist._State).
+        self.on_i, self.on_o = e2 > 0, X2 > 0
+        if static:
+            # on the line of centres both contacts share its angle: the groove-centre
+            # line itself must point outwards, as in loaddist (x > 0), so that round-off
+            # at 90 deg cannot load one contact of a ball and not the other
+            self.on_i = self.on_i & (self.A2 > 0)
+            self.on_o = self.on_o & (self.A2 > 0)
         Ki, Ko = _stiffness(m, self.ai, self.ao)
-        self.Qi = Ki * np.maximum(self.di, 0.0) ** 1.5
-        self.Qo = Ko * np.maximum(self.do, 0.0) ** 1.5
+        self.Qi = np.where(self.on_i, Ki * np.maximum(self.di, 0.0) ** 1.5, 0.0)
+        self.Qo = np.where(self.on_o, Ko * np.maximum(self.do, 0.0) ** 1.5, 0.0)
         # An open contact has no contact angle: for the kinematics it takes the angle of
         # the line of groove centres, blended in over a deflection of 1e-5 D (loads there
         # are ~1 N or less) so that the equations stay continuous.
         # (the line, not its direction: folded into (-pi/2, pi/2], so that a far-side ball
         # of a ring displaced by more than A cos(beta_f) does not get an angle near pi)
+        # These kinematic angles set only the speeds; the forces act along the
+        # mechanical angles ai, ao (|ai|, |ao| < pi/2 wherever the contact is loaded).
         base = np.arctan(self.A1 / np.where(self.A2 == 0.0, 1e-300, self.A2))
         d_ref = 1e-5 * m.D
-        self.wgt_i = np.clip(self.di / d_ref, 0.0, 1.0)
-        self.wgt_o = np.clip(self.do / d_ref, 0.0, 1.0)
-        self.ai_k = base + self.wgt_i * (_fold(self.ai) - base)
-        self.ao_k = base + self.wgt_o * (_fold(self.ao) - base)
+        self.wgt_i = np.where(self.on_i, _smoothstep(self.di / d_ref), 0.0)
+        self.wgt_o = np.where(self.on_o, _smoothstep(self.do / d_ref), 0.0)
+        self.ai_k = base + self.wgt_i * (np.where(self.on_i, self.ai, base) - base)
+        self.ao_k = base + self.wgt_o * (np.where(self.on_o, self.ao, base) - base)
         # kinematics (race control) at the current angles
         rho = m.D / m.dm
         # a ball cannot be controlled by a race it does not touch: inner control fades
@@ -369,25 +471,26 @@ class _Balls:
                          self.Qi * self.Qo / np.where(self.Qi + self.Qo > 0,
                                                       self.Qi + self.Qo, 1.0), 0.0)
             self.num, self.den = q * np.where(q > 0, self.wc, 0.0), q
-            if wc_fixed is not None:                    # (Jacobian: hold the cage speed)
-                wc = wc_fixed
-            elif np.sum(q) > 0:
-                wc = np.sum(self.num) / np.sum(q)
-            else:                                       # no ball drives: classical value
-                wc = 0.5 * (wi * (1 - rho * np.cos(base)) + wo * (1 + rho * np.cos(base)))
-            self.wc_cage = float(np.mean(wc))
+            sq = np.sum(q, axis=-1, keepdims=True)
+            wc = np.where(sq > 0, np.sum(self.num, axis=-1, keepdims=True)
+                          / np.where(sq > 0, sq, 1.0),
+                          # no ball drives: classical value
+                          0.5 * (wi * (1 - rho * np.cos(base)) + wo * (1 + rho * np.cos(base))))
+            if wc_fixed is not None:      # (Jacobian: hold the cage speed; nan: do not)
+                wf = np.asarray(wc_fixed, float)
+                wc = np.where(np.isnan(wf), wc, wf)
             self.wc = np.broadcast_to(wc, self.Qi.shape).astype(float)
+            self.wc_cage = np.mean(self.wc, axis=-1)
             wR_o = (wo - self.wc) * (1.0 + rho * np.cos(self.ao_k)) / (
                 rho * np.cos(self.ao_k - b_o))
             wR_i = (self.wc - wi) * (1.0 - rho * np.cos(self.ai_k)) / (
                 rho * np.cos(self.ai_k - b_i))
             self.wR = np.where(outer, wR_o, wR_o + self.wgt_i * (wR_i - wR_o))
         self.Fc = m.mass * (m.Roc + X2) * self.wc**2              # (1/2) m d_orbit wc^2
-        if gyro == "none":
-            self.Mg = np.zeros_like(self.Fc)
+        self.Mg = m.J * self.wR * self.wc * np.sin(self.beta)      # H&D eq. 3.108
+        if gyro == "none":                      # (reported, not in the equilibrium)
             li_, lo_ = np.zeros_like(self.Fc), np.zeros_like(self.Fc)
         else:
-            self.Mg = m.J * self.wR * self.wc * np.sin(self.beta)  # H&D eq. 3.108
             li_, lo_ = _lambdas(outer, gyro)
             # no friction without a normal load: an open contact passes its share on
             li_ = self.wgt_i * li_
@@ -424,9 +527,19 @@ class HighSpeedResult:
     inner_loads, outer_loads : ndarray
         Ball–race normal loads Q_i, Q_o [N].
     inner_contact_angles, outer_contact_angles : ndarray
-        Contact angles alpha_i, alpha_o [rad].
+        Contact angles alpha_i, alpha_o [rad]: the angles of the lines of centres along
+        which Q_i, Q_o and the friction forces act in the force balances (the module
+        equations hold with exactly these).  A contact without load reports its line of
+        centres, limited to the groove edge (+-pi/2, just inside) where it lies beyond.
+    inner_kinematic_angles, outer_kinematic_angles : ndarray
+        Angles [rad] used for the speeds (omega_c, omega_R, beta): the contact angle of a
+        loaded contact, blended into the angle of the line of groove centres over the
+        first 1e-5 D of deflection (an open contact has no rolling point).  Not used in
+        the force balances.
     inner_deflections, outer_deflections : ndarray
-        Contact deflections delta_i, delta_o [m] (negative: contact open).
+        Contact deflections delta_i, delta_o [m] (negative: contact open; positive
+        without load where the line of centres is past the groove edge, see
+        ``beyond_groove_inner``).
     ball_positions : ndarray, shape (Z, 2)
         Axial and radial position (X1, X2) of each ball centre relative to its
         outer-groove curvature centre [m].
@@ -469,6 +582,29 @@ class HighSpeedResult:
     gyroscopic_slip : ndarray of bool or None
         Per ball, True where the friction needed to resist M_g exceeds mu Q at a
         reacting contact (the ball would pivot; Harris 2001 ch. 25).
+    inner_friction_share, outer_friction_share : ndarray
+        lambda_i, lambda_o [-]: the friction force resisting M_g at each contact is
+        lambda M_g / D (module equations; 0 for a contact without load and for
+        ``gyroscopic="none"``).  With the reported loads, angles, M_g and F_c they
+        rebuild every ball balance and the ring balance.
+    beyond_groove_inner, beyond_groove_outer : ndarray of bool
+        Per ball, True where the ball overlaps the full groove torus but its line of
+        centres lies 90 deg or more from the groove bottom (no ring material there: the
+        contact is taken as unloaded, as in the static model; the ball would bear on
+        the land), or where a loaded contact lies beyond the shoulder edge
+        (``BallBearing.shoulder_angle``, when given).
+    skidding : ndarray of bool
+        Per ball, True where the friction needed at a loaded contact to resist the
+        gyroscopic moment exceeds ``friction_coefficient`` (default 0.1) times its
+        normal load, so that the ball cannot roll as the race-control hypothesis
+        assumes (always False with ``gyroscopic="none"``).
+    cage_speed_ratio : float
+        (omega_c - omega_o) / (omega_i - omega_o) [-] of the mean orbital speed (nan
+        when the rings turn together).
+    warnings : tuple of str
+        Where the quasi-static model's assumptions break: contacts past the groove edge,
+        skidding balls, or a cage speed outside the rolling range
+        (:data:`CAGE_RATIO_RANGE`); each also logged at WARNING level.  Empty when none.
     """
 
     bearing: BallBearing
@@ -499,6 +635,15 @@ class HighSpeedResult:
     gyroscopic: str
     friction_coefficient: float | None = None
     gyroscopic_slip: np.ndarray | None = None
+    inner_kinematic_angles: np.ndarray | None = None
+    outer_kinematic_angles: np.ndarray | None = None
+    inner_friction_share: np.ndarray | None = None
+    outer_friction_share: np.ndarray | None = None
+    beyond_groove_inner: np.ndarray | None = None
+    beyond_groove_outer: np.ndarray | None = None
+    skidding: np.ndarray | None = None
+    cage_speed_ratio: float = float("nan")
+    warnings: tuple = ()
 
     @property
     def axial_displacement(self) -> float:
@@ -576,117 +721,91 @@ class _System:
                       self.static, self.orbital, wc_fixed)
 
     def residual(self, b):
-        ring = self.L[self.free] - b.C.sum(axis=0)[self.free]
-        return np.concatenate([b.R[:, 0], b.R[:, 1], ring])
+        ring = self.L[self.free] - b.C.sum(axis=-2)[..., self.free]
+        return np.concatenate([b.R[..., 0], b.R[..., 1], ring], axis=-1)
 
     def scaled(self, r):
         Z = self.Z
         return np.concatenate([r[:2 * Z] * self.ball_sc, r[2 * Z:] * self.load_sc])
 
-    def jacobian(self, x):
-        """Central differences: all balls' X1 (then X2) at once, then each ring DOF."""
+    def jacobian(self, x, b0=None):
+        """Central differences: all balls' X1 (then X2) at once, then each ring DOF; all
+        perturbed states evaluated together in one batch."""
         Z, nf = self.Z, self.free.size
         n = 2 * Z + nf
         J = np.zeros((n, n))
-        # steps: 1e-7 D, but below 1 % of each closed contact's deflection so that the
-        # difference never straddles the contact edge (delta^1.5 is not smooth at 0)
-        b0 = self.balls(x)
-        d = np.where(b0.di > 0, b0.di, np.inf)
-        d = np.minimum(d, np.where(b0.do > 0, b0.do, np.inf))
-        hmax, hmin = 1e-7 * self.m.D, 1e-11 * self.m.D
+        # steps: 1e-9 D (1e-4 of the blend width 1e-5 D, so that the differences resolve
+        # the blends to ~1e-8), but below 1 % of each contact's deflection or gap so that
+        # the difference never straddles the contact edge (delta^1.5 is not smooth at 0)
+        if b0 is None:
+            b0 = self.balls(x)
+        d = np.minimum(np.abs(b0.di), np.abs(b0.do))
+        hmax, hmin = 1e-9 * self.m.D, 1e-12 * self.m.D
         hb = np.clip(1e-2 * d, hmin, hmax)
         h = float(np.clip(np.min(1e-2 * d), hmin, hmax))
         idx = np.arange(Z)
         # one cage speed couples all balls: hold it fixed for the per-ball blocks and add
         # the rank-one coupling d(residual)/d(omega_c) x d(omega_c)/dX afterwards
         cage = self.orbital == "cage" and not self.static
-        wc0 = b0.wc_cage if cage else None
+        X1, X2, u = self.unpack(x)
+        N = 4 + 2 * cage + 2 * nf
+        X1s, X2s = np.tile(X1, (N, 1)), np.tile(X2, (N, 1))
+        us = np.tile(u, (N, 1))
+        wcf = np.full((N, 1), np.nan)
+        X1s[0] += hb
+        X1s[1] -= hb
+        X2s[2] += hb
+        X2s[3] -= hb
         if cage:
+            wc0 = float(b0.wc_cage)
             hw = 1e-7 * max(abs(wc0), abs(self.wi), abs(self.wo), 1e-300)
-            bp, bm = self.balls(x, wc0 + hw), self.balls(x, wc0 - hw)
-            rw = (bp.R - bm.R) / (2 * hw)                      # (Z, 2)
-            cw = (bp.C - bm.C)[:, self.free].sum(axis=0) / (2 * hw)   # (nf,)
+            wcf[:4] = wc0
+            wcf[4:6] = [[wc0 + hw], [wc0 - hw]]
+        k0 = 4 + 2 * cage
+        hu = h / self.u_sc
+        for j in range(nf):
+            us[k0 + 2 * j, self.free[j]] += hu[j]
+            us[k0 + 2 * j + 1, self.free[j]] -= hu[j]
+        B = _Balls(self.m, self.psi, X1s, X2s, us, self.wi, self.wo, self.outer, self.gyro,
+                   self.static, self.orbital, wcf)
+        R, C = B.R, B.C[..., self.free]
+        if cage:
+            rw = (R[4] - R[5]) / (2 * hw)                      # (Z, 2)
+            cw = (C[4] - C[5]).sum(axis=0) / (2 * hw)          # (nf,)
             den = np.sum(b0.den)
         for k in (0, 1):
-            xp, xm = x.copy(), x.copy()
-            xp[k * Z:(k + 1) * Z] += hb
-            xm[k * Z:(k + 1) * Z] -= hb
-            bp, bm = self.balls(xp, wc0), self.balls(xm, wc0)
-            dR = (bp.R - bm.R) / (2 * hb[:, None])             # (Z, 2)
-            dC = (bp.C - bm.C)[:, self.free] / (2 * hb[:, None])   # (Z, nf)
+            p, q = 2 * k, 2 * k + 1
+            dR = (R[p] - R[q]) / (2 * hb[:, None])             # (Z, 2)
+            dC = (C[p] - C[q]) / (2 * hb[:, None])             # (Z, nf)
             J[idx, k * Z + idx] = dR[:, 0]
             J[Z + idx, k * Z + idx] = dR[:, 1]
             J[2 * Z:, k * Z:(k + 1) * Z] = -dC.T
             if cage and den > 0:
-                g = ((bp.num - bm.num) - wc0 * (bp.den - bm.den)) / (2 * hb * den)
+                g = ((B.num[p] - B.num[q]) - wc0 * (B.den[p] - B.den[q])) / (2 * hb * den)
                 J[:Z, k * Z:(k + 1) * Z] += np.outer(rw[:, 0], g)
                 J[Z:2 * Z, k * Z:(k + 1) * Z] += np.outer(rw[:, 1], g)
                 J[2 * Z:, k * Z:(k + 1) * Z] -= np.outer(cw, g)
-        for j in range(nf):
-            hu = h / self.u_sc[j]
-            xp, xm = x.copy(), x.copy()
-            xp[2 * Z + j] += hu
-            xm[2 * Z + j] -= hu
-            rp = self.residual(self.balls(xp))
-            rm = self.residual(self.balls(xm))
-            J[:, 2 * Z + j] = (rp - rm) / (2 * hu)
+        if nf:
+            res = self.residual(B)[k0:]
+            J[:, 2 * Z:] = ((res[0::2] - res[1::2]) / (2 * hu[:, None])).T
         return J
 
 
-def _newton(sysm, x, rtol, max_iter):
-    """Damped Newton, with a Levenberg–Marquardt rescue when it stalls.
+def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39):
+    """Damped Newton; returns (x, balls, scaled max residual, iterations).
 
-    Light thrust at moderate speed (218 bearing, 200 N, 3000–4000 rpm, where the
-    centrifugal force outweighs the thrust share of a ball) leaves the damped Newton
-    creeping at step 1/64 with a sufficient-decrease line search; MINPACK's
-    Levenberg–Marquardt (Moré 1978; ``scipy.optimize.root(method="lm")``) with the same
-    Jacobian reaches the basin in ~70 evaluations and Newton then polishes to ``rtol``.
-    Returns (x, balls, scaled max residual, iterations).
-    """
-    x1, b, err, it = _damped_newton(sysm, x, rtol, max_iter)
-    if err <= rtol:
-        return x1, b, err, it
-    from scipy.optimize import root
-
-    Z = sysm.Z
-    row = np.concatenate([np.full(2 * Z, sysm.ball_sc), sysm.load_sc])
-
-    def fun(xx):
-        if not np.all(np.isfinite(xx)):
-            return np.full(xx.shape, 1e10)
-        with np.errstate(all="ignore"):
-            r = sysm.scaled(sysm.residual(sysm.balls(xx)))
-        return r if np.all(np.isfinite(r)) else np.full(r.shape, 1e10)
-
-    def jac(xx):
-        if not np.all(np.isfinite(xx)):
-            return np.eye(xx.size)
-        with np.errstate(all="ignore"):
-            J = sysm.jacobian(xx) * row[:, None]
-        return J if np.all(np.isfinite(J)) else np.eye(xx.size)
-
-    sol = root(fun, x1, jac=jac, method="lm",
-               options={"xtol": 1e-15, "ftol": 1e-15, "maxiter": 50 * (x1.size + 1)})
-    if not np.all(np.isfinite(fun(sol.x))):
-        return x1, b, err, it
-    x2, b2, err2, it2 = _damped_newton(sysm, sol.x, rtol, max_iter)
-    log.info("highspeed: Newton stalled at %.3e; Levenberg-Marquardt (%d evaluations) then "
-             "Newton: %.3e", err, sol.nfev, err2)
-    if err2 < err:
-        return x2, b2, err2, it + it2
-    return x1, b, err, it + it2
-
-
-def _damped_newton(sysm, x, rtol, max_iter):
-    """Damped Newton; returns (x, balls, scaled max residual, iterations)."""
+    Stops (unconverged) when the line search needs a step below ``min_step``, or steps
+    below 1/32 in 5 successive iterations (stalled: the Newton direction does not
+    describe the residual, e.g. at the kinks of the contact law or of the blends)."""
     b = sysm.balls(x)
     r = sysm.scaled(sysm.residual(b))
     err = np.max(np.abs(r))
     it = 0
     step_cap = 0.05 * sysm.m.D
-    while err > rtol and it < max_iter:
+    short = 0
+    while err > rtol and it < max_iter and short < 5:
         it += 1
-        J = sysm.jacobian(x)
+        J = sysm.jacobian(x, b)
         r_raw = sysm.residual(b)
         try:
             dx = np.linalg.solve(J, -r_raw)
@@ -700,7 +819,7 @@ def _damped_newton(sysm, x, rtol, max_iter):
             dx *= step_cap / big
         f0 = 0.5 * float(r @ r)
         t = 1.0
-        for _ in range(40):
+        while t >= min_step:
             xn = x + t * dx
             bn = sysm.balls(xn)
             rn = sysm.scaled(sysm.residual(bn))
@@ -711,6 +830,7 @@ def _damped_newton(sysm, x, rtol, max_iter):
             log.debug("highspeed: line search failed at iteration %d (residual %.3e)", it, err)
             break
         x, b, r = xn, bn, rn
+        short = short + 1 if t < 1.0 / 32 else 0
         err = float(np.max(np.abs(r)))
         log.debug("highspeed: iteration %d, step %.3g, scaled residual %.3e", it, t, err)
     return x, b, err, it
@@ -731,8 +851,26 @@ def _start(model, psi, u, wi, wo, free, static):
             wc = 0.5 * (wi * (1 - model.D / model.dm) + wo * (1 + model.D / model.dm))
             Fc = model.mass * (model.Roc + model.ro) * wc**2
             _, Ko = _stiffness(model, np.zeros(1), np.zeros(1))
-            X1 = np.where(unl, 0.0, X1)
-            X2 = np.where(unl, model.ro + (Fc / Ko[0]) ** (2.0 / 3.0), X2)
+            # as near the outer-groove bottom as the inner race lets it: the ball centre
+            # on the circle |X| = r_o + d, d the approach under F_c, on the arc within
+            # r_i + d of the inner-groove centre (angle a +- phi, law of cosines), at the
+            # angle nearest 0 (where F_c alone would hold it): at the arc's end both
+            # contacts carry about F_c, and the ball is held in both directions.  (At
+            # the bottom itself an angular-contact ball can overlap the inner race by up
+            # to ~A sin(beta_f).)
+            a = np.arctan2(b.A1, b.A2)
+            dc = (Fc / Ko[0]) ** (2.0 / 3.0)
+            lo = model.ro + dc
+            cphi = (lo**2 + s**2 - (model.ri + dc)**2) / (2.0 * lo * np.maximum(s, 1e-300))
+            phi = np.arccos(np.clip(cphi, -1.0, 1.0))
+            th = np.clip(0.0, a - phi, a + phi)
+            # ... unless the inner race does not hold it at the bottom (contact open there,
+            # or past the inner groove's edge)
+            e2 = b.A2 - lo
+            free_ = ~((e2 > 0) & (np.hypot(b.A1, e2) > model.ri))
+            th = np.clip(np.where(free_, 0.0, th), -0.49 * np.pi, 0.49 * np.pi)
+            X1 = np.where(unl, lo * np.sin(th), X1)
+            X2 = np.where(unl, lo * np.cos(th), X2)
     x[:Z], x[Z:2 * Z] = X1, X2
     return x
 
@@ -788,11 +926,11 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
         orbital speed from its own contact angles.  The two agree when all balls are
         loaded alike (pure thrust); under combined load at high speed "ball" gives the
         lightly loaded balls, whose inner contact angle approaches 80 deg, orbital speeds
-        near 0.8 omega_i and can make the equilibrium ill-posed (in a random sweep up to
-        d_m N = 3e6 mm rpm, 5 of ~130 "ball" cases above 14,000 rpm on the 218 bearing did
-        not converge; "cage" converged in all 400).
+        near 0.8 omega_i and can make the equilibrium ill-posed (such balls are flagged
+        when their orbital speed leaves the rolling range, see ``result.warnings``).
     friction_coefficient : float, optional
-        Coefficient of friction mu for the gyroscopic-slip check (``result.gyroscopic_slip``).
+        Coefficient of friction mu for the gyroscopic-slip check (``result.gyroscopic_slip``
+        and ``result.skidding``; without it ``skidding`` uses :data:`TRACTION_LIMIT`).
     rtol : float, optional
         Tolerance on the residuals relative to the load scale [-].
     max_iter : int, optional
@@ -805,7 +943,11 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
     Raises
     ------
     ConvergenceError
-        If the equilibrium is not found (the message gives residual and iterations).
+        If the equilibrium is not found: the message gives residual and iterations, the
+        fraction of the speed up to which the equilibrium was followed from the static
+        one, and the state of the balls there (contact angles at the groove edge,
+        friction needed beyond the contact load).  Results where the model's
+        assumptions break are returned flagged instead (``result.warnings``).
     ValueError
         For invalid arguments (named in the message), and for loads beyond the
         load-deflection range (as :func:`ballrace.analytic.loaddist.solve`).
@@ -891,42 +1033,13 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
     Q_ref = max(F_ref / Z, Fc0)
 
     outer = np.full(Z, control != "inner")
-    total_it = 0
+    count = [0]
+    what = (f"Fa={L[0]:g} N, Fr={L[1]:g} N, Fz={L[2]:g} N, speed_inner={wi:g} rad/s, "
+            f"speed_outer={wo:g} rad/s, control={control!r}, gyroscopic={gyroscopic!r}, "
+            f"orbital={orbital!r}")
     for _ in range(8 if control == "jones" else 1):
-        x = None
-        b = err = None
-        for fraction in ((1.0,) if static else (1.0, None)):
-            if fraction is None:
-                # continuation in speed (F_c grows as speed^2)
-                log.info("highspeed: direct Newton failed (residual %.3e); continuing in speed",
-                         err)
-                steps = (0.25, 0.5, 0.75, 1.0)
-            else:
-                steps = (fraction,)
-            xs = _start(model, psi, u0, wi * steps[0], wo * steps[0], free, static)
-            ok = True
-            for s in steps:
-                sysm = _System(model, psi, L, free, wi * s, wo * s, gyroscopic, static,
-                               F_ref, Q_ref, orbital)
-                sysm.outer = outer
-                xs, b, err, it = _newton(sysm, xs, rtol, max_iter)
-                total_it += it
-                if not err <= rtol:
-                    ok = False
-                    break
-            if ok:
-                x = xs
-                break
-        if x is None:
-            raise ConvergenceError(
-                f"high-speed equilibrium did not converge: scaled residual {err:.3e} "
-                f"(rtol {rtol:g}) after {total_it} Newton iterations (Fa={L[0]:g} N, "
-                f"Fr={L[1]:g} N, speed_inner={wi:g} rad/s, speed_outer={wo:g} rad/s, "
-                f"control={control!r}, orbital={orbital!r})"
-                + (". With inner-race control the gyroscopic moment may need more friction "
-                   "than a lightly loaded inner contact can give; try control='outer' or "
-                   "'jones', or gyroscopic='none'"
-                   if control == "inner" and gyroscopic != "none" else ""))
+        sysm, x, b = _equilibrium(model, psi, L, free, wi, wo, gyroscopic, static, F_ref,
+                                  Q_ref, orbital, outer, u0, rtol, max_iter, count, what)
         if control != "jones" or static:
             break
         new = _jones_outer(bearing, b)
@@ -937,9 +1050,125 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
         u0 = sysm.unpack(x)[2]
     else:
         log.warning("highspeed: Jones race-control choice did not settle after 8 rounds")
+    total_it = count[0]
 
     return _result(bearing, model, psi, sysm, x, b, L, wi, wo, sysm.outer, gyroscopic, mu,
                    total_it, F_ref, Q_ref, rtol)
+
+
+def _equilibrium(model, psi, L, free, wi, wo, gyro, static, F_ref, Q_ref, orbital, outer,
+                 u0, rtol, max_iter, count, what):
+    """Solve the equilibrium at the full speeds; returns (system, x, balls).
+
+    Damped Newton from the static start first.  If that fails, the solution branch is
+    followed in speed (omega s, s from 0 to 1; F_c grows as s^2) from the static
+    solution with an adaptive step and a secant predictor.  If the branch cannot be
+    continued to s = 1 (the step falls below 1/1000 at a turning point of the branch,
+    or at the edge of the model: a contact at the groove edge, a friction force needed
+    beyond the contact load), ConvergenceError names the speed fraction reached and the
+    state of the balls there.
+    """
+    def system(s):
+        sysm = _System(model, psi, L, free, wi * s, wo * s, gyro, static, F_ref, Q_ref,
+                       orbital)
+        sysm.outer = outer
+        return sysm
+
+    sysm = system(1.0)
+    x, b, err, it = _damped_newton(sysm, _start(model, psi, u0, wi, wo, free, static), rtol,
+                                   max_iter if static else min(max_iter, 30))
+    count[0] += it
+    if err <= rtol:
+        return sysm, x, b
+    if static:
+        raise ConvergenceError(
+            f"high-speed equilibrium (zero speed) did not converge: scaled residual "
+            f"{err:.3e} (rtol {rtol:g}) after {count[0]} Newton iterations ({what})")
+    b_direct = b
+    log.info("highspeed: direct Newton failed (residual %.3e); continuing in speed", err)
+    s, ds = 0.0, 0.25
+    last = tangent = None
+    while s < 1.0 and ds >= 1.0 / 128:
+        s_new = min(1.0, s + ds)
+        if last is None:
+            xg = _start(model, psi, u0, wi * s_new, wo * s_new, free, static)
+        else:                                   # Euler predictor along the branch
+            xg = last[1] + (s_new - s) * tangent
+        sy = system(s_new)
+        # from the predictor a step converges in a few full Newton steps; a step that
+        # needs heavy damping or more iterations is halved instead
+        xn, bn, err, it = (_damped_newton(sy, xg, rtol, min(max_iter, 30)) if last is None
+                           else _damped_newton(sy, xg, rtol, min(max_iter, 12), 1.0 / 16))
+        count[0] += it
+        log.debug("highspeed: continuation to %.4g of the speed: %s after %d iterations",
+                  s_new, "converged" if err <= rtol else f"failed ({err:.3e})", it)
+        if err <= rtol:
+            s = s_new
+            last = (sy, xn, bn)
+            if s < 1.0:                         # tangent dx/ds = -J^-1 dR/ds
+                h = 1e-6
+                dR = (system(s + h).residual(system(s + h).balls(xn))
+                      - system(s - h).residual(system(s - h).balls(xn))) / (2 * h)
+                try:
+                    tangent = np.linalg.solve(sy.jacobian(xn), -dR)
+                except np.linalg.LinAlgError:
+                    tangent = np.zeros_like(xn)
+                if not np.all(np.isfinite(tangent)):
+                    tangent = np.zeros_like(xn)
+            ds = min(2.0 * ds, 0.5)
+        else:
+            ds = 0.5 * (s_new - s)
+    if s >= 1.0:
+        return last
+    hint = (". With inner-race control the gyroscopic moment may need more friction than "
+            "a lightly loaded inner contact can give; control='outer' or 'jones', or "
+            "gyroscopic='none', may have a solution" if gyro != "none" and np.any(~outer)
+            else "")
+    if last is None:
+        raise ConvergenceError(
+            f"high-speed equilibrium not found: Newton did not converge at full speed nor "
+            f"at {100 / 128:.2g} % of it (scaled residual {err:.3e}, rtol {rtol:g}, after "
+            f"{count[0]} Newton iterations; {what})"
+            + "".join(f"; at the last full-speed iterate {w}"
+                      for w in _model_limits(model, b_direct)) + hint)
+    reasons = _model_limits(model, last[2])
+    raise ConvergenceError(
+        f"high-speed equilibrium not found: Newton from the static start failed, and the "
+        f"equilibrium followed in speed from the static solution ends at {100 * s:.4g} % "
+        f"of the speed (none found within {100 / 64:.2g} % beyond; scaled residual "
+        f"{err:.3e}, rtol {rtol:g}, after {count[0]} Newton iterations; {what}). There: "
+        + ("; ".join(reasons) if reasons else "a turning point of the solution branch")
+        + ". The quasi-static model has no solution on this branch at the given speed"
+        + hint)
+
+
+def _model_limits(model, b):
+    """Descriptions of balls at the limits of the model (for error messages)."""
+    out = []
+
+    def balls_(mask):
+        return ", ".join(str(k + 1) for k in np.flatnonzero(mask))
+
+    for race, Q, a, lam, d, on in (("inner", b.Qi, b.ai, b.lam_i, b.di, b.on_i),
+                                   ("outer", b.Qo, b.ao, b.lam_o, b.do, b.on_o)):
+        past = ~on & (d > 0)
+        if np.any(past):
+            out.append(f"balls {balls_(past)} are pressed past the {race} groove edge (90 "
+                       "deg from the groove bottom, no ring material: they would ride on "
+                       "the land)")
+        edge = (Q > 0) & (np.abs(a) > np.radians(80.0))
+        if np.any(edge):
+            out.append(f"balls {balls_(edge)} have {race} contact angles up to "
+                       f"{np.degrees(np.max(np.abs(a[edge]))):.1f} deg, approaching the "
+                       "groove edge (90 deg), beyond which the race carries nothing")
+        f = np.abs(lam * b.Mg) / model.D
+        need = np.where(Q > 0, f / np.where(Q > 0, Q, 1.0), 0.0)
+        big = need > 1.0
+        if np.any(big):
+            out.append(f"the friction resisting the gyroscopic moment at the {race} race is "
+                       f"up to {float(np.max(need)):.3g} x the contact load (balls "
+                       f"{balls_(big)}): no traction can hold it")
+    return out
 
 
 def _jones_outer(bearing, b):
@@ -965,14 +1194,55 @@ def _result(bearing, model, psi, sysm, x, b, L, wi, wo, outer, gyro, mu, iters, 
     sr_o = (1 + rho * np.cos(b.ao_k)) * np.tan(b.ao_k - b.beta) - rho * np.sin(b.ao_k)
     sr_i = np.where(outer, sr_i, 0.0)              # no spin on the controlling race
     sr_o = np.where(outer, 0.0, sr_o)
-    slip = None
-    if mu is not None:
-        fi = np.abs(b.lam_i * b.Mg) / model.D
-        fo = np.abs(b.lam_o * b.Mg) / model.D
-        slip = (fi > mu * b.Qi) | (fo > mu * b.Qo)
-        if np.any(slip):
-            log.warning("highspeed: friction (mu=%g) cannot resist the gyroscopic moment on "
-                        "%d balls (gyroscopic pivoting)", mu, int(np.sum(slip)))
+    # ---- where the model's assumptions break (flags and warnings)
+    warn = []
+
+    def balls_(mask):
+        return ", ".join(str(k + 1) for k in np.flatnonzero(mask))
+
+    fi = np.abs(b.lam_i * b.Mg) / model.D
+    fo = np.abs(b.lam_o * b.Mg) / model.D
+    mu_s = TRACTION_LIMIT if mu is None else mu
+    skid = ((b.Qi > 0) & (fi > mu_s * b.Qi)) | ((b.Qo > 0) & (fo > mu_s * b.Qo))
+    slip = None if mu is None else skid
+    if np.any(skid):
+        need = np.maximum(np.where(b.Qi > 0, fi / np.where(b.Qi > 0, b.Qi, 1.0), 0.0),
+                          np.where(b.Qo > 0, fo / np.where(b.Qo > 0, b.Qo, 1.0), 0.0))
+        warn.append(f"balls {balls_(skid)} skid: the friction needed to resist the "
+                    f"gyroscopic moment is up to {float(np.max(need)):.3g} x the contact "
+                    f"load (> {mu_s:g}); the balls cannot roll as race control assumes")
+    past_i = ~b.on_i & (b.di > 0)
+    past_o = ~b.on_o & (b.do > 0)
+    for race, past, Q, a in (("inner", past_i, b.Qi, b.ai), ("outer", past_o, b.Qo, b.ao)):
+        if np.any(past):
+            warn.append(f"balls {balls_(past)}: {race} line of centres 90 deg or more from "
+                        "the groove bottom (no ring material there; taken as unloaded, the "
+                        "ball would bear on the land)")
+        ts = bearing.shoulder_angle(race)
+        if ts is not None:
+            over = (Q > 0) & (np.abs(a) > ts)
+            if np.any(over):
+                warn.append(f"balls {balls_(over)}: {race} contact angle beyond the shoulder "
+                            f"edge ({np.degrees(ts):.1f} deg from the groove bottom)")
+            past = past | over
+        if race == "inner":
+            past_i = past
+        else:
+            past_o = past
+    ratio = float("nan")
+    if wi != wo and not sysm.static:
+        f = (b.wc - wo) / (wi - wo)
+        ratio = float(np.mean(f))
+        lo_, hi_ = CAGE_RATIO_RANGE[0] * (1.0 - rho), CAGE_RATIO_RANGE[1]
+        out = (f < lo_) | (f > hi_)
+        if np.any(out):
+            warn.append(f"balls {balls_(out)}: orbital speed {float(np.min(f)):.3g}"
+                        + (f"-{float(np.max(f)):.3g}" if np.ptp(f) > 1e-9 else "")
+                        + f" x the relative ring speed, outside the rolling range "
+                        f"[{lo_:.3g}, {hi_:.3g}]: the balls cannot roll on both races "
+                        "(gross sliding; the quasi-static model does not apply)")
+    for w in warn:
+        log.warning("highspeed: %s", w)
     loads = b.C.sum(axis=0)
     arrays = (b.Qi, b.Qo, b.ai_k, b.ao_k, b.di, b.do, b.X1, b.X2, b.Fc, b.Mg, b.wc, b.wR,
               b.beta, sr_i, sr_o, u, loads)
@@ -982,11 +1252,18 @@ def _result(bearing, model, psi, sysm, x, b, L, wi, wo, outer, gyro, mu, iters, 
                                "Newton iterations")
     return HighSpeedResult(
         bearing=bearing, azimuths=psi, speed_inner=wi, speed_outer=wo,
-        inner_loads=b.Qi, outer_loads=b.Qo, inner_contact_angles=b.ai_k,
-        outer_contact_angles=b.ao_k, inner_deflections=b.di, outer_deflections=b.do,
+        inner_loads=b.Qi, outer_loads=b.Qo,
+        inner_contact_angles=np.clip(b.ai, -_EDGE, _EDGE),
+        outer_contact_angles=np.clip(b.ao, -_EDGE, _EDGE),
+        inner_deflections=b.di, outer_deflections=b.do,
         ball_positions=np.stack([b.X1, b.X2], axis=-1), centrifugal_force=b.Fc,
         gyroscopic_moment=b.Mg, orbital_speed=b.wc, spin_speed=b.wR, pitch_angle=b.beta,
         spin_to_roll_inner=sr_i, spin_to_roll_outer=sr_o,
         control=np.where(outer, "outer", "inner"), displacements=u, loads=loads, applied=L,
         residual=res, relative_residual=res / F_ref, iterations=int(iters), gyroscopic=gyro,
-        friction_coefficient=mu, gyroscopic_slip=slip)
+        friction_coefficient=mu, gyroscopic_slip=slip,
+        inner_kinematic_angles=b.ai_k, outer_kinematic_angles=b.ao_k,
+        inner_friction_share=np.array(b.lam_i, float),
+        outer_friction_share=np.array(b.lam_o, float),
+        beyond_groove_inner=past_i, beyond_groove_outer=past_o, skidding=skid,
+        cage_speed_ratio=ratio, warnings=tuple(warn))

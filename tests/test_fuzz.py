@@ -24,8 +24,9 @@ runs a fixed, derandomized set of examples that takes about a minute in all;
 ``HYPOTHESIS_PROFILE=fuzz`` (``make fuzz``) draws fresh random examples, weighted by
 cost: of the profile's 10^4, 0.3 for the general solve, 0.15 each for the
 radial/thrust/combined draws (three solver calls each) and eccentric thrust, 0.1 duplex,
-0.01 vectorized pairs (three solves each), 0.005 high speed -- about 1.04 x 10^4 solver
-calls.  The long run
+0.01 vectorized pairs (three solves each), 0.005 high speed, 0.01 high speed on catalogue
+bearings -- about 1.05 x 10^4 solver calls.  High-speed results are re-derived
+independently (tests/hsref.py) from what they report.  The long run
 records assertion failures with their inputs and goes on drawing (the last test then
 fails), and with ``BALLRACE_FUZZ_REPORT=file`` appends a summary (cases, refusals,
 convergence failures, failures, worst residual per entry point).
@@ -43,6 +44,7 @@ from hypothesis import strategies as st
 import ballrace
 from ballrace.analytic import duplex, highspeed, life, loaddist
 from ballrace.analytic.loaddist import ConvergenceError
+from hsref import rederive_highspeed
 
 PROFILE = os.environ.get("HYPOTHESIS_PROFILE", "default")
 FUZZ = PROFILE == "fuzz"
@@ -331,13 +333,14 @@ def test_fuzz_highspeed(data):
     w_max = 2e6 / (brg.pitch_diameter * 1e3) * np.pi / 30
     wi = data.draw(st.sampled_from([0.0, 1.0])) * data.draw(st.floats(0.0, 1.0)) * w_max
     wo = data.draw(st.sampled_from([0.0, 1.0])) * data.draw(st.floats(-1.0, 1.0)) * w_max
-    control = data.draw(st.sampled_from(["outer", "jones"]))
+    control = data.draw(st.sampled_from(highspeed.CONTROLS))
     orbital = data.draw(st.sampled_from(highspeed.ORBITALS))
+    gyro = data.draw(st.sampled_from(highspeed.GYROSCOPIC))
     _note(bearing=brg, Fa=Fa, Fr=Fr, speed_inner=wi, speed_outer=wo, control=control,
-          orbital=orbital)
+          orbital=orbital, gyroscopic=gyro)
     try:
         r = highspeed.solve(brg, Fa=Fa, Fr=Fr, speed_inner=wi, speed_outer=wo, control=control,
-                            orbital=orbital)
+                            orbital=orbital, gyroscopic=gyro)
     except ValueError as exc:
         _refused(exc)
         _record("highspeed", "refused")
@@ -357,7 +360,69 @@ def test_fuzz_highspeed(data):
             "R", (), {"ball_loads": r.inner_loads, "contact_angles": r.inner_contact_angles,
                       "ball_loads_outer": r.outer_loads,
                       "contact_angles_outer": r.outer_contact_angles})).L10)
+    check_highspeed(brg, r)
     _record("highspeed", "ok", r.relative_residual)
+
+
+def check_highspeed(brg, r):
+    """The result re-derived independently (tests/hsref.py: groove centres from the ring
+    displacement, deflections from the ball positions, Q from hertz.contact_stiffness on
+    half-torus grooves, ball and ring balances from the reported loads, angles, friction
+    shares, F_c and M_g) to 1e-8 of the load scale; flags consistent with the warnings."""
+    bad = rederive_highspeed(brg, r)
+    assert not bad, bad
+    flagged = (np.any(r.skidding) or np.any(r.beyond_groove_inner)
+               or np.any(r.beyond_groove_outer))
+    assert (not flagged) or r.warnings
+    assert np.all(r.inner_loads[r.beyond_groove_inner & (r.inner_deflections > 0)] == 0) or \
+        brg.shoulder_height_inner is not None
+
+
+STEEL208 = ballrace.Material(E=208e9, nu=0.3, density=7850.0)
+
+
+@st.composite
+def catalogue_bearings(draw):
+    """Bearings like a catalogue's: deep-groove (clearance) or angular-contact 15/25/40 deg,
+    D 5-25 mm, D/d_m 0.12-0.3, f_i 0.505-0.52, f_o 0.515-0.54, steel (E 208 GPa)."""
+    D = draw(st.floats(5e-3, 25e-3))
+    dm = D / draw(st.floats(0.12, 0.3))
+    Z = int(min(np.floor(0.9 * np.pi / np.arcsin(D / dm)), draw(st.integers(7, 20))))
+    fi, fo = draw(st.floats(0.505, 0.52)), draw(st.floats(0.515, 0.54))
+    kind = draw(st.sampled_from([None, 15.0, 25.0, 40.0]))
+    if kind is None:
+        A = (fi + fo - 1) * D
+        return ballrace.BallBearing(D, Z, dm, fi, fo, material=STEEL208,
+                                    diametral_clearance=draw(st.floats(0.005, 0.2)) * A)
+    return ballrace.BallBearing(D, Z, dm, fi, fo, material=STEEL208,
+                                free_contact_angle=np.radians(kind))
+
+
+@_settings(16, 0.01)
+@given(st.data())
+@collect('highspeed (catalogue)')
+def test_fuzz_highspeed_catalogue(data):
+    """The population of issue 21: catalogue bearings, loads 1e-3-0.5 C (axial, radial or
+    combined), d_m n 5e4-1.5e6 mm rpm, all three race controls.  Every result must pass
+    the independent re-derivation; ConvergenceError must say where the equilibrium ends."""
+    brg = data.draw(catalogue_bearings())
+    C = brg.dynamic_rating()
+    F = C * 10 ** data.draw(st.floats(-3.0, np.log10(0.5)))
+    t = data.draw(st.sampled_from([0.0, 1.0, None]))
+    t = data.draw(st.floats(0.1, 0.9)) if t is None else t
+    Fa, Fr = F * np.sin(t * np.pi / 2), F * np.cos(t * np.pi / 2)
+    w = 10 ** data.draw(st.floats(np.log10(5e4), np.log10(1.5e6))) / (
+        brg.pitch_diameter * 1e3) * np.pi / 30
+    control = data.draw(st.sampled_from(highspeed.CONTROLS))
+    _note(bearing=brg, Fa=Fa, Fr=Fr, speed_inner=w, control=control)
+    try:
+        r = highspeed.solve(brg, Fa=Fa, Fr=Fr, speed_inner=w, control=control)
+    except ConvergenceError as exc:
+        assert "high-speed equilibrium" in str(exc) and "Newton iterations" in str(exc)
+        _record("highspeed (catalogue)", "convergence")
+        return
+    check_highspeed(brg, r)
+    _record("highspeed (catalogue)", "ok", r.relative_residual)
 
 
 @pytest.mark.skipif(not FUZZ, reason="the long run only (HYPOTHESIS_PROFILE=fuzz)")

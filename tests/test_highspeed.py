@@ -104,15 +104,16 @@ def test_small_speed_tends_to_static_as_speed_squared():
 
 
 # ----------------------------------------------------------------- independent check
-def _harris_pure_thrust(Fa, w):
+def _harris_pure_thrust(Fa, w, brg=BRG, start=None):
     """Independent re-implementation for pure thrust (all balls alike), outer-race control,
     gyroscopic moment reacted at the outer race (Harris 2001 ch. 25; H&D eqs. 3.93-3.112):
     unknowns X1, X2 (ball centre from outer-groove centre) and the axial displacement,
-    kinematics from Harris's closed forms."""
-    D, dm, Z = BRG.ball_diameter, BRG.pitch_diameter, BRG.n_balls
-    fi, fo, bf = BRG.f_inner, BRG.f_outer, BRG.free_contact_angle
+    kinematics from Harris's closed forms.  The grooves are full tori here (no groove
+    edge).  ``start``: (X1, X2, da) [m], default the static solution."""
+    D, dm, Z = brg.ball_diameter, brg.pitch_diameter, brg.n_balls
+    fi, fo, bf = brg.f_inner, brg.f_outer, brg.free_contact_angle
     A = (fi + fo - 1) * D
-    m = 7850.0 * np.pi * D**3 / 6
+    m = brg.ball_material.density * np.pi * D**3 / 6
     J = m * D**2 / 10
     g = D / dm
 
@@ -124,8 +125,8 @@ def _harris_pure_thrust(Fa, w):
         so, co = X1 / lo, X2 / lo
         si, ci = (A1 - X1) / li, (A2 - X2) / li
         ai, ao = np.arctan2(si, ci), np.arctan2(so, co)
-        Ki = BRG.contact_stiffness(ai)[0]
-        Ko = BRG.contact_stiffness(ao)[1]
+        Ki = brg.contact_stiffness(ai)[0]
+        Ko = brg.contact_stiffness(ao)[1]
         Qi, Qo = Ki * max(di, 0) ** 1.5, Ko * max(do, 0) ** 1.5
         beta = np.arctan(so / (co + g))
         wm = w * (1 - g * ci) / (1 + np.cos(ai - ao))
@@ -138,9 +139,10 @@ def _harris_pure_thrust(Fa, w):
                 (Qi * ci - Qo * co - 2 * Mg / D * so + Fc) / 1e3,
                 (Z * Qi * si - Fa) / 1e3]
 
-    s = hs.solve(BRG, Fa=Fa)
-    X = s.ball_positions[0]
-    v = fsolve(eqs, [X[0] * 1e3, X[1] * 1e3, s.axial_displacement * 1e6], xtol=1e-12)
+    if start is None:
+        s = hs.solve(brg, Fa=Fa)
+        start = (*s.ball_positions[0], s.axial_displacement)
+    v = fsolve(eqs, [start[0] * 1e3, start[1] * 1e3, start[2] * 1e6], xtol=1e-12)
     assert np.max(np.abs(eqs(v))) < 1e-9
     return v[0] * 1e-3, v[1] * 1e-3, v[2] * 1e-6
 
@@ -364,8 +366,8 @@ def test_no_nan_for_valid_inputs(Fa, Fr, rpm, outer_ring, control, gyro):
 def test_inner_control_light_inner_contact_converges_and_flags_slip():
     """Fa = 1000 N at 8641 rpm, inner control, gyroscopic moment reacted at the inner race:
     the inner contact carries ~3 N against ~220 N at the outer.  The equations do have a
-    solution (the damped Newton alone stalled here and this test used to expect an error;
-    the Levenberg-Marquardt rescue finds it), but with mu = 0.1 every ball would pivot.
+    solution (the damped Newton from the static start stalls here; the continuation in
+    speed finds it), but with mu = 0.1 every ball would pivot.
     An unreachable rtol still raises, naming residual, iterations and the hint."""
     kw = dict(Fa=1000.0, speed_inner=8641 * RPM, control="inner",
               gyroscopic="controlling-race")
@@ -401,3 +403,199 @@ def test_issue14_item5_overload_reported_like_the_static_solver():
         hs.solve(brg, Fa=1e9, speed_inner=1000.0)
     with pytest.raises(ValueError, match="beyond the load-deflection range"):
         ld.solve(brg, Fa=1e9)
+
+
+# ----------------------------------------------------------------- issue 21
+from hsref import rederive_highspeed  # noqa: E402
+
+STEEL208 = ballrace.Material(E=208e9, nu=0.3, density=7850.0)
+R40, R25 = np.radians(40.0), np.radians(25.0)
+# the four reproducers of issue 21: (bearing, loads and speed)
+ISSUE21 = {
+    "40deg-light-combined-inner": (
+        ballrace.BallBearing(0.011472, 11, 0.05729, 0.5068, 0.5133, free_contact_angle=R40,
+                             material=STEEL208),
+        dict(Fa=39.445, Fr=28.333, speed_inner=738.5108, control="inner")),
+    "40deg-pure-radial-inner": (
+        ballrace.BallBearing(0.010351, 7, 0.04465, 0.5076, 0.5387, free_contact_angle=R40,
+                             material=STEEL208),
+        dict(Fa=0.0, Fr=190.046, speed_inner=547.086, control="inner")),
+    "25deg-light-combined-inner": (
+        ballrace.BallBearing(0.006654, 10, 0.02771, 0.5101, 0.5333, free_contact_angle=R25,
+                             material=STEEL208),
+        dict(Fa=27.0, Fr=49.843, speed_inner=3729.6389, control="inner")),
+    "40deg-thrust-outer": (
+        ballrace.BallBearing(0.020265, 10, 0.13107, 0.5109, 0.54, free_contact_angle=R40,
+                             material=STEEL208),
+        dict(Fa=3230.782, Fr=0.0, speed_inner=798.9605, control="outer")),
+}
+
+
+@pytest.mark.parametrize("gyro", ["harris", "none"])
+@pytest.mark.parametrize("case", list(ISSUE21))
+def test_issue21_reproducers_converge_correctly_or_say_why(case, gyro):
+    """Each reproducer either converges to a result that the independent re-derivation
+    (tests/hsref.py: deflections from the ball positions and groove centres, Q from
+    hertz.contact_stiffness, half-torus grooves, ball and ring balances from the REPORTED
+    loads, angles, friction shares, F_c and M_g) confirms to 1e-8 of the load scale, or
+    raises ConvergenceError naming where the equilibrium ends and why.  Which of the two
+    is stated per case (the no-solution cases are checked further below)."""
+    brg, kw = ISSUE21[case]
+    fails = gyro == "harris" and case in ("25deg-light-combined-inner", "40deg-thrust-outer")
+    if fails:
+        with pytest.raises(hs.ConvergenceError,
+                           match=r"ends at .* % of the speed.*There: .*(friction|groove edge)"):
+            hs.solve(brg, gyroscopic=gyro, **kw)
+        return
+    r = hs.solve(brg, gyroscopic=gyro, **kw)
+    assert rederive_highspeed(brg, r) == []
+    assert np.all(np.abs(r.inner_contact_angles) <= np.pi / 2)
+    assert np.all(np.abs(r.outer_contact_angles) <= np.pi / 2)
+    # a ball overlapping the full inner torus beyond its edge carries nothing, is flagged
+    # and named in a warning (as in the static model, where it is unloaded)
+    past = r.beyond_groove_inner
+    assert np.all(r.inner_loads[past] == 0)
+    if np.any(past):
+        assert any("90 deg or more from the groove bottom" in w for w in r.warnings)
+
+
+def test_issue21_light_combined_flags_balls_past_the_groove_edge():
+    """40 deg, tight inner (f_i 0.5068) / loose outer (0.5133) groove, 39 N thrust + 28 N
+    radial at d_m n 4e5: the far-side balls' inner lines of centres lie beyond 90 deg from
+    the groove bottom while the ball overlaps the full torus (the ball would ride on the
+    land).  They carry no inner load, the result says so, and the reported angles of the
+    loaded balls are the geometric ones (re-derived)."""
+    brg, kw = ISSUE21["40deg-light-combined-inner"]
+    r = hs.solve(brg, **kw)
+    D = brg.ball_diameter
+    A = brg.curvature_center_distance
+    psi = r.azimuths
+    A2 = A * np.cos(brg.free_contact_angle) + r.displacements[1] * np.cos(psi)
+    e2 = A2 - r.ball_positions[:, 1]
+    past = (e2 <= 0) & (r.inner_deflections > 0)
+    assert np.any(past)
+    np.testing.assert_array_equal(r.beyond_groove_inner, past)
+    assert np.all(r.inner_loads[past] == 0) and np.all(r.inner_friction_share[past] == 0)
+    assert r.warnings and np.all(np.isfinite(r.cage_speed_ratio))
+    assert np.all(r.inner_deflections[past] < 0.05 * D)
+
+
+def test_issue21_thrust_needs_an_inner_contact_past_the_groove_edge():
+    """Reproducer 4 (40 deg, f_i 0.5109 / f_o 0.54, 5 % C thrust at d_m n 1e6, outer-race
+    control, Harris gyroscopics): followed in speed, the inner contact angle reaches the
+    groove edge before the full speed.  Independent check: Harris's pure-thrust equations
+    with full-torus grooves (``_harris_pure_thrust``, fsolve), continued in speed from the
+    solver's solution at 80 %, give an inner contact angle beyond 90 deg at full speed --
+    no ring material is there, so the model has no solution in the grooves."""
+    brg, kw = ISSUE21["40deg-thrust-outer"]
+    with pytest.raises(hs.ConvergenceError, match="groove edge"):
+        hs.solve(brg, **kw)
+    w, Fa = kw["speed_inner"], kw["Fa"]
+    r = hs.solve(brg, Fa=Fa, speed_inner=0.8 * w)
+    v = (*r.ball_positions[0], r.axial_displacement)
+    for f in np.linspace(0.8, 1.0, 11)[1:]:
+        v = _harris_pure_thrust(Fa, f * w, brg, start=v)
+    A = brg.curvature_center_distance
+    bf = brg.free_contact_angle
+    ai = np.arctan2(A * np.sin(bf) + v[2] - v[0], A * np.cos(bf) - v[1])
+    assert np.degrees(ai) > 90.0
+
+
+def test_issue21_inner_control_friction_beyond_the_load_is_named():
+    """Reproducer 3 (25 deg, light load, d_m n 1.4e6, inner-race control, Harris
+    gyroscopics): the branch followed from the static solution ends where the friction
+    that resists M_g at the inner race is several times the inner contact load; the error
+    says so.  Without the gyroscopic moment the same case converges (re-derived)."""
+    brg, kw = ISSUE21["25deg-light-combined-inner"]
+    with pytest.raises(hs.ConvergenceError, match=r"friction .* inner race is up to"):
+        hs.solve(brg, **kw)
+    r = hs.solve(brg, gyroscopic="none", **kw)
+    assert rederive_highspeed(brg, r) == []
+
+
+def test_issue21_bearing_at_zero_speed_equals_static_model():
+    """The bearing of reproducer 1 under its load at zero speed: the same ball loads and
+    angles as the static model (loaddist, rings parallel; loads 1e-9 of the largest,
+    angles of loaded balls 1e-9 rad), and at 1 rad/s within 1e-4 (F_c ~ omega^2),
+    re-derived."""
+    brg, kw = ISSUE21["40deg-light-combined-inner"]
+    s = ld.solve(brg, Fa=kw["Fa"], Fy=kw["Fr"], displacements=[np.nan, np.nan, 0, 0, 0])
+    r = hs.solve(brg, Fa=kw["Fa"], Fr=kw["Fr"])
+    Qm = s.ball_loads.max()
+    assert np.max(np.abs(r.inner_loads - s.ball_loads)) <= 1e-9 * Qm
+    on = s.ball_loads > 1e-6 * Qm
+    np.testing.assert_allclose(r.inner_contact_angles[on], s.contact_angles[on], atol=1e-9)
+    r1 = hs.solve(brg, Fa=kw["Fa"], Fr=kw["Fr"], speed_inner=1.0, control="inner")
+    assert np.max(np.abs(r1.inner_loads - s.ball_loads)) <= 1e-4 * Qm
+    assert rederive_highspeed(brg, r1) == []
+
+
+def test_reported_angles_are_the_solved_ones_for_barely_touching_contacts():
+    """Barely touching contacts (0 < delta < 1e-5 D, where the kinematics blend into the
+    line of groove centres) report their geometric contact angle; the blended angle is in
+    ``*_kinematic_angles``.  The ring balance rebuilt from the reported quantities (H&D
+    eqs. 3.111-3.112) closes to 1e-9 of the applied load."""
+    brg, kw = ISSUE21["40deg-light-combined-inner"]
+    r = hs.solve(brg, gyroscopic="none", **kw)
+    D = brg.ball_diameter
+    lam = r.inner_friction_share * r.gyroscopic_moment / D
+    T = r.inner_loads * np.sin(r.inner_contact_angles) - lam * np.cos(r.inner_contact_angles)
+    P = r.inner_loads * np.cos(r.inner_contact_angles) + lam * np.sin(r.inner_contact_angles)
+    assert abs(T.sum() - kw["Fa"]) <= 1e-9 * kw["Fa"]
+    assert abs((P * np.cos(r.azimuths)).sum() - kw["Fr"]) <= 1e-9 * kw["Fa"]
+    assert rederive_highspeed(brg, r) == []
+
+
+def test_unphysical_cage_speed_is_flagged():
+    """The cage-speed ratio (omega_c - omega_o)/(omega_i - omega_o) is reported (Harris's
+    closed form for outer-race control, 1e-9); the 218 bearing at 10,000 rpm stays in the
+    rolling range, without warnings; far outside it (the outer ring turning with the
+    inner one nearly, so that the balls are carried round) the result is flagged."""
+    r = hs.solve(BRG, Fa=17800.0, speed_inner=10000 * RPM)
+    g = BRG.ball_diameter / BRG.pitch_diameter
+    ai, ao = r.inner_contact_angles[0], r.outer_contact_angles[0]
+    # Harris (2001) outer-race control: omega_c / omega_i = (1 - g cos a_i)/(1 + cos(a_i - a_o))
+    assert r.cage_speed_ratio == pytest.approx((1 - g * np.cos(ai)) / (1 + np.cos(ai - ao)),
+                                               rel=1e-9)
+    assert r.warnings == () and not np.any(r.skidding)
+    assert not np.any(r.beyond_groove_inner) and not np.any(r.beyond_groove_outer)
+    lo, hi = hs.CAGE_RATIO_RANGE
+    assert lo * (1 - g) < r.cage_speed_ratio < hi
+
+
+def test_skidding_flag_without_friction_coefficient(caplog):
+    """Inner control, gyroscopic moment at the inner race, light thrust at 8641 rpm: the
+    inner friction needed exceeds 0.1 Q_i; the result flags it and logs a warning naming
+    the balls, with or without ``friction_coefficient``."""
+    kw = dict(Fa=1000.0, speed_inner=8641 * RPM, control="inner",
+              gyroscopic="controlling-race")
+    with caplog.at_level("WARNING", logger="ballrace.analytic.highspeed"):
+        r = hs.solve(BRG, **kw)
+    assert np.all(r.skidding) and r.gyroscopic_slip is None
+    assert any("skid" in w for w in r.warnings)
+    assert any("skid" in rec.getMessage() and "balls 1, 2" in rec.getMessage()
+               for rec in caplog.records)
+    need = np.abs(r.inner_friction_share * r.gyroscopic_moment) / BRG.ball_diameter
+    assert np.all(need > hs.TRACTION_LIMIT * r.inner_loads)
+
+
+def test_issue21_tight_inner_loose_outer_light_preload_is_not_silent(caplog):
+    """40 deg, tight inner / loose outer groove (f_i 0.511, f_o 0.54), preload 0.1 % C at
+    d_m n 6e5 mm rpm.  Outer-race control: the inner contact angle runs into the groove
+    edge before full speed (the solver once returned angles of 91-98 deg there), so
+    ConvergenceError names it.  Inner-race control: a result, flagged -- the balls skid
+    (M_g needs more than 0.1 Q of friction) and the cage turns at 0.16 of the shaft
+    speed, below the rolling range CAGE_RATIO_RANGE[0] (1 - D/d_m); both logged."""
+    brg = ballrace.BallBearing(0.0127, 12, 0.0635, 0.511, 0.54, free_contact_angle=R40,
+                               material=STEEL208)
+    kw = dict(Fa=1e-3 * brg.dynamic_rating(), speed_inner=6e5 / 63.5 * RPM)
+    with pytest.raises(hs.ConvergenceError, match="groove edge"):
+        hs.solve(brg, control="outer", **kw)
+    with caplog.at_level("WARNING", logger="ballrace.analytic.highspeed"):
+        r = hs.solve(brg, control="inner", **kw)
+    g = brg.ball_diameter / brg.pitch_diameter
+    assert r.cage_speed_ratio < hs.CAGE_RATIO_RANGE[0] * (1 - g)
+    assert np.all(r.skidding)
+    assert any("orbital speed" in w and "outside the rolling range" in w for w in r.warnings)
+    assert sum("highspeed:" in rec.getMessage() for rec in caplog.records) >= 2
+    assert rederive_highspeed(brg, r) == []
