@@ -116,8 +116,8 @@ def rows(iso: dict, catalogue_mark: str = "") -> list[tuple[str, object, object]
 
     ``kind`` follows :func:`ballrace.console.print_sections`: a unit kind converted to the
     display system (``"force"``, ``"small"``), ``None`` for a number, ``"=unit"`` printed as is.
-    ``catalogue_mark`` is appended to the lives from the catalogue load P (`` *``: they do
-    not see the operating clearance, said in the notes).
+    ``catalogue_mark`` is appended to the lives from the catalogue load P (an asterisk: they
+    do not see the operating clearance, said in the notes).
 
     Examples
     --------

@@ -91,23 +91,23 @@ critical traction table: ``docs/traction.md`` and ``tests/test_traction.py``.
 
 Accuracy (measured; asserted by ``tests/test_subsurface.py``; stresses in units of p_max)
 ------------------------------------------------------------------------------------------
-=============================================================== ==================
-check                                                           max abs. error
-=============================================================== ==================
-field on the axis vs the axis closed form, k = 1 … 2900          8e-16
-field vs Hamilton (1983) circle in 40-digit arithmetic, ν = 0,    1.4e-15
+====================================================================== ==================
+check                                                                  max abs. error
+====================================================================== ==================
+field on the axis vs the axis closed form, k = 1 … 2900                8e-16
+field vs Hamilton (1983) circle in 40-digit arithmetic, ν = 0,         1.4e-15
 0.3, 0.5, interior and surface (60 points each)
-field vs Johnson (1985) circle surface formulas (Huber 1904)     2.5e-15 (edge)
-field at y = 0 vs McEwen line contact, k = 1e4: σ_z, τ_xz        1.4e-8, 7e-9
-(limit error O(k^-2)); σ_x, σ_y (limit error O(k^-1), physical)   4e-5
-trace/(1+ν) independent of ν (checks H_xx + H_yy = -V_z)          3e-15
-trapezoid step 0.5 vs 0.2 (quadrature converged)                  < 3e-15
-LP τ0 vs the maximum of the field's τ_xz(x, 0, z), k = 1 … 10    4e-16 relative
-traction part vs Cerruti integrated over the ellipse, k = 1 … 9.5  2e-13 (~1e-14)
-traction: circle trailing-edge tension (Hamilton & Goodman 1966)  1e-14
-traction: ellipse at y = 0 vs Smith & Liu line contact, k = 1e4   2.1e-7
-traction: trapezoid step 0.5 vs 0.2                               1.9e-15
-=============================================================== ==================
+field vs Johnson (1985) circle surface formulas (Huber 1904)           2.5e-15 (edge)
+field at y = 0 vs McEwen line contact, k = 1e4: σ_z, τ_xz              1.4e-8, 7e-9
+(limit error O(k^-2)); σ_x, σ_y (limit error O(k^-1), physical)        4e-5
+trace/(1+ν) independent of ν (checks H_xx + H_yy = -V_z)               3e-15
+trapezoid step 0.5 vs 0.2 (quadrature converged)                       < 3e-15
+LP τ0 vs the maximum of the field's τ_xz(x, 0, z), k = 1 … 10          4e-16 relative
+traction part vs Cerruti integrated over the ellipse, k = 1 … 9.5      2e-13 (~1e-14)
+traction: circle trailing-edge tension (Hamilton & Goodman 1966)       1e-14
+traction: ellipse at y = 0 vs Smith & Liu line contact, k = 1e4        2.1e-7
+traction: trapezoid step 0.5 vs 0.2                                    1.9e-15
+====================================================================== ==================
 
 Near the contact edge on the surface the field is only as well conditioned as
 sqrt(1 - x²/a_x² - y²/a_y²) is to rounding of the coordinates.  The domain is
