@@ -38,27 +38,34 @@ way round (``direction=-1``) is the same bearing turned by 180 deg about the z a
 its own frame is (x, y, z) -> (-x, -y, z), so displacements and loads are mapped by
 T = diag(-1, -1, 1, -1, 1) (rotations are axial vectors and turn with the frame).
 
-Which way a bearing takes thrust (``direction``)::
+Which way a bearing takes thrust (``direction``); upper half of a section through the
+bearing, contact line through the ball centre::
 
-      direction = +1                        direction = -1
-      outer ring   \  o                       o  /   outer ring
-                    \/                         \/
-      inner ring    /\  --> shaft thrust       /\   <-- shaft thrust
-                       +x carried                   -x carried
+        direction = +1                        direction = -1
+      outer ring ------- *                  * ------- outer ring
+                      ( o )               ( o )
+      inner ring --- *                        * --- inner ring
+        inner ring pushes the ball +x          inner ring pushes the ball -x
+        ==> shaft thrust towards +x carried    ==> shaft thrust towards -x carried
+        contact line "/", pressure centre      contact line "\", pressure centre
+        on the axis to the left (-x)           on the axis to the right (+x)
 
     The free-contact-angle side of the bearing is loaded when the shaft (inner ring)
     moves towards +x relative to the housing (direction=+1) or towards -x (-1).  With
     the groove modelled as a complete torus (as in loaddist) a bearing also carries
     reverse thrust once the clearance is taken up; a deep-groove bearing is symmetric.
 
-Two single angular-contact bearings at two seats form an O arrangement (back-to-back)
-when the left one has ``direction=-1`` and the right one ``direction=+1``
-(contact lines diverging outward, pressure centres spread beyond the seats), and an X
-arrangement (face-to-face) with ``+1`` on the left and ``-1`` on the right::
+Two single angular-contact bearings at two seats form an O arrangement (back-to-back:
+contact lines diverging towards the axis, pressure centres spread beyond the seats)
+with ``direction=+1`` on the left seat and ``-1`` on the right one, and an X
+arrangement (face-to-face) with ``-1`` on the left and ``+1`` on the right::
 
-      O (back-to-back):   \o/ ...... \o/        X (face-to-face):  /o\ ...... /o\
-                          -1           +1                          +1          -1
-       (left seat carries shaft thrust -x)    (left seat carries shaft thrust +x)
+      O (back-to-back):   /o ........ o\        X (face-to-face):  o\ ........ /o
+                          +1          -1                           -1          +1
+      shaft growth unloads the pair           shaft growth loads the pair more
+
+A duplex pair at one seat follows the same rule: ``direction`` is that of its bearing
+1; in DB bearing 1 is the left row when ``direction=+1``.
 
 Reactions
 ---------
@@ -714,12 +721,11 @@ class _Problem:
         pts = [0.0, L] + list(shaft.steps) + [s.position for s in seats] + \
             [p.position for p in loads]
         tol = 1e-9 * L
-        key = np.unique(np.round(np.array(pts) / tol) * tol)
-        key = key[(key >= 0) & (key <= L)]
+        key = np.unique(np.clip(np.round(np.array(pts) / tol) * tol, 0.0, L))
         h = L / shaft.n_elements
         nodes = [key[0]]
         for a, b in zip(key[:-1], key[1:]):
-            if b - a < tol:
+            if b - a < 0.5 * tol:
                 continue
             n = max(1, int(math.ceil((b - a) / h - 1e-9)))
             nodes.extend(a + (b - a) * np.arange(1, n + 1) / n)
