@@ -94,6 +94,7 @@ shear, eq. 5.115); Friedman, Z. & Kosmatka, J.B. (1993) Comput. Struct. 47(3) 47
 """
 from __future__ import annotations
 
+import functools
 import logging
 import math
 from dataclasses import dataclass, field
@@ -171,7 +172,7 @@ class Shaft:
     Examples
     --------
     >>> s = Shaft([(0.26, 45e-3, 0.0)], BEARING_STEEL)
-    >>> round(s.length, 3), round(s.area(0.1) * 1e6, 2)
+    >>> round(s.length, 3), round(float(s.area(0.1)) * 1e6, 2)
     (0.26, 1590.43)
     """
 
@@ -503,26 +504,36 @@ def belt_pull(position, force, azimuth=0.0, name="belt") -> PointLoad:
 
 
 # =========================================================================== beam element
-def _element(L, E, G, A, I, kappa):
-    """10x10 Timoshenko element stiffness, DOFs (u, v, w, theta_y, theta_z) at both nodes.
+def _elements(L, E, G, A, I, kappa):
+    """Timoshenko element stiffnesses (n, 10, 10), DOFs (u, v, w, theta_y, theta_z) at both
+    nodes, for arrays of element length L, area A, second moment I, shear coefficient.
 
     Przemieniecki (1968) eq. 5.115 with Phi = 12 E I / (kappa G A L^2); bending in x–z
     uses theta_y = -dw/dx (the coupling terms change sign)."""
+    L, A, I, kappa = (np.atleast_1d(np.asarray(v, float)) for v in (L, A, I, kappa))
     phi = 12 * E * I / (kappa * G * A * L * L)
     c = E * I / ((1 + phi) * L**3)
-    kb = c * np.array([[12, 6 * L, -12, 6 * L],
-                       [6 * L, (4 + phi) * L * L, -6 * L, (2 - phi) * L * L],
-                       [-12, -6 * L, 12, -6 * L],
-                       [6 * L, (2 - phi) * L * L, -6 * L, (4 + phi) * L * L]])
-    K = np.zeros((10, 10))
+    z = np.zeros_like(L)
+    kb = c[:, None, None] * np.stack([
+        np.stack([12 + z, 6 * L, -12 + z, 6 * L], -1),
+        np.stack([6 * L, (4 + phi) * L * L, -6 * L, (2 - phi) * L * L], -1),
+        np.stack([-12 + z, -6 * L, 12 + z, -6 * L], -1),
+        np.stack([6 * L, (2 - phi) * L * L, -6 * L, (4 + phi) * L * L], -1)], -2)
+    K = np.zeros(L.shape + (10, 10))
     ka = E * A / L
-    K[np.ix_([0, 5], [0, 5])] = ka * np.array([[1, -1], [-1, 1]])
-    iv = [1, 4, 6, 9]                     # v1, theta_z1, v2, theta_z2
-    K[np.ix_(iv, iv)] = kb
+    K[:, 0, 0] = K[:, 5, 5] = ka
+    K[:, 0, 5] = K[:, 5, 0] = -ka
+    iv = np.array([1, 4, 6, 9])           # v1, theta_z1, v2, theta_z2
+    K[:, iv[:, None], iv[None, :]] = kb
     sgn = np.array([1, -1, 1, -1])        # (w, -theta_y) behaves as (v, theta_z)
-    iw = [2, 3, 7, 8]
-    K[np.ix_(iw, iw)] = kb * np.outer(sgn, sgn)
+    iw = np.array([2, 3, 7, 8])
+    K[:, iw[:, None], iw[None, :]] = kb * np.outer(sgn, sgn)
     return K
+
+
+def _element(L, E, G, A, I, kappa):
+    """One 10x10 Timoshenko element stiffness (see :func:`_elements`)."""
+    return _elements(L, E, G, A, I, kappa)[0]
 
 
 def _shape(xi, L, phi):
@@ -612,10 +623,6 @@ class ShaftResult:
     reactions : ndarray, shape (n_seats, 5)
         (Fa, Fy, Fz [N], My, Mz [N m]) each seat carries, in the shaft frame (see the
         module notes; sum(reactions) = sum(loads) with moments carried).
-    bearings : tuple
-        Per seat: the :class:`~ballrace.analytic.loaddist.LoadDistribution` of a single
-        bearing (in its own frame), or a tuple of two (bearing 1, bearing 2) for a
-        duplex pair.
     ring_displacements : ndarray, shape (n_seats, 5)
         Inner ring relative to outer ring at the seat, in the shaft frame [m, rad].
     housing_displacements : ndarray, shape (n_seats, 5)
@@ -637,7 +644,6 @@ class ShaftResult:
     nodes: np.ndarray
     node_displacements: np.ndarray
     reactions: np.ndarray
-    bearings: tuple
     ring_displacements: np.ndarray
     housing_displacements: np.ndarray
     seat_stiffness: np.ndarray
@@ -646,6 +652,21 @@ class ShaftResult:
     gravity: np.ndarray
     _phi: np.ndarray = field(repr=False, default=None)
     _weight: np.ndarray = field(repr=False, default=None)
+    _rows: tuple = field(repr=False, default=())
+
+    @functools.cached_property
+    def bearings(self) -> tuple:
+        """Per seat: the :class:`~ballrace.analytic.loaddist.LoadDistribution` of a single
+        bearing (in the bearing's own frame: for ``direction=-1`` loads and displacements
+        are those of the shaft frame mapped by :data:`MIRROR`), or a tuple of two
+        (bearing 1, bearing 2) for a duplex pair; ball loads, contact angles, Hertz
+        contacts, subsurface shear and truncation as for a single bearing.  Built on
+        first access by loaddist's own checked solver with every DOF imposed."""
+        out = []
+        for k in range(len(self.seats)):
+            ld = [_ring_result(b, c, ul) for kk, b, c, ul in self._rows if kk == k]
+            out.append(ld[0] if len(ld) == 1 else tuple(ld))
+        return tuple(out)
 
     @property
     def misalignment(self) -> np.ndarray:
@@ -749,28 +770,27 @@ class _Problem:
         rho = mat.density
         weight = np.zeros(5)
         eps_th = shaft.thermal_expansion * shaft_dT
+        Ke = _elements(Le, E, G, A, I, kap)
         for e in range(ne):
-            idx = np.r_[5 * e:5 * e + 10]
-            K[np.ix_(idx, idx)] += _element(Le[e], E, G, A[e], I[e], kap[e])
+            K[5 * e:5 * e + 10, 5 * e:5 * e + 10] += Ke[e]
+        if eps_th:
             # thermal strain: the free expansion eps L is an initial strain (axial forces
             # -EA eps at node 1, +EA eps at node 2)
-            if eps_th:
-                f[5 * e] -= E * A[e] * eps_th
-                f[5 * e + 5] += E * A[e] * eps_th
-            if np.any(g):
-                m = rho * A[e] * Le[e]
-                q = m * g                                  # (x, y, z) force of the element
-                l_ = Le[e]
-                fe = np.zeros(10)
-                fe[[0, 5]] = 0.5 * q[0]
-                fe[[1, 6]] = 0.5 * q[1]
-                fe[[2, 7]] = 0.5 * q[2]
-                fe[4], fe[9] = q[1] * l_ / 12, -q[1] * l_ / 12     # theta_z (v-plane)
-                fe[3], fe[8] = -q[2] * l_ / 12, q[2] * l_ / 12     # theta_y = -dw/dx
-                f[idx] += fe
-                weight[:3] += q
-                weight[3] += -xm[e] * q[2]
-                weight[4] += xm[e] * q[1]
+            np.add.at(f, 5 * np.arange(ne), -E * A * eps_th)
+            np.add.at(f, 5 * np.arange(ne) + 5, E * A * eps_th)
+        if np.any(g):
+            q = (rho * A * Le)[:, None] * g[None, :]         # (ne, 3) element weight
+            fe = np.zeros((ne, 10))
+            fe[:, [0, 5]] = 0.5 * q[:, :1]
+            fe[:, [1, 6]] = 0.5 * q[:, 1:2]
+            fe[:, [2, 7]] = 0.5 * q[:, 2:3]
+            fe[:, 4], fe[:, 9] = q[:, 1] * Le / 12, -q[:, 1] * Le / 12   # theta_z (v-plane)
+            fe[:, 3], fe[:, 8] = -q[:, 2] * Le / 12, q[:, 2] * Le / 12   # theta_y = -dw/dx
+            for e in range(ne):
+                f[5 * e:5 * e + 10] += fe[e]
+            weight[:3] = q.sum(0)
+            weight[3] = -(xm * q[:, 2]).sum()
+            weight[4] = (xm * q[:, 1]).sum()
         self.weight = weight
         self.Ks = K
         self.f_loads = f.copy()
@@ -791,8 +811,7 @@ class _Problem:
         if iidx.size:
             Kii = K[np.ix_(iidx, iidx)]
             Kib = K[np.ix_(iidx, bidx)]
-            r, c = np.nonzero(Kii)
-            bw = int(np.max(c - r))
+            bw = min(9, iidx.size - 1)          # within two nodes of 5 DOFs
             ab = np.zeros((bw + 1, iidx.size))
             for d in range(bw + 1):
                 ab[bw - d, d:] = np.diagonal(Kii, d)
@@ -835,6 +854,14 @@ class _Problem:
                 P[1, 4], P[2, 3] = a, -a            # rigid ring: row at x + a
                 T = np.ones(5) if d > 0 else MIRROR
                 self.rows.append((k, s.ball_bearing, s.clearance, T[:, None] * P, off))
+        self.rk = np.array([r[0] for r in self.rows], int)
+        self.Gr = np.array([r[3] for r in self.rows])
+        self.roff = np.array([r[4] for r in self.rows])
+        grp = {}
+        for i, r in enumerate(self.rows):
+            grp.setdefault((r[1], r[2]), []).append(i)
+        self.groups = [(key, np.array(v)) for key, v in grp.items()]
+        self.dmax = np.zeros(len(self.rows))
         self.const = np.zeros((ns, 5))
         for k, s in enumerate(seats):
             self.const[k, 0] = s.constant_axial
@@ -863,14 +890,16 @@ class _Problem:
         ns = len(self.seats)
         Rs = self.const.copy()
         Ks = np.zeros((ns, 5, 5))
-        dmax = 0.0
-        for k, b, c, Gm, off in self.rows:
-            ul = Gm @ rel[k]
-            ul[0] += off
-            F, J, dm = _ring_forces(b, c, ul[None])
-            Rs[k] += Gm.T @ F[0]
-            Ks[k] += Gm.T @ J[0] @ Gm
-            dmax = max(dmax, float(dm[0]))
+        ul = np.einsum("rij,rj->ri", self.Gr, rel[self.rk])
+        ul[:, 0] += self.roff
+        for (b, c), idx in self.groups:
+            F, J, dm = _ring_forces(b, c, ul[idx])
+            for j, r in enumerate(idx):
+                Gm = self.Gr[r]
+                Rs[self.rk[r]] += Gm.T @ F[j]
+                Ks[self.rk[r]] += Gm.T @ J[j] @ Gm
+            self.dmax[idx] = dm
+        dmax = self.dmax
         nb = self.nb
         R = np.empty(self.N)
         R[:nb] = self.Kc @ Y[:nb] - lam * self.fc + Rs.ravel()
@@ -1024,25 +1053,27 @@ def solve(shaft: Shaft, seats, loads=(), *, gravity=None, shaft_temperature_chan
                              f"{gravity.shape}")
     pb = _Problem(shaft, seats, loads, gravity, dTs, dTh, ah, ref)
     X, its, res = _newton(pb, rtol, max_iter)
-    R, _, Rs, Ks, _ = pb.evaluate(X, want_J=False)
+    R, _, Rs, Ks, dmax = pb.evaluate(X, want_J=False)
+    for (k, b, _, _, _), d in zip(pb.rows, dmax):
+        lim = loaddist.MAX_APPROACH_RATIO * b.ball_diameter
+        if d > lim:
+            raise ValueError(
+                f"the loads are beyond the load-deflection range of the bearing at seat {k} "
+                f"(x = {seats[k].position:g} m): a ball approach reaches {d:.3g} m > "
+                f"{loaddist.MAX_APPROACH_RATIO:g} D = {lim:.3g} m")
     rel, W = pb.seat_rel(X)
-    # the per-seat results through loaddist's own checked solver (all DOFs imposed)
-    brg = []
-    for k, s in enumerate(seats):
-        rows = [(b, c, Gm, off) for kk, b, c, Gm, off in pb.rows if kk == k]
-        ld = []
-        for b, c, Gm, off in rows:
-            ul = Gm @ rel[k]
-            ul[0] += off
-            ld.append(_ring_result(b, c, ul))
-        brg.append(ld[0] if len(ld) == 1 else tuple(ld))
+    rows = []
+    for k, b, c, Gm, off in pb.rows:
+        ul = Gm @ rel[k]
+        ul[0] += off
+        rows.append((k, b, c, ul))
     U = pb.full(X)
     return ShaftResult(shaft=shaft, seats=seats, loads=loads, nodes=pb.nodes,
-                       node_displacements=U, reactions=Rs, bearings=tuple(brg),
+                       node_displacements=U, reactions=Rs,
                        ring_displacements=rel, housing_displacements=W, seat_stiffness=Ks,
                        iterations=its, residual=res,
                        gravity=np.zeros(3) if gravity is None else gravity,
-                       _phi=pb.phi, _weight=pb.weight)
+                       _phi=pb.phi, _weight=pb.weight, _rows=tuple(rows))
 
 
 def _scales(pb):
