@@ -106,12 +106,14 @@ from . import loaddist
 from ._checks import (as_array, check_choice, check_instance, check_nonnegative,
                       check_positive)
 from .bearing import BallBearing
+from .clearance import OperatingClearance
 from .duplex import DuplexPair
 from .loaddist import ConvergenceError
 from .materials import BEARING_STEEL, Material
 
 __all__ = ["Shaft", "Seat", "PointLoad", "ShaftResult", "ConvergenceError", "solve",
-           "gear_mesh", "belt_pull", "shear_coefficient", "MIRROR", "STANDARD_GRAVITY"]
+           "gear_mesh", "belt_pull", "shear_coefficient", "MIRROR", "STANDARD_GRAVITY",
+           "ShaftLife", "DutyCycleLife", "life", "system_life", "duty_cycle"]
 
 log = logging.getLogger(__name__)
 
@@ -298,10 +300,12 @@ class Seat:
         Spring (constant force) preload [N], >= 0: a spring pushes the floating outer
         ring so that the bearing carries this thrust in its thrust direction.  Needs
         ``floating=True``.
-    clearance : float, optional
+    clearance : float or OperatingClearance, optional
         Operating diametral clearance P_d of a single bearing [m] (negative: preload),
-        e.g. from :func:`ballrace.analytic.clearance.operating_clearance`; default the
-        bearing's.
+        or the :class:`~ballrace.analytic.clearance.OperatingClearance` of the seat's
+        fits and ring temperatures (:func:`~ballrace.analytic.clearance.operating_clearance`);
+        default the bearing's.  The free contact angle follows from it
+        (cos beta_f = 1 - P_d / 2A).
     row_spacing : float
         Axial distance between the two rows of a duplex pair [m] (default 0: both rows
         at the seat position, as in :class:`DuplexPair`).  Rows follow the pair's
@@ -342,6 +346,8 @@ class Seat:
             raise ValueError("spring_preload needs floating=True (the spring pushes the "
                              "axially free outer ring)")
         if self.clearance is not None:
+            if isinstance(self.clearance, OperatingClearance):
+                set_(self, "clearance", self.clearance.operating)
             if isinstance(self.bearing, DuplexPair):
                 raise ValueError("clearance is for a single bearing; a DuplexPair's rows "
                                  "keep their own preload")
@@ -653,6 +659,7 @@ class ShaftResult:
     _phi: np.ndarray = field(repr=False, default=None)
     _weight: np.ndarray = field(repr=False, default=None)
     _rows: tuple = field(repr=False, default=())
+    _X: np.ndarray = field(repr=False, default=None)
 
     @functools.cached_property
     def bearings(self) -> tuple:
@@ -739,10 +746,17 @@ class _Problem:
                  reference):
         self.shaft, self.seats, self.loads = shaft, seats, loads
         L = shaft.length
-        pts = [0.0, L] + list(shaft.steps) + [s.position for s in seats] + \
-            [p.position for p in loads]
-        tol = 1e-9 * L
-        key = np.unique(np.clip(np.round(np.array(pts) / tol) * tol, 0.0, L))
+        # key points, seats first: a point closer than dmin to an earlier one joins it (a
+        # load is then moved there rigidly, with the moment of the shift; statics exact)
+        dmin = 1e-6 * L
+        key = []
+        for x in [s.position for s in seats] + [0.0, L] + list(shaft.steps) + \
+                [p.position for p in loads]:
+            x = min(max(float(x), 0.0), L)
+            if not key or min(abs(x - k) for k in key) >= dmin:
+                key.append(x)
+        key = np.array(sorted(key))
+        tol = 0.5 * dmin
         h = L / shaft.n_elements
         nodes = [key[0]]
         for a, b in zip(key[:-1], key[1:]):
@@ -796,7 +810,11 @@ class _Problem:
         self.f_loads = f.copy()
         for p in loads:
             i = self.node(p.position)
-            self.f_loads[5 * i:5 * i + 5] += p.vector
+            F = p.vector
+            d = p.position - nd[i]
+            F[3] += -d * F[2]
+            F[4] += d * F[1]
+            self.f_loads[5 * i:5 * i + 5] += F
         self.seat_node = [self.node(s.position) for s in seats]
         ns = len(seats)
         # static condensation of the linear shaft onto the seat nodes: the interior DOFs
@@ -862,6 +880,7 @@ class _Problem:
             grp.setdefault((r[1], r[2]), []).append(i)
         self.groups = [(key, np.array(v)) for key, v in grp.items()]
         self.dmax = np.zeros(len(self.rows))
+        self.fmax = np.zeros(len(self.rows))      # largest row force (preloaded pairs)
         self.const = np.zeros((ns, 5))
         for k, s in enumerate(seats):
             self.const[k, 0] = s.constant_axial
@@ -894,6 +913,7 @@ class _Problem:
         ul[:, 0] += self.roff
         for (b, c), idx in self.groups:
             F, J, dm = _ring_forces(b, c, ul[idx])
+            self.fmax[idx] = np.abs(F[:, :3]).max(1)
             for j, r in enumerate(idx):
                 Gm = self.Gr[r]
                 Rs[self.rk[r]] += Gm.T @ F[j]
@@ -934,7 +954,7 @@ def _check_setup(shaft, seats, loads):
                              f"got {s.position!r}")
     pos = sorted(s.position for s in seats)
     for a, b in zip(pos[:-1], pos[1:]):
-        if b - a < 1e-9 * L:
+        if b - a < 1e-6 * L:
             raise ValueError(f"two seats at the same position x = {a!r} m; a pair of "
                              "bearings at one place is a DuplexPair seat")
     for k, p in enumerate(loads):
@@ -965,7 +985,7 @@ def _check_setup(shaft, seats, loads):
 # =========================================================================== solve
 def solve(shaft: Shaft, seats, loads=(), *, gravity=None, shaft_temperature_change=0.0,
           housing_temperature_change=0.0, housing_expansion=0.0, thermal_reference=None,
-          rtol: float = 1e-10, max_iter: int = 100) -> ShaftResult:
+          rtol: float = 1e-10, max_iter: int = 100, initial=None) -> ShaftResult:
     r"""Equilibrium of an elastic shaft on its ball bearings under point loads.
 
     Finds the shaft node displacements U and free outer-ring displacements W with
@@ -1010,6 +1030,9 @@ def solve(shaft: Shaft, seats, loads=(), *, gravity=None, shaft_temperature_chan
         pitch radius) relative to the largest applied or reaction load [-].
     max_iter : int
         Newton iterations per load step.
+    initial : ShaftResult, optional
+        A solution of the same shaft and seats to start from (a neighbouring load case
+        of a sweep or duty cycle); ignored if it does not fit.
 
     Returns
     -------
@@ -1052,7 +1075,11 @@ def solve(shaft: Shaft, seats, loads=(), *, gravity=None, shaft_temperature_chan
             raise ValueError(f"gravity must be (g_x, g_y, g_z) [m/s^2]; got shape "
                              f"{gravity.shape}")
     pb = _Problem(shaft, seats, loads, gravity, dTs, dTh, ah, ref)
-    X, its, res = _newton(pb, rtol, max_iter)
+    X0 = None
+    if initial is not None:
+        check_instance(initial, "initial", ShaftResult)
+        X0 = initial._X
+    X, its, res = _newton(pb, rtol, max_iter, X0)
     R, _, Rs, Ks, dmax = pb.evaluate(X, want_J=False)
     for (k, b, _, _, _), d in zip(pb.rows, dmax):
         lim = loaddist.MAX_APPROACH_RATIO * b.ball_diameter
@@ -1073,7 +1100,7 @@ def solve(shaft: Shaft, seats, loads=(), *, gravity=None, shaft_temperature_chan
                        ring_displacements=rel, housing_displacements=W, seat_stiffness=Ks,
                        iterations=its, residual=res,
                        gravity=np.zeros(3) if gravity is None else gravity,
-                       _phi=pb.phi, _weight=pb.weight, _rows=tuple(rows))
+                       _phi=pb.phi, _weight=pb.weight, _rows=tuple(rows), _X=X)
 
 
 def _scales(pb):
@@ -1087,11 +1114,15 @@ def _scales(pb):
     return sc, R
 
 
-def _newton(pb, rtol, max_iter):
+def _newton(pb, rtol, max_iter, X0=None):
     """Global Newton with load stepping; returns (X, iterations, relative residual)."""
     sc, Rm = _scales(pb)
-    X = np.zeros(pb.N)
     total = 0
+    if X0 is not None and X0.shape == (pb.N,):
+        X, it, err, ok = _newton_step(pb, X0.copy(), 1.0, sc, rtol, max_iter)
+        total += it
+        if ok:
+            return X, total, err
     fracs = [1.0]
     last_err = None
     for attempt in range(4):
@@ -1122,7 +1153,7 @@ def _newton_step(pb, X, lam, sc, rtol, max_iter):
     ext = np.abs(lam * pb.f_loads / scf).max()
 
     def error(R, Rs):
-        scale = max(ext, np.abs(Rs / sc[:5]).max(), 1e-300)
+        scale = max(ext, np.abs(Rs / sc[:5]).max(), pb.fmax.max(), 1e-300)
         return np.abs(R / sc).max() / scale
 
     err = error(R, Rs)
@@ -1175,3 +1206,220 @@ def _newton_step(pb, X, lam, sc, rtol, max_iter):
             return X, it, best, best <= 100 * rtol
         X, R, J, Rs, err = Xn, Rn, Jn, Rsn, en
     return X, it, err, True
+
+
+# =========================================================================== life
+@dataclass(frozen=True)
+class ShaftLife:
+    r"""Fatigue lives of the seats and of the bearing system (frozen).
+
+    Attributes
+    ----------
+    seat_lives : ndarray, shape (n_seats,)
+        Life of each seat [1e6 rev] (a duplex pair: its two rows combined as a system).
+    row_lives : tuple
+        Per seat: the lives of its rows [1e6 rev] (one or two).
+    ratings : tuple
+        Per seat: the :class:`~ballrace.analytic.iso16281.ReferenceRatingLife` of each
+        row (one or two).
+    system : float
+        System life L_sys = (sum L_i^-e)^(-1/e) over all rows [1e6 rev].
+    weibull_slope : float
+        e [-] (10/9 for ball bearings; Lundberg & Palmgren 1947).
+    kind : str
+        ``"L10r"`` (ISO/TS 16281 basic reference rating life) or ``"Lnmr"`` (modified,
+        a1 a_ISO L10r, ISO 281:2007 §9.3 via ISO/TS 16281 §5.3).
+    """
+
+    seat_lives: np.ndarray
+    row_lives: tuple
+    ratings: tuple
+    system: float
+    weibull_slope: float
+    kind: str
+
+    def hours(self, speed_rpm):
+        """(seat lives (n_seats,), system life) in hours at ``speed_rpm`` [rev/min] [h]."""
+        n = float(check_positive(speed_rpm, "speed_rpm", "rev/min"))
+        f = 1e6 / (60.0 * n)
+        return self.seat_lives * f, self.system * f
+
+
+def system_life(lives, weibull_slope=None):
+    r"""Life of a system of bearings that fails with its first bearing [same unit].
+
+    .. math:: L_{sys} = \Big(\sum_i L_i^{-e}\Big)^{-1/e}
+
+    the weakest-link rule of Weibull-distributed lives with a common slope e
+    (Lundberg & Palmgren 1947; Harris 2001 §23.5; e = 10/9 for ball bearings).
+
+    Parameters
+    ----------
+    lives : array_like
+        L10 of each bearing [1e6 rev or h], > 0 (``inf`` for an unloaded one).
+    weibull_slope : float, optional
+        e [-]; default :data:`ballrace.analytic.life.BALL_WEIBULL_SLOPE` = 10/9.
+
+    Examples
+    --------
+    >>> round(float(system_life([1000.0, 1000.0])), 1)     # 2^(-9/10) L
+    535.9
+    """
+    from .life import BALL_WEIBULL_SLOPE
+    e = BALL_WEIBULL_SLOPE if weibull_slope is None else float(
+        check_positive(weibull_slope, "weibull_slope", "-"))
+    L = check_positive(lives, "lives", "", allow_inf=True)
+    s = float(np.sum(L ** -e))
+    return np.inf if s == 0.0 else s ** (-1.0 / e)
+
+
+def life(result: ShaftResult, *, rotating: str = "inner", dynamic_rating=None,
+         nominal_contact_angle=None, modified=None, weibull_slope=None) -> ShaftLife:
+    r"""ISO/TS 16281 lives of the seats of a solved shaft and of the bearing system.
+
+    Each row's ball loads (the seat's :class:`LoadDistribution`) give the basic reference
+    rating life L10r (:func:`ballrace.analytic.iso16281.reference_rating_life`), or with
+    ``modified`` the modified reference rating life L_nmr = a1 a_ISO L10r; the rows of
+    all seats combine into the system life (:func:`system_life`).
+
+    Parameters
+    ----------
+    result : ShaftResult
+        The solved shaft.
+    rotating : {"inner", "outer"}
+        Ring rotating relative to the load (the shaft rotates: "inner").
+    dynamic_rating : float or sequence, optional
+        C of each seat's bearing [N]; default the ISO 281 rating of the geometry.
+    nominal_contact_angle : float or sequence, optional
+        alpha of the rating [rad] per seat; default the free contact angle.
+    modified : dict, optional
+        ``kappa``, ``contamination``, ``fatigue_limit`` [-, -, N] and optionally
+        ``reliability`` and ``ep_additives`` for L_nmr (ISO 281:2007 §9.3).
+    weibull_slope : float, optional
+        e of the system life [-] (default 10/9).
+
+    Returns
+    -------
+    ShaftLife
+    """
+    from .iso16281 import reference_rating_life
+    from .life import BALL_WEIBULL_SLOPE
+
+    check_instance(result, "result", ShaftResult)
+    check_choice(rotating, "rotating", ("inner", "outer"))
+    e = BALL_WEIBULL_SLOPE if weibull_slope is None else float(
+        check_positive(weibull_slope, "weibull_slope", "-"))
+    ns = len(result.seats)
+
+    def per_seat(v, name):
+        if v is None or np.ndim(v) == 0:
+            return [v] * ns
+        v = list(v)
+        if len(v) != ns:
+            raise ValueError(f"{name} must be a number or one per seat ({ns}); got {len(v)}")
+        return v
+
+    C = per_seat(dynamic_rating, "dynamic_rating")
+    alpha = per_seat(nominal_contact_angle, "nominal_contact_angle")
+    rows, ratings, seat = [], [], []
+    for k, s in enumerate(result.seats):
+        b = result.bearings[k]
+        lds = b if isinstance(b, tuple) else (b,)
+        rr = [reference_rating_life(s.ball_bearing, ld_, dynamic_rating=C[k],
+                                    rotating=rotating, nominal_contact_angle=alpha[k])
+              for ld_ in lds]
+        Ls = [float(r.modified(**modified)) if modified else float(r.L10r) for r in rr]
+        ratings.append(tuple(rr))
+        rows.append(tuple(Ls))
+        seat.append(system_life(Ls, e))
+    allrows = [x for r in rows for x in r]
+    return ShaftLife(seat_lives=np.array(seat), row_lives=tuple(rows), ratings=tuple(ratings),
+                     system=float(system_life(allrows, e)), weibull_slope=e,
+                     kind="Lnmr" if modified else "L10r")
+
+
+@dataclass(frozen=True)
+class DutyCycleLife:
+    r"""Lives under a duty cycle (frozen).
+
+    Attributes
+    ----------
+    seat_hours : ndarray, shape (n_seats,)
+        Palmgren–Miner life of each seat [h].
+    system_hours : float
+        System life from the seats' duty-cycle lives, (sum L_k^-e)^(-1/e) [h].
+    case_hours : ndarray, shape (n_cases, n_seats)
+        Life of each seat under each case alone [h].
+    fractions : ndarray, shape (n_cases,)
+        Time fractions [-].
+    results : tuple of ShaftResult
+        The solved cases.
+    weibull_slope : float
+        e [-].
+    """
+
+    seat_hours: np.ndarray
+    system_hours: float
+    case_hours: np.ndarray
+    fractions: np.ndarray
+    results: tuple
+    weibull_slope: float
+
+
+def duty_cycle(shaft: Shaft, seats, cases, *, rotating: str = "inner", dynamic_rating=None,
+               nominal_contact_angle=None, modified=None, weibull_slope=None,
+               **solve_kwargs) -> DutyCycleLife:
+    r"""Seat and system lives of a shaft under a duty cycle (Palmgren–Miner).
+
+    Each case (loads, time fraction t_i, speed n_i) is solved; each seat's life in hours
+    under it alone is L_ki = L10r,ki 1e6 / (60 n_i); the seat's duty-cycle life is
+    L_k = 1 / sum_i (t_i / L_ki) (:func:`ballrace.analytic.life.miner`; Palmgren 1924,
+    Miner 1945) and the system life (sum_k L_k^-e)^(-1/e).  Successive cases start from
+    the previous solution.
+
+    Parameters
+    ----------
+    shaft : Shaft
+        The shaft.
+    seats : sequence of Seat
+        The seats.
+    cases : sequence of (loads, fraction, speed_rpm)
+        Loads (a sequence of PointLoad), time fraction [-] (summing to 1) and shaft speed
+        [rev/min] of each case.
+    rotating, dynamic_rating, nominal_contact_angle, modified, weibull_slope
+        As for :func:`life`.
+    **solve_kwargs
+        Passed to :func:`solve` (gravity, temperatures, ...).
+
+    Returns
+    -------
+    DutyCycleLife
+    """
+    from .life import miner
+
+    cases = list(cases)
+    if not cases:
+        raise ValueError("cases must hold at least one (loads, fraction, speed_rpm)")
+    res, hours, fr = [], [], []
+    prev = None
+    for i, c in enumerate(cases):
+        try:
+            loads, t, n = c
+        except (TypeError, ValueError):
+            raise ValueError(f"cases[{i}] must be (loads, fraction, speed_rpm); got {c!r}") \
+                from None
+        n = float(check_positive(n, f"cases[{i}] speed_rpm", "rev/min"))
+        r = solve(shaft, seats, loads, initial=prev, **solve_kwargs)
+        lf = life(r, rotating=rotating, dynamic_rating=dynamic_rating,
+                  nominal_contact_angle=nominal_contact_angle, modified=modified,
+                  weibull_slope=weibull_slope)
+        hours.append(lf.hours(n)[0])
+        fr.append(float(t))
+        res.append(r)
+        prev = r
+        e = lf.weibull_slope
+    H = np.array(hours)
+    t = np.array(fr)
+    seat_h = np.array([miner(H[:, k], t) for k in range(H.shape[1])])
+    return DutyCycleLife(seat_hours=seat_h, system_hours=float(system_life(seat_h, e)),
+                         case_hours=H, fractions=t, results=tuple(res), weibull_slope=e)

@@ -364,3 +364,59 @@ def test_overload_is_value_error():
     s = S.Shaft([(0.2, 40e-3, 0.0)], STEEL)
     with pytest.raises((ValueError, ld.ConvergenceError)):
         S.solve(s, [S.Seat(0.02, DG), S.Seat(0.18, DG)], [S.PointLoad(0.1, Fy=5e6)])
+
+
+# --------------------------------------------------------------------------- clearance, life
+def test_operating_clearance_seat():
+    """A seat given an OperatingClearance uses its operating value: the ball loads are
+    those of loaddist.solve with clearance = P_d (1e-8); the rings' temperature
+    difference (inner 10 K warmer) reduces P_d by alpha dT d_i-ish (clearance module)."""
+    from ballrace.analytic.clearance import operating_clearance
+    brg = ballrace.BallBearing(0.0115, 7, 0.0435, 0.52, 0.53, diametral_clearance=20e-6)
+    oc = operating_clearance(brg, bore=0.025, outside_diameter=0.062, shaft_interference=15e-6,
+                             inner_temperature=313.15, outer_temperature=303.15)
+    s = S.Shaft([(0.02, 30e-3, 0.0)], STEEL)
+    r = S.solve(s, [S.Seat(0.01, brg, clearance=oc)], [S.PointLoad(0.01, Fy=2000.0, Fa=200.0)])
+    ref = ld.solve(brg, Fa=200.0, Fy=2000.0, clearance=oc.operating)
+    np.testing.assert_allclose(r.bearings[0].ball_loads, ref.ball_loads, rtol=1e-8,
+                               atol=1e-8 * ref.max_ball_load)
+    assert r.bearings[0].clearance == pytest.approx(oc.operating, rel=1e-15)
+
+
+def test_life_single_seat_and_system():
+    """Single seat: the seat life is ISO/TS 16281 L10r of the bearing's own solve
+    (iso16281.reference_rating_life, 1e-8).  A duplex pair's two rows and two seats
+    combine by the weakest-link rule L = (sum L_i^-e)^(-1/e), e = 10/9: two equal
+    lives give L 2^(-9/10)."""
+    from ballrace.analytic.iso16281 import reference_rating_life
+    s = S.Shaft([(0.02, 30e-3, 0.0)], STEEL)
+    r = S.solve(s, [S.Seat(0.01, DG0)], [S.PointLoad(0.01, Fy=3000.0, Fa=500.0)])
+    lf = S.life(r)
+    ref = reference_rating_life(DG0, DG0.solve(Fa=500.0, Fy=3000.0))
+    assert lf.seat_lives[0] == pytest.approx(ref.L10r, rel=1e-8)
+    assert lf.system == pytest.approx(ref.L10r, rel=1e-8)
+    assert float(S.system_life([7.0, 7.0])) == pytest.approx(7.0 * 2 ** -0.9, rel=1e-14)
+    assert lf.weibull_slope == pytest.approx(10 / 9)
+    # the DB pair without external load: both rows carry the preload alike
+    pair = dx.DuplexPair(AC, "DB", preload=2000.0)
+    r = S.solve(s, [S.Seat(0.01, pair)], [S.PointLoad(0.01, Fy=1e-6)])
+    lf = S.life(r)
+    a, b = lf.row_lives[0]
+    assert a == pytest.approx(b, rel=1e-6)
+    assert lf.seat_lives[0] == pytest.approx(a * 2 ** -0.9, rel=1e-6)
+
+
+def test_duty_cycle_miner():
+    """Two cases (30 % at 1500 rpm, 70 % at 3000 rpm): each seat's life is the
+    Palmgren–Miner sum 1/(t1/L1 + t2/L2) of its lives in hours under each case alone,
+    the lives from separate solves (1e-9); the system life combines the seats."""
+    s = S.Shaft([(0.26, 45e-3, 0.0)], STEEL)
+    seats = [S.Seat(0.03, DG), S.Seat(0.23, DG, floating=True)]
+    c1, c2 = [S.PointLoad(0.09, Fy=3000.0)], [S.PointLoad(0.09, Fy=1000.0, Fa=300.0)]
+    d = S.duty_cycle(s, seats, [(c1, 0.3, 1500.0), (c2, 0.7, 3000.0)])
+    h1 = S.life(S.solve(s, seats, c1)).hours(1500.0)[0]
+    h2 = S.life(S.solve(s, seats, c2)).hours(3000.0)[0]
+    expected = 1.0 / (0.3 / h1 + 0.7 / h2)
+    np.testing.assert_allclose(d.seat_hours, expected, rtol=1e-9)
+    assert d.system_hours == pytest.approx(
+        np.sum(expected ** (-10 / 9)) ** (-0.9), rel=1e-9)
