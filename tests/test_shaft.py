@@ -420,3 +420,109 @@ def test_duty_cycle_miner():
     np.testing.assert_allclose(d.seat_hours, expected, rtol=1e-9)
     assert d.system_hours == pytest.approx(
         np.sum(expected ** (-10 / 9)) ** (-0.9), rel=1e-9)
+
+
+# --------------------------------------------------------------------------- case files / CLI
+def _cli():
+    from typer.testing import CliRunner
+
+    from ballrace.cli import app
+    return CliRunner(), app
+
+
+EXAMPLES = __import__("pathlib").Path(__file__).resolve().parents[1] / "examples"
+
+
+def test_gearbox_example_against_direct_solve_and_statics(tmp_path):
+    """``ballrace shaft examples/shaft_gearbox.toml --json``: the reactions are those of a
+    direct solve with the same inputs (1e-9), the gear's axial force F_t tan(15 deg) =
+    1339.7 N goes to the locating seat alone (the other floats), and the lateral
+    reactions plus the loads and the weight balance (1e-8)."""
+    import json
+    runner, app = _cli()
+    res = runner.invoke(app, ["shaft", str(EXAMPLES / "shaft_gearbox.toml"), "--json",
+                              "--plot", str(tmp_path / "s.png")])
+    assert res.exit_code == 0, res.output
+    r = json.loads(res.output)
+    assert (tmp_path / "s.png").stat().st_size > 1000
+    brg = ballrace.BallBearing(12.7e-3, 9, 60e-3, 0.52, 0.525, diametral_clearance=15e-6)
+    mat = ballrace.Material(E=210e9, nu=0.3, density=7850.0)
+    s = S.Shaft([(0.03, 0.04, 0.0), (0.2, 0.048, 0.0), (0.03, 0.04, 0.0)], mat)
+    seats = [S.Seat(0.015, brg), S.Seat(0.245, brg, floating=True)]
+    gear = S.gear_mesh(0.09, 5000.0, 0.12, pressure_angle=np.radians(20),
+                       helix_angle=np.radians(15), mesh_azimuth=np.radians(90))
+    d = S.solve(s, seats, [gear], gravity=(0, -S.STANDARD_GRAVITY, 0))
+    got = np.array([x["reaction"] for x in r["seats"]])
+    np.testing.assert_allclose(got, d.reactions, rtol=1e-9, atol=1e-9 * 5000)
+    assert got[0, 0] == pytest.approx(5000 * np.tan(np.radians(15)), rel=1e-9)
+    assert abs(got[1, 0]) < 1e-8 * 5000
+    assert np.abs(r["shaft"]["equilibrium_residual"]).max() < 1e-8 * 5000
+    assert r["life"]["system"] < min(x["L10r"] for x in r["seats"])
+
+
+def test_spindle_example_runs_and_keeps_the_preload():
+    """The spindle example (DB pair front, floating rear): the rear seat carries no axial
+    load, the pair carries the whole cutting thrust (-800 N), and the table prints."""
+    import json
+    runner, app = _cli()
+    res = runner.invoke(app, ["shaft", str(EXAMPLES / "shaft_spindle.toml"), "--json"])
+    assert res.exit_code == 0, res.output
+    r = json.loads(res.output)
+    assert r["seats"][0]["reaction"][0] == pytest.approx(-800.0, rel=1e-9)
+    assert abs(r["seats"][1]["reaction"][0]) < 1e-8 * 800
+    res = runner.invoke(app, ["shaft", str(EXAMPLES / "shaft_spindle.toml")])
+    assert res.exit_code == 0, res.output
+    assert "front pair" in res.output
+
+
+_BASE = '''
+kind = "shaft"
+[shaft]
+sections = [["200 mm", "40 mm", "0 mm"]]
+[bearings.b]
+ball_diameter = "7.938 mm"
+n_balls = 9
+pitch_diameter = "38.5 mm"
+f_inner = 0.52
+f_outer = 0.53
+diametral_clearance = "10 um"
+[[seat]]
+position = "{x1}"
+bearing = "b"
+[[seat]]
+position = "{x2}"
+bearing = "b"
+floating = true
+[[load]]
+position = "{xl}"
+Fy = "1 kN"
+{extra}
+'''
+
+
+@pytest.mark.parametrize("kw, match", [
+    (dict(x1="250 mm"), r"\[\[seat\]\]\[0\]\.position: must be within the shaft"),
+    (dict(x2="20 mm"), r"\[\[seat\]\]\[1\]\.position: on top of"),
+    (dict(xl="-5 mm"), r"\[\[load\]\]\[0\]\.position: must be within the shaft"),
+    (dict(extra="colour = 1"), r"colour"),
+    (dict(extra="[operation]\nspede = \"1 rpm\""), r"\[operation\]\.spede"),
+    (dict(extra="[[gear]]\nposition = \"100 mm\"\ntangential_force = \"1 kN\"\n"
+                "pitch_diameter = \"10 kg\""), r"\[\[gear\]\]\[0\]\.pitch_diameter"),
+])
+def test_case_file_errors_are_one_line_naming_the_key(tmp_path, kw, match):
+    runner, app = _cli()
+    args = dict(x1="20 mm", x2="180 mm", xl="100 mm", extra="")
+    args.update(kw)
+    p = tmp_path / "c.toml"
+    p.write_text(_BASE.format(**args))
+    res = runner.invoke(app, ["shaft", str(p)])
+    assert res.exit_code == 2, res.output
+    assert len(res.output.strip().splitlines()) == 1, res.output
+    assert __import__("re").search(match, res.output), res.output
+
+
+def test_bearing_case_file_is_not_a_shaft_case():
+    runner, app = _cli()
+    res = runner.invoke(app, ["shaft", str(EXAMPLES / "bearing_209.toml")])
+    assert res.exit_code == 2
+    assert "ballrace bearing" in res.output
