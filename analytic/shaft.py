@@ -85,12 +85,11 @@ elements (the automatic refinement makes them short).
 References
 ----------
 Timoshenko, S.P. (1921) Phil. Mag. 41, 744–746 (shear deformation); Przemieniecki, J.S.
-(1968) *Theory of Matrix Structural Analysis*, McGraw-Hill, §5.6 (beam element with
-shear, eq. 5.115); Friedman, Z. & Kosmatka, J.B. (1993) Comput. Struct. 47(3) 473–481
-(exact Timoshenko shape functions, eqs. 14–15); Cowper, G.R. (1966) J. Appl. Mech.
+(1968) *Theory of Matrix Structural Analysis*, McGraw-Hill, ch. 5 (beam element with
+shear deformation); Friedman, Z. & Kosmatka, J.B. (1993) Comput. Struct. 47(3) 473–481
+(exact Timoshenko shape functions); Cowper, G.R. (1966) J. Appl. Mech.
 33(2) 335–340 (shear coefficient of a hollow circle, Table 1); Harris, T.A. (2001)
-*Rolling Bearing Analysis*, 4th ed., Wiley, §7.4 (5-DOF bearing stiffness) and ch. 25
-(bearings on a flexible shaft); Jones, A.B. (1960) J. Basic Eng. 82(2) 309–320.
+*Rolling Bearing Analysis*, 4th ed., Wiley, §7.4 (5-DOF bearing stiffness); Jones, A.B. (1960) J. Basic Eng. 82(2) 309–320.
 """
 from __future__ import annotations
 
@@ -434,8 +433,8 @@ def gear_mesh(position, tangential_force, pitch_diameter, *, pressure_angle=np.r
         \mathbf F = F_t\,\mathbf e_t - F_r\,\mathbf e_r + F_a\,\mathbf e_x,\qquad
         F_r = |F_t|\frac{\tan\alpha_n}{\cos\beta},\qquad F_a = F_t\tan\beta
 
-    (normal pressure angle alpha_n, helix angle beta; e.g. Shigley's *Mechanical
-    Engineering Design*, 9th ed., eqs. 13-39 and 13-40), acting at p; moved to the
+    (normal pressure angle alpha_n, helix angle beta; the helical-gear force components
+    of e.g. Shigley's *Mechanical Engineering Design*, ch. 13), acting at p; moved to the
     shaft axis it adds the moment of the axial force, M = p x F_a e_x:
     M_y = r sin(phi) F_a, M_z = -r cos(phi) F_a (the torque about x is not modelled).
 
@@ -514,7 +513,7 @@ def _elements(L, E, G, A, I, kappa):
     """Timoshenko element stiffnesses (n, 10, 10), DOFs (u, v, w, theta_y, theta_z) at both
     nodes, for arrays of element length L, area A, second moment I, shear coefficient.
 
-    Przemieniecki (1968) eq. 5.115 with Phi = 12 E I / (kappa G A L^2); bending in x–z
+    Przemieniecki (1968), beam element with shear deformation, with Phi = 12 E I / (kappa G A L^2); bending in x–z
     uses theta_y = -dw/dx (the coupling terms change sign)."""
     L, A, I, kappa = (np.atleast_1d(np.asarray(v, float)) for v in (L, A, I, kappa))
     phi = 12 * E * I / (kappa * G * A * L * L)
@@ -543,7 +542,7 @@ def _element(L, E, G, A, I, kappa):
 
 
 def _shape(xi, L, phi):
-    """Timoshenko shape functions (Friedman & Kosmatka 1993 eqs. 14–15) for (v1, t1, v2, t2):
+    """Timoshenko shape functions (Friedman & Kosmatka 1993) for (v1, t1, v2, t2):
     deflection N (..., 4) and section rotation M (..., 4) at xi in [0, 1]."""
     xi = np.asarray(xi, float)
     f = 1.0 / (1.0 + phi)
@@ -1251,7 +1250,7 @@ def system_life(lives, weibull_slope=None):
     .. math:: L_{sys} = \Big(\sum_i L_i^{-e}\Big)^{-1/e}
 
     the weakest-link rule of Weibull-distributed lives with a common slope e
-    (Lundberg & Palmgren 1947; Harris 2001 §23.5; e = 10/9 for ball bearings).
+    (Lundberg & Palmgren 1947; e = 10/9 for ball bearings).
 
     Parameters
     ----------

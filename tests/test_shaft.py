@@ -46,7 +46,8 @@ def test_gear_mesh_components():
     """Helical gear, mesh point at phi = 90 deg (+z): F_t along e_t = -y, radial force
     towards the axis (-z), F_r = F_t tan(20)/cos(15) = 376.8 N, F_a = F_t tan(15) = 267.9 N
     for F_t = 1000 N; the moment of F_a at the pitch point (0, 0, r): M = p x F,
-    M_y = r F_a, M_z = 0 (Shigley 9th ed. eqs. 13-39, 13-40)."""
+    M_y = r F_a, M_z = 0 (helical-gear force components, Shigley's *Mechanical
+    Engineering Design*, ch. 13)."""
     p = S.gear_mesh(0.1, 1000.0, 0.2, helix_angle=np.radians(15), mesh_azimuth=np.pi / 2)
     Fr = 1000 * np.tan(np.radians(20)) / np.cos(np.radians(15))
     assert p.Fy == pytest.approx(-1000.0, rel=1e-12)
@@ -140,9 +141,11 @@ def test_two_seats_statics_and_timoshenko_deflection():
 
 def test_three_seats_three_moment_reactions():
     r"""Continuous beam on three supports, two equal spans l = 0.5 m, P at the middle of
-    the first span: the three-moment equation (Clapeyron) gives the middle-support moment
-    M_B = -3 P l / 32 and the reactions 13P/32, 11P/16, -3P/32 (e.g. Roark's Formulas
-    for Stress and Strain, 7th ed., Table 8.1 / continuous beams).
+    the first span.  Three-moment equation (Clapeyron), supports A, B, C, end moments 0:
+    2 M_B (l + l) = -6 A_1 xbar_1 / l, and for a point load P at a from A (b from B)
+    6 A_1 xbar_1 / l = P a (l^2 - a^2) / l = 3 P l^2 / 8 at a = l/2, so M_B = -3 P l / 32.
+    Span AB about B: R_A l - P l/2 = M_B -> R_A = 13P/32; span BC about B: R_C l = M_B ->
+    R_C = -3P/32; R_B = P - R_A - R_C = 11P/16.
 
     The bearings approach rigid simple supports: the radial compliance of a small,
     loose (f = 0.57) deep-groove bearing under these loads is ~1e-3 of the shaft's
