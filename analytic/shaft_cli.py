@@ -224,7 +224,7 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
 
     Raises
     ------
-    CaseFileError
+    ballrace.analytic.casefile.CaseFileError
         Naming ``source`` and the offending key.
     """
     import ballrace
