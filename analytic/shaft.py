@@ -659,6 +659,7 @@ class ShaftResult:
     _weight: np.ndarray = field(repr=False, default=None)
     _rows: tuple = field(repr=False, default=())
     _X: np.ndarray = field(repr=False, default=None)
+    _pb: object = field(repr=False, default=None, compare=False)
 
     @functools.cached_property
     def bearings(self) -> tuple:
@@ -673,6 +674,41 @@ class ShaftResult:
             ld = [_ring_result(b, c, ul) for kk, b, c, ul in self._rows if kk == k]
             out.append(ld[0] if len(ld) == 1 else tuple(ld))
         return tuple(out)
+
+    def stiffness(self, x) -> np.ndarray:
+        r"""Linearised 5x5 stiffness of the whole shaft on its bearings at a node [N/m, N/rad,
+        N m/m, N m/rad].
+
+        The inverse of the compliance at the node nearest x: the response (u, v, w,
+        theta_y, theta_z) of the node to small loads (Fa, Fy, Fz, My, Mz) there, with the
+        beam, every bearing at its tangent stiffness at the operating point (preload and
+        loads included) and the housing springs in the path.
+
+        Parameters
+        ----------
+        x : float
+            Position [m]; the nearest node is used (``nodes`` lists them: a seat or a load
+            is always a node).
+        """
+        x = float(as_array(x, "x"))
+        pb = self._pb
+        i = pb.node(x)
+        _, J, _, _, _ = pb.evaluate(self._X)
+        n, nb = pb.n, pb.nb
+        Cm = np.zeros((5, 5))
+        for j in range(5):
+            f = np.zeros(n)
+            f[5 * i + j] = 1.0
+            fi = f[pb.iidx]
+            rhs = np.zeros(pb.N)
+            rhs[:nb] = f[pb.bidx] - (pb.Zb.T @ fi if fi.size else 0.0)
+            dY = np.linalg.solve(J, rhs)
+            U = np.zeros(n)
+            U[pb.bidx] = dY[:nb]
+            if fi.size:
+                U[pb.iidx] = cho_solve_banded((pb.chol, False), fi) - pb.Zb @ dY[:nb]
+            Cm[:, j] = U[5 * i:5 * i + 5]
+        return np.linalg.inv(Cm)
 
     @property
     def misalignment(self) -> np.ndarray:
@@ -833,11 +869,13 @@ class _Problem:
             for d in range(bw + 1):
                 ab[bw - d, d:] = np.diagonal(Kii, d)
             ch = cholesky_banded(ab, lower=False)
+            self.chol = ch
             Z = cho_solve_banded((ch, False), np.column_stack([Kib, self.f_loads[iidx]]))
             self.Zb, self.zf = Z[:, :-1], Z[:, -1]
             self.Kc = Kbb - Kib.T @ self.Zb
             self.fc = self.f_loads[bidx] - Kib.T @ self.zf
         else:
+            self.chol = None
             self.Zb, self.zf = np.zeros((0, bidx.size)), np.zeros(0)
             self.Kc, self.fc = Kbb, self.f_loads[bidx]
         self.Kc = 0.5 * (self.Kc + self.Kc.T)
@@ -1099,7 +1137,7 @@ def solve(shaft: Shaft, seats, loads=(), *, gravity=None, shaft_temperature_chan
                        ring_displacements=rel, housing_displacements=W, seat_stiffness=Ks,
                        iterations=its, residual=res,
                        gravity=np.zeros(3) if gravity is None else gravity,
-                       _phi=pb.phi, _weight=pb.weight, _rows=tuple(rows), _X=X)
+                       _phi=pb.phi, _weight=pb.weight, _rows=tuple(rows), _X=X, _pb=pb)
 
 
 def _scales(pb):

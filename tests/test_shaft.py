@@ -529,3 +529,27 @@ def test_bearing_case_file_is_not_a_shaft_case():
     res = runner.invoke(app, ["shaft", str(EXAMPLES / "bearing_209.toml")])
     assert res.exit_code == 2
     assert "ballrace bearing" in res.output
+
+
+def test_system_stiffness_at_seat_and_mid_span():
+    """At the only seat of a short shaft the system stiffness is the seat's tangent
+    stiffness (the free shaft adds nothing in series; 1e-8).  Under the load of a
+    two-seat shaft the lateral compliance is the beam's a^2 b^2/(3EIl) + a b/(kappa G A l)
+    plus the seats' radial compliances 1/k weighted by (b/l)^2 and (a/l)^2 (unit load
+    shared by statics): 1 % (the seats' tilt stiffness and the radial-tilt coupling
+    are left out of this estimate)."""
+    s = S.Shaft([(0.02, 80e-3, 0.0)], STEEL)
+    r = S.solve(s, [S.Seat(0.01, AC)], [S.PointLoad(0.01, Fa=3000.0, Fy=2000.0)])
+    K = r.stiffness(0.01)
+    np.testing.assert_allclose(K, r.seat_stiffness[0], rtol=1e-8,
+                               atol=1e-8 * np.abs(r.seat_stiffness[0]).max())
+    s = S.Shaft([(0.26, 45e-3, 0.0)], STEEL)
+    P, xa, xb, c = 5000.0, 0.03, 0.23, 0.09
+    r = S.solve(s, [S.Seat(xa, DG0), S.Seat(xb, DG0)], [S.PointLoad(c, Fy=P)])
+    a, b, l = c - xa, xb - c, xb - xa
+    E, G, A, I, k = _props(45e-3)
+    kA, kB = r.seat_stiffness[0, 1, 1], r.seat_stiffness[1, 1, 1]
+    cexp = a**2 * b**2 / (3 * E * I * l) + a * b / (k * G * A * l) + (b / l)**2 / kA \
+        + (a / l)**2 / kB
+    C = np.linalg.inv(r.stiffness(c))
+    assert C[1, 1] == pytest.approx(cexp, rel=0.01)
