@@ -93,6 +93,7 @@ shear deformation); Friedman, Z. & Kosmatka, J.B. (1993) Comput. Struct. 47(3) 4
 """
 from __future__ import annotations
 
+import copy
 import functools
 import logging
 import math
@@ -561,7 +562,7 @@ def _shape(xi, L, phi):
 _GEO_CACHE: dict = {}
 
 
-def _ring_forces(bearing: BallBearing, clearance, u):
+def _ring_forces(bearing: BallBearing, clearance, u, balls: bool = False):
     """Ball-force resultant on the inner ring and its tangent stiffness at imposed ring
     displacements, in the bearing's own (loaddist) frame.
 
@@ -588,6 +589,8 @@ def _ring_forces(bearing: BallBearing, clearance, u):
         dF/du [N/m, N/rad, N m/m, N m/rad].
     delta_max : ndarray, shape (N,)
         Largest ball approach [m].
+    Q : ndarray, shape (N, Z)
+        Ball loads [N] (only with ``balls=True``).
     """
     key = (bearing, clearance)
     mg = _GEO_CACHE.get(key)
@@ -599,6 +602,8 @@ def _ring_forces(bearing: BallBearing, clearance, u):
             _GEO_CACHE.clear()
         _GEO_CACHE[key] = mg
     st = loaddist._State(mg[0], mg[1], np.asarray(u, float).reshape(-1, 5), "groove")
+    if balls:
+        return st.F, st.J, st.delta.max(1), st.Q
     return st.F, st.J, st.delta.max(1)
 
 
@@ -842,14 +847,8 @@ class _Problem:
             weight[4] = (xm * q[:, 1]).sum()
         self.weight = weight
         self.Ks = K
-        self.f_loads = f.copy()
-        for p in loads:
-            i = self.node(p.position)
-            F = p.vector
-            d = p.position - nd[i]
-            F[3] += -d * F[2]
-            F[4] += d * F[1]
-            self.f_loads[5 * i:5 * i + 5] += F
+        self.f_base = f                   # weight and thermal strain
+        self.f_loads = self._load_vector(loads)
         self.seat_node = [self.node(s.position) for s in seats]
         ns = len(seats)
         # static condensation of the linear shaft onto the seat nodes: the interior DOFs
@@ -870,14 +869,15 @@ class _Problem:
                 ab[bw - d, d:] = np.diagonal(Kii, d)
             ch = cholesky_banded(ab, lower=False)
             self.chol = ch
-            Z = cho_solve_banded((ch, False), np.column_stack([Kib, self.f_loads[iidx]]))
-            self.Zb, self.zf = Z[:, :-1], Z[:, -1]
+            self.Kib = Kib
+            self.Zb = cho_solve_banded((ch, False), Kib)
             self.Kc = Kbb - Kib.T @ self.Zb
-            self.fc = self.f_loads[bidx] - Kib.T @ self.zf
         else:
             self.chol = None
-            self.Zb, self.zf = np.zeros((0, bidx.size)), np.zeros(0)
-            self.Kc, self.fc = Kbb, self.f_loads[bidx]
+            self.Kib = np.zeros((0, bidx.size))
+            self.Zb = np.zeros((0, bidx.size))
+            self.Kc = Kbb
+        self._condense_loads()
         self.Kc = 0.5 * (self.Kc + self.Kc.T)
         self.nb = nb = 5 * ns
         # outer-ring DOFs after the seat DOFs: the free ones of each seat
@@ -925,6 +925,34 @@ class _Problem:
 
     def node(self, x):
         return int(np.argmin(np.abs(self.nodes - x)))
+
+    def _load_vector(self, loads):
+        """Nodal load vector: weight, thermal strain and the point loads (a load off its
+        node moved there with the moment of the shift)."""
+        f = self.f_base.copy()
+        for p in loads:
+            i = self.node(p.position)
+            F = p.vector
+            d = p.position - self.nodes[i]
+            F[3] += -d * F[2]
+            F[4] += d * F[1]
+            f[5 * i:5 * i + 5] += F
+        return f
+
+    def _condense_loads(self):
+        fi = self.f_loads[self.iidx]
+        self.zf = cho_solve_banded((self.chol, False), fi) if fi.size else np.zeros(0)
+        self.fc = self.f_loads[self.bidx] - (self.Kib.T @ self.zf if fi.size else 0.0)
+
+    def with_loads(self, loads):
+        """The same mesh, seats and condensation with other loads at the same positions."""
+        new = copy.copy(self)
+        new.loads = loads
+        new.f_loads = self._load_vector(loads)
+        new._condense_loads()
+        new.dmax = np.zeros_like(self.dmax)
+        new.fmax = np.zeros_like(self.fmax)
+        return new
 
     def seat_rel(self, Y):
         """Inner minus outer ring displacement at every seat (n_seats, 5), outer (.., 5)."""
@@ -977,6 +1005,11 @@ class _Problem:
                 Jm[np.ix_(gl, np.arange(5 * k, 5 * k + 5))] -= Ks[k][loc, :]
                 Jm[np.ix_(gl, gl)] += Kh + Ks[k][np.ix_(loc, loc)]
         return R, Jm, Rs, Ks, dmax
+
+
+#: The last few problems (mesh, stiffness, condensation) by shaft, seats and load positions:
+#: a duty cycle or sweep with loads at fixed places reuses them.
+_PROBLEMS: dict = {}
 
 
 def _check_setup(shaft, seats, loads):
@@ -1111,7 +1144,16 @@ def solve(shaft: Shaft, seats, loads=(), *, gravity=None, shaft_temperature_chan
         if gravity.shape != (3,):
             raise ValueError(f"gravity must be (g_x, g_y, g_z) [m/s^2]; got shape "
                              f"{gravity.shape}")
-    pb = _Problem(shaft, seats, loads, gravity, dTs, dTh, ah, ref)
+    key = (id(shaft), tuple(map(id, seats)), tuple(p.position for p in loads),
+           None if gravity is None else tuple(gravity), dTs, dTh, ah, ref)
+    hit = _PROBLEMS.get(key)
+    if hit is not None and hit[0] is shaft and all(a is b for a, b in zip(hit[1], seats)):
+        pb = hit[2].with_loads(loads)
+    else:
+        pb = _Problem(shaft, seats, loads, gravity, dTs, dTh, ah, ref)
+        if len(_PROBLEMS) >= 8:
+            _PROBLEMS.pop(next(iter(_PROBLEMS)))
+        _PROBLEMS[key] = (shaft, seats, pb)
     X0 = None
     if initial is not None:
         check_instance(initial, "initial", ShaftResult)
@@ -1247,6 +1289,13 @@ def _newton_step(pb, X, lam, sc, rtol, max_iter):
 
 # =========================================================================== life
 @dataclass(frozen=True)
+class _Balls:
+    """Ball loads of one row [N] (what the ISO/TS 16281 life reads from a result)."""
+
+    ball_loads: np.ndarray
+
+
+@dataclass(frozen=True)
 class ShaftLife:
     r"""Fatigue lives of the seats and of the bearing system (frozen).
 
@@ -1360,8 +1409,9 @@ def life(result: ShaftResult, *, rotating: str = "inner", dynamic_rating=None,
     alpha = per_seat(nominal_contact_angle, "nominal_contact_angle")
     rows, ratings, seat = [], [], []
     for k, s in enumerate(result.seats):
-        b = result.bearings[k]
-        lds = b if isinstance(b, tuple) else (b,)
+        # the ball loads of the seat's rows (as in result.bearings, without building them)
+        lds = [_Balls(_ring_forces(b, c, ul[None], balls=True)[3][0])
+               for kk, b, c, ul in result._rows if kk == k]
         rr = [reference_rating_life(s.ball_bearing, ld_, dynamic_rating=C[k],
                                     rotating=rotating, nominal_contact_angle=alpha[k])
               for ld_ in lds]
