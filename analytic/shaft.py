@@ -113,7 +113,8 @@ from .materials import BEARING_STEEL, Material
 
 __all__ = ["Shaft", "Seat", "PointLoad", "ShaftResult", "ConvergenceError", "solve",
            "gear_mesh", "belt_pull", "shear_coefficient", "MIRROR", "STANDARD_GRAVITY",
-           "ShaftLife", "DutyCycleLife", "life", "system_life", "duty_cycle"]
+           "ShaftLife", "DutyCycleLife", "life", "system_life", "duty_cycle",
+           "bearing_coefficients", "ross_bearings"]
 
 log = logging.getLogger(__name__)
 
@@ -1510,3 +1511,93 @@ def duty_cycle(shaft: Shaft, seats, cases, *, rotating: str = "inner", dynamic_r
     seat_h = np.array([miner(H[:, k], t) for k in range(H.shape[1])])
     return DutyCycleLife(seat_hours=seat_h, system_hours=float(system_life(seat_h, e)),
                          case_hours=H, fractions=t, results=tuple(res), weibull_slope=e)
+
+
+# =========================================================================== rotordynamics
+def bearing_coefficients(result: ShaftResult, tilt: str = "held"):
+    r"""Each seat's linearised lateral stiffness in the axes of a rotordynamics code.
+
+    ROSS (and most rotordynamics codes) take a 2x2 translational stiffness per bearing
+    node, with the shaft along their z axis: (x, y, z)_ROSS = (y, z, x)_ballrace (a cyclic
+    permutation, so both frames are right-handed).  From the seat's 5x5 tangent stiffness
+    K at the operating point (``result.seat_stiffness``):
+
+    * ``tilt="held"`` — the translational block as it is (the ring held square: what the
+      bearing shows when the shaft prevents it from tilting);
+    * ``tilt="free"`` — the lateral stiffness with the bearing free to tilt, the Schur
+      complement K_tt - K_tr K_rr^-1 K_rt over the two tilts (softer or equal).
+
+    The bearing's tilt stiffness itself (a rotational spring, large for an axially loaded
+    or preloaded bearing) is not part of a 2x2 translational element; either choice
+    drops it, and the axial stiffness is reported separately (``kzz``).
+
+    Parameters
+    ----------
+    result : ShaftResult
+        The solved shaft.
+    tilt : {"held", "free"}
+        How the tilt DOFs are treated.
+
+    Returns
+    -------
+    list of dict
+        Per seat: ``x`` [m], ``node`` (index into ``result.nodes``), ``kxx``, ``kxy``,
+        ``kyx``, ``kyy``, ``kzz`` [N/m].
+
+    Examples
+    --------
+    >>> import ballrace
+    >>> brg = ballrace.BallBearing(7.938e-3, 9, 38.5e-3, 0.52, 0.53, diametral_clearance=0.0)
+    >>> s = Shaft([(0.26, 45e-3, 0.0)], ballrace.BEARING_STEEL)
+    >>> r = solve(s, [Seat(0.03, brg), Seat(0.23, brg)], [PointLoad(0.13, Fy=4000.0)])
+    >>> c = bearing_coefficients(r)
+    >>> bool(c[0]["kxx"] > c[0]["kyy"] > 0)     # stiffer along the load
+    True
+    """
+    check_instance(result, "result", ShaftResult)
+    check_choice(tilt, "tilt", ("held", "free"))
+    out = []
+    for k, s in enumerate(result.seats):
+        K = result.seat_stiffness[k]
+        T = K[np.ix_([1, 2], [1, 2])]
+        if tilt == "free":
+            Krr = K[np.ix_([3, 4], [3, 4])]
+            if np.linalg.cond(Krr) < 1e12:
+                T = T - K[np.ix_([1, 2], [3, 4])] @ np.linalg.solve(Krr, K[np.ix_([3, 4], [1, 2])])
+        out.append(dict(x=s.position, node=int(np.argmin(np.abs(result.nodes - s.position))),
+                        kxx=float(T[0, 0]), kxy=float(T[0, 1]), kyx=float(T[1, 0]),
+                        kyy=float(T[1, 1]), kzz=float(K[0, 0])))
+    return out
+
+
+def ross_bearings(result: ShaftResult, nodes, *, tilt: str = "held", damping: float = 0.0):
+    """ROSS ``BearingElement`` objects of the seats (needs ``ballrace[rotor]``).
+
+    Parameters
+    ----------
+    result : ShaftResult
+        The solved shaft.
+    nodes : sequence of int
+        The ROSS rotor node of each seat (in the ROSS model's own numbering).
+    tilt : {"held", "free"}
+        See :func:`bearing_coefficients`.
+    damping : float
+        Direct damping c_xx = c_yy [N s/m] (a rolling bearing's is small and not modelled).
+
+    Returns
+    -------
+    list of ross.BearingElement
+    """
+    try:
+        import ross
+    except ImportError:
+        raise ImportError("ross_bearings needs ROSS: pip install 'ballrace[rotor]' "
+                          "(ross-rotordynamics)") from None
+    nodes = list(nodes)
+    coeffs = bearing_coefficients(result, tilt)
+    if len(nodes) != len(coeffs):
+        raise ValueError(f"nodes must give one ROSS node per seat ({len(coeffs)}); got "
+                         f"{len(nodes)}")
+    return [ross.BearingElement(n=int(n), kxx=c["kxx"], kyy=c["kyy"], kxy=c["kxy"],
+                                kyx=c["kyx"], cxx=float(damping), cyy=float(damping))
+            for n, c in zip(nodes, coeffs)]

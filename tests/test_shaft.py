@@ -553,3 +553,22 @@ def test_system_stiffness_at_seat_and_mid_span():
         + (a / l)**2 / kB
     C = np.linalg.inv(r.stiffness(c))
     assert C[1, 1] == pytest.approx(cexp, rel=0.01)
+
+
+def test_bearing_coefficients_rotordynamics_axes():
+    """ROSS axes (x, y, z) = ballrace (y, z, x): k_xx = K_vv, k_yy = K_ww, k_zz = K_uu of
+    the seat's tangent stiffness (exact); with the tilt free the lateral stiffness is the
+    Schur complement, never stiffer (positive semi-definite difference)."""
+    s = S.Shaft([(0.26, 45e-3, 0.0)], STEEL)
+    r = S.solve(s, [S.Seat(0.03, AC, 1, offset=10e-6), S.Seat(0.23, AC, -1, offset=10e-6)],
+                [S.PointLoad(0.13, Fy=4000.0, Fz=1000.0)])
+    c = S.bearing_coefficients(r)
+    K = r.seat_stiffness[0]
+    assert (c[0]["kxx"], c[0]["kyy"], c[0]["kxy"], c[0]["kzz"]) == (K[1, 1], K[2, 2], K[1, 2],
+                                                                   K[0, 0])
+    f = S.bearing_coefficients(r, tilt="free")
+    d = np.array([[c[0]["kxx"] - f[0]["kxx"], c[0]["kxy"] - f[0]["kxy"]],
+                  [c[0]["kyx"] - f[0]["kyx"], c[0]["kyy"] - f[0]["kyy"]]])
+    assert np.linalg.eigvalsh(0.5 * (d + d.T)).min() > -1e-9 * K[1, 1]
+    with pytest.raises(ValueError, match="tilt"):
+        S.bearing_coefficients(r, tilt="x")
