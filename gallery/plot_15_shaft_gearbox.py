@@ -7,7 +7,7 @@ A 260 mm stepped shaft on two 6208-size deep-groove bearings, a helical gear bet
 locates the shaft axially, bearing B floats in its housing bore.  The shaft and both
 bearings are solved together (``ballrace.analytic.shaft``): the gear's axial force goes to
 bearing A alone, which it turns into an angular-contact bearing (contact angles of
-13-16 deg), and the moment of that force at the pitch radius tilts the shaft.
+about 13-17 deg), and the moment of that force at the pitch radius tilts the shaft.
 """
 import matplotlib.pyplot as plt
 import numpy as np
