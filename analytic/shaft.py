@@ -1033,24 +1033,31 @@ def _check_setup(shaft, seats, loads):
         if not -1e-12 * L <= p.position <= L * (1 + 1e-12):
             raise ValueError(f"loads[{k}].position must be within the shaft [0, {L!r}] m; "
                              f"got {p.position!r}")
-    # supports: axial from any locating seat (or a housing spring), lateral/tilt from
-    # the seats; a single seat restrains tilt by its own moment stiffness
-    if all(s.floating and (s.housing_stiffness is None or s.housing_stiffness[0, 0] == 0)
-           for s in seats) and not any(s.spring_preload for s in seats):
-        raise ValueError("the shaft has no axial support: every seat is floating (give one "
-                         "locating seat, floating=False) -- free rigid-body mode: "
-                         f"{DOF_NAMES[0]}")
-    for k, s in enumerate(seats):
-        if s.housing_stiffness is not None:
-            Kh = s.housing_stiffness.copy()
-            if s.floating:
-                Kh = Kh[1:, 1:]
-            if len(seats) == 1 and np.min(np.linalg.eigvalsh(Kh)) <= 0:
-                raise ValueError(f"seats[{k}].housing_stiffness is singular: the only seat "
-                                 "leaves a free rigid-body mode")
-    if len(seats) == 1 and seats[0].floating:
-        raise ValueError("the shaft has no axial support: its only seat is floating -- "
-                         f"free rigid-body mode: {DOF_NAMES[0]}")
+    # rigid-body modes of the shaft on its supports: a seat restrains what both its
+    # bearing (all five DOFs once loaded) and its housing restrain (rigid, or a spring
+    # with a non-zero diagonal; a floating seat never axially); the rigid shaft's motion
+    # (u0, v0, w0, theta_y, theta_z) about x = 0 moves a seat at x by
+    # (u0, v0 + theta_z x, w0 - theta_y x, theta_y, theta_z)
+    if not any(not s.floating and (s.housing_stiffness is None or
+                                   s.housing_stiffness[0, 0] > 0) for s in seats):
+        raise ValueError("the shaft has no axial support: every seat is floating or has no "
+                         "axial housing stiffness (give one locating seat, floating=False) "
+                         f"-- free rigid-body mode: {DOF_NAMES[0]}")
+    Kr = np.zeros((5, 5))
+    for s in seats:
+        held = np.ones(5) if s.housing_stiffness is None else \
+            (np.diag(s.housing_stiffness) > 0).astype(float)
+        if s.floating:
+            held[0] = 0.0
+        T = np.eye(5)
+        T[1, 4], T[2, 3] = s.position, -s.position
+        Kr += T.T @ (held[:, None] * T)
+    w, V = np.linalg.eigh(Kr)
+    if w[0] <= 1e-12 * max(w[-1], 1.0):
+        mode = V[:, 0] * np.array([1, 1, 1, L, L])
+        names = [DOF_NAMES[i] for i in np.flatnonzero(np.abs(mode) > 0.1 * np.abs(mode).max())]
+        raise ValueError("the seats leave the shaft a free rigid-body mode: "
+                         f"{' with '.join(names)} (housing stiffness zero or seats floating)")
 
 
 # =========================================================================== solve

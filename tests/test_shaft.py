@@ -572,3 +572,20 @@ def test_bearing_coefficients_rotordynamics_axes():
     assert np.linalg.eigvalsh(0.5 * (d + d.T)).min() > -1e-9 * K[1, 1]
     with pytest.raises(ValueError, match="tilt"):
         S.bearing_coefficients(r, tilt="x")
+
+
+def test_rigid_body_modes_are_named():
+    """A single seat whose housing has no tilt stiffness leaves the shaft free to rotate;
+    a seat with zero axial housing stiffness does not locate; both are ValueErrors."""
+    s = S.Shaft([(0.2, 40e-3, 0.0)], STEEL)
+    with pytest.raises(ValueError, match="rotation about"):
+        S.solve(s, [S.Seat(0.1, DG, housing_stiffness=[1e8, 1e8, 1e8, 0.0, 0.0])],
+                [S.PointLoad(0.1, Fy=100.0)])
+    with pytest.raises(ValueError, match="no axial support"):
+        S.solve(s, [S.Seat(0.02, DG, housing_stiffness=[0.0, 1e8, 1e8, 1e5, 1e5]),
+                    S.Seat(0.18, DG, floating=True)], [S.PointLoad(0.1, Fy=100.0)])
+    # two seats with radial springs only: supported (tilt from the pair of seats)
+    r = S.solve(s, [S.Seat(0.02, DG, housing_stiffness=[1e9, 1e8, 1e8, 0, 0]),
+                    S.Seat(0.18, DG, housing_stiffness=[0, 1e8, 1e8, 0, 0], floating=True)],
+                [S.PointLoad(0.1, Fy=100.0)])
+    assert r.reactions[:, 1].sum() == pytest.approx(100.0, rel=1e-9)
