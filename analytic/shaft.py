@@ -1323,6 +1323,11 @@ class ShaftLife:
     kind : str
         ``"L10r"`` (ISO/TS 16281 basic reference rating life) or ``"Lnmr"`` (modified,
         a1 a_ISO L10r, ISO 281:2007 §9.3 via ISO/TS 16281 §5.3).
+    catalog_lives : tuple
+        Per seat: the ISO 281:2007 catalogue life from the seat's reaction, (C/P)^3 with
+        P = X F_r + Y F_a (``life.equivalent_load_for``), or L_nm = a1 a_ISO (C/P)^3 with
+        ``modified`` [1e6 rev]; ``None`` for a duplex pair (its rows share the thrust in a
+        way the catalogue formula does not know) or where the X/Y tables do not apply.
     """
 
     seat_lives: np.ndarray
@@ -1331,6 +1336,7 @@ class ShaftLife:
     system: float
     weibull_slope: float
     kind: str
+    catalog_lives: tuple = ()
 
     def hours(self, speed_rpm):
         """(seat lives (n_seats,), system life) in hours at ``speed_rpm`` [rev/min] [h]."""
@@ -1415,7 +1421,7 @@ def life(result: ShaftResult, *, rotating: str = "inner", dynamic_rating=None,
 
     C = per_seat(dynamic_rating, "dynamic_rating")
     alpha = per_seat(nominal_contact_angle, "nominal_contact_angle")
-    rows, ratings, seat = [], [], []
+    rows, ratings, seat, cat = [], [], [], []
     for k, s in enumerate(result.seats):
         # the ball loads of the seat's rows (as in result.bearings, without building them)
         lds = [_Balls(_ring_forces(b, c, ul[None], balls=True)[3][0])
@@ -1424,13 +1430,33 @@ def life(result: ShaftResult, *, rotating: str = "inner", dynamic_rating=None,
                                     rotating=rotating, nominal_contact_angle=alpha[k])
               for ld_ in lds]
         Ls = [float(r.modified(**modified)) if modified else float(r.L10r) for r in rr]
+        cat.append(_catalog_life(s, result.reactions[k], rr[0].C, alpha[k], modified))
         ratings.append(tuple(rr))
         rows.append(tuple(Ls))
         seat.append(system_life(Ls, e))
     allrows = [x for r in rows for x in r]
     return ShaftLife(seat_lives=np.array(seat), row_lives=tuple(rows), ratings=tuple(ratings),
                      system=float(system_life(allrows, e)), weibull_slope=e,
-                     kind="Lnmr" if modified else "L10r")
+                     kind="Lnmr" if modified else "L10r", catalog_lives=tuple(cat))
+
+
+def _catalog_life(seat, R, C, alpha, modified):
+    """ISO 281 (C/P)^3 (or L_nm) of a single-bearing seat from its reaction; None if n/a."""
+    from .iso281 import modified_rating_life
+    from .life import equivalent_load_for
+
+    if isinstance(seat.bearing, DuplexPair):
+        return None
+    Fr, Fa = float(np.hypot(R[1], R[2])), float(abs(R[0]))
+    try:
+        P = float(equivalent_load_for(seat.ball_bearing, Fr, Fa, contact_angle=alpha).P)
+    except ValueError:
+        return None
+    if not P > 0:
+        return None
+    if modified:
+        return float(modified_rating_life(C, P, **modified))
+    return float((C / P) ** 3)
 
 
 @dataclass(frozen=True)

@@ -457,8 +457,11 @@ def analyze(case: ShaftCase) -> dict:
                  stiffness=[[float(v) for v in row] for row in r.seat_stiffness[k]])
         if lf is not None:
             d["L10r"] = float(lf.seat_lives[k])
+            d["L10_iso281"] = lf.catalog_lives[k]
             if case.speed_rpm:
                 d["L10r_h"] = float(lf.hours(case.speed_rpm)[0][k])
+                if lf.catalog_lives[k] is not None:
+                    d["L10_iso281_h"] = lf.catalog_lives[k] * 1e6 / (60 * case.speed_rpm)
         seats.append(d)
     L = case.shaft.length
     xs = np.linspace(0.0, L, 201)
@@ -511,7 +514,8 @@ def _render(r: dict, units: str = "eng") -> None:
     F, M, Ln, Sm, A = (ul(k, units) for k in ("force", "moment", "length", "small", "angle"))
     headers = ["seat", f"x [{Ln}]", "bearing", f"Fa [{F}]", f"Fy [{F}]", f"Fz [{F}]",
                f"My [{M}]", f"Mz [{M}]", f"Q_max [{F}]", f"p_max [{ul('stress', units)}]",
-               f"beta [{A}]", "tilt [mrad]", f"radial defl. [{Sm}]", "L10r [h]"]
+               f"beta [{A}]", "tilt [mrad]", f"radial defl. [{Sm}]", "L10r [h]",
+               "ISO 281 L10 [h]"]
     rows = []
     for s in r["seats"]:
         R = s["reaction"]
@@ -523,7 +527,8 @@ def _render(r: dict, units: str = "eng") -> None:
                      g(s["max_ball_load"], "force"), g(s["max_pressure"], "stress", 4),
                      f"{g(s['contact_angle_min'], 'angle', 3)}..{g(s['contact_angle_max'], 'angle', 3)}",
                      fmt(s["misalignment"] * 1e3, 3), g(s["radial_deflection"], "small", 4),
-                     fmt(s["L10r_h"], 4) if s.get("L10r_h") is not None else "-"])
+                     fmt(s["L10r_h"], 4) if s.get("L10r_h") is not None else "-",
+                     fmt(s["L10_iso281_h"], 4) if s.get("L10_iso281_h") is not None else "-"])
     print_columns(con, "Seats (loads carried, shaft frame)", headers, rows)
     for n in r["notes"]:
         con.print(literal(f"note: {n}"), style="dim")

@@ -589,3 +589,21 @@ def test_rigid_body_modes_are_named():
                     S.Seat(0.18, DG, housing_stiffness=[0, 1e8, 1e8, 0, 0], floating=True)],
                 [S.PointLoad(0.1, Fy=100.0)])
     assert r.reactions[:, 1].sum() == pytest.approx(100.0, rel=1e-9)
+
+
+def test_catalog_life_from_reaction():
+    """ISO 281 catalogue life of a seat: (C/P)^3 with P = X F_r + Y F_a of the seat's
+    reaction (life.equivalent_load_for, at alpha = 0 for a deep-groove bearing) and the
+    same C as the reference life (1e-12); a duplex seat has none."""
+    from ballrace.analytic.life import equivalent_load_for
+    s = S.Shaft([(0.26, 45e-3, 0.0)], STEEL)
+    r = S.solve(s, [S.Seat(0.03, DG0), S.Seat(0.23, DG0, floating=True)],
+                [S.PointLoad(0.09, Fy=4000.0, Fa=800.0)])
+    lf = S.life(r, nominal_contact_angle=0.0)
+    R = r.reactions[0]
+    P = equivalent_load_for(DG0, np.hypot(R[1], R[2]), abs(R[0]), contact_angle=0.0).P
+    assert lf.catalog_lives[0] == pytest.approx((lf.ratings[0][0].C / P) ** 3, rel=1e-12)
+    pair = dx.DuplexPair(AC, "DB", preload=1000.0)
+    r = S.solve(S.Shaft([(0.02, 80e-3, 0.0)], STEEL), [S.Seat(0.01, pair)],
+                [S.PointLoad(0.01, Fy=500.0)])
+    assert S.life(r).catalog_lives == (None,)
