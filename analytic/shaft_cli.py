@@ -525,7 +525,8 @@ def _render(r: dict, units: str = "eng") -> None:
                      g(R[0], "force"), g(R[1], "force"), g(R[2], "force"),
                      g(R[3], "moment", 4), g(R[4], "moment", 4),
                      g(s["max_ball_load"], "force"), g(s["max_pressure"], "stress", 4),
-                     f"{g(s['contact_angle_min'], 'angle', 3)}..{g(s['contact_angle_max'], 'angle', 3)}",
+                     f"{g(s['contact_angle_min'], 'angle', 3)}.."
+                     f"{g(s['contact_angle_max'], 'angle', 3)}",
                      fmt(s["misalignment"] * 1e3, 3), g(s["radial_deflection"], "small", 4),
                      fmt(s["L10r_h"], 4) if s.get("L10r_h") is not None else "-",
                      fmt(s["L10_iso281_h"], 4) if s.get("L10_iso281_h") is not None else "-"])
@@ -603,7 +604,8 @@ def register(app) -> None:
     def shaft_cmd(
         case_file: Annotated[str, typer.Argument(
             help="Shaft case file (TOML, kind = \"shaft\"; docs/shaft.md).")],
-        as_json: Annotated[bool, typer.Option("--json", help="Machine-readable JSON (SI units).")] = False,
+        as_json: Annotated[bool, typer.Option(
+            "--json", help="Machine-readable JSON (SI units).")] = False,
         units: Annotated[str, typer.Option("--units", help=UNITS_HELP)] = "eng",
         plot_file: Annotated[Optional[str], typer.Option(
             "--plot", help="Write a picture of the shaft (PNG/SVG/PDF) to this file.")] = None,

@@ -198,7 +198,8 @@ def test_duplex_seat_matches_duplex_pair_and_lifts_off():
     """A DB pair (7311 geometry, preload 2 kN) as one seat on a short stiff shaft:
     the rows carry the axial loads of ``DuplexPair.solve`` (1e-7), and row 2 lifts off
     exactly at ``DuplexPair.unloading_load`` F_u = F_a(2 delta_0) (Harris 2001 §7.5):
-    at 0.98 F_u it still carries load (Q ~ delta^1.5: ~1 N), at F_u its largest ball load is below 1e-6 P."""
+    at 0.98 F_u it still carries load (Q ~ delta^1.5: ~1 N), at F_u its largest ball load is
+    below 1e-6 P."""
     P = 2000.0
     pair = dx.DuplexPair(AC, "DB", preload=P)
     s = S.Shaft([(0.02, 80e-3, 0.0)], STEEL)
