@@ -608,3 +608,16 @@ def test_catalog_life_from_reaction():
     r = S.solve(S.Shaft([(0.02, 80e-3, 0.0)], STEEL), [S.Seat(0.01, pair)],
                 [S.PointLoad(0.01, Fy=500.0)])
     assert S.life(r).catalog_lives == (None,)
+
+
+@pytest.mark.parametrize("arr, Fa", [("DF", 2500.0), ("DT", 3000.0), ("DT", -500.0)])
+def test_df_dt_seats_match_duplex_pair(arr, Fa):
+    """DF (rows at one place: the DB numbers) and DT (both rows loaded alike, a constant
+    spring preload P on the pair: F_a = 2 F(delta) - P) seats carry the row loads of
+    ``DuplexPair.solve`` (1e-7 of the preload)."""
+    pair = dx.DuplexPair(AC, arr, preload=1500.0)
+    s = S.Shaft([(0.02, 80e-3, 0.0)], STEEL)
+    r = S.solve(s, [S.Seat(0.01, pair)], [S.PointLoad(0.01, Fa=Fa)])
+    got = np.maximum([float(b.loads[0]) for b in r.bearings[0]], 0)
+    np.testing.assert_allclose(got, pair.solve(Fa=Fa).axial_loads, rtol=1e-7, atol=1e-7 * 1500)
+    assert r.reactions[0, 0] == pytest.approx(Fa, rel=1e-9)
