@@ -56,6 +56,11 @@ shaft and seats on top of each other are one-line errors naming the key)::
     force = "1.2 kN"
     azimuth = "90 deg"
 
+    [[duty]]                            # optional duty cycle: point loads x load_factor
+    fraction = 0.3                      # time fraction (the fractions sum to 1)
+    speed = "1500 rpm"
+    load_factor = 1.0
+
     [operation]                         # optional
     speed = "1500 rpm"                  # for the lives in hours
     shaft_temperature_change = "10 K"   # from assembly
@@ -164,6 +169,11 @@ def _models():
         housing_temperature_change: str = "0 K"
         housing_expansion: str = "0 1/K"
 
+    class DutySpec(_Strict):
+        fraction: float = Field(ge=0.0, le=1.0)
+        speed: str
+        load_factor: float = Field(default=1.0, ge=0.0)
+
     class CaseSpec(_Strict):
         title: str = ""
         kind: Literal["shaft"]
@@ -174,6 +184,7 @@ def _models():
         gear: list[GearSpec] = []
         belt: list[BeltSpec] = []
         operation: OperationSpec = OperationSpec()
+        duty: list[DutySpec] = []
 
     return CaseSpec
 
@@ -194,6 +205,7 @@ class ShaftCase:
     ratings : Per seat: C [N] or None (ISO 281 from the geometry).
     nominal_angles : Per seat: nominal contact angle of the rating [rad].
     solve_options : Temperatures for :func:`ballrace.analytic.shaft.solve`.
+    duty : Duty cycle: ((time fraction, speed [rev/min], load factor), ...) or ().
     """
 
     title: str
@@ -206,6 +218,7 @@ class ShaftCase:
     ratings: tuple
     nominal_angles: tuple
     solve_options: dict
+    duty: tuple = ()
 
 
 def _kind_hint(data: dict, source: str) -> Optional[str]:
@@ -381,7 +394,14 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
     if opts["shaft_temperature_change"] and not shaft.thermal_expansion:
         raise err("[operation].shaft_temperature_change",
                   "needs [shaft].thermal_expansion (e.g. \"11.5e-6 1/K\")")
-    return ShaftCase(title=spec.title, shaft=shaft, seats=tuple(seats), loads=tuple(loads),
+    duty = []
+    for k, d in enumerate(spec.duty):
+        w = _speed(d.speed, f"{source}: [[duty]][{k}].speed")
+        duty.append((d.fraction, w * 60 / (2 * math.pi), d.load_factor))
+    if duty and abs(sum(d[0] for d in duty) - 1.0) > 1e-6:
+        raise err("[[duty]]", f"the fractions must sum to 1; got "
+                  f"{sum(d[0] for d in duty):.6g}")
+    return ShaftCase(title=spec.title, duty=tuple(duty), shaft=shaft, seats=tuple(seats), loads=tuple(loads),
                      gravity=(0.0, -S.STANDARD_GRAVITY, 0.0) if sh.weight else None,
                      speed_rpm=None if speed is None else speed * 60 / (2 * math.pi),
                      rotating_ring=op.rotating_ring, ratings=tuple(C),
@@ -484,7 +504,26 @@ def analyze(case: ShaftCase) -> dict:
             "kind": lf.kind, "weibull_slope": lf.weibull_slope, "system": float(lf.system),
             "system_h": float(lf.hours(case.speed_rpm)[1]) if case.speed_rpm else None},
         "notes": notes,
+        "duty": None,
     }
+    if case.duty:
+        def scaled(p, f):
+            return S.PointLoad(p.position, *(f * p.vector), name=p.name)
+
+        kw = dict(rotating=case.rotating_ring, nominal_contact_angle=list(case.nominal_angles),
+                  dynamic_rating=[c for c in case.ratings] if any(
+                      c is not None for c in case.ratings) else None,
+                  gravity=case.gravity, **case.solve_options)
+        dc = S.duty_cycle(case.shaft, case.seats,
+                          [([scaled(p, f) for p in case.loads], t, n) for t, n, f in case.duty],
+                          **kw)
+        out["duty"] = {"fractions": [t for t, _, _ in case.duty],
+                       "speed_rpm": [n for _, n, _ in case.duty],
+                       "load_factor": [f for _, _, f in case.duty],
+                       "case_hours": [[float(v) for v in row] for row in dc.case_hours],
+                       "seat_hours": [float(v) for v in dc.seat_hours],
+                       "system_hours": float(dc.system_hours),
+                       "weibull_slope": dc.weibull_slope}
     return out
 
 
@@ -531,6 +570,12 @@ def _render(r: dict, units: str = "eng") -> None:
                      fmt(s["L10r_h"], 4) if s.get("L10r_h") is not None else "-",
                      fmt(s["L10_iso281_h"], 4) if s.get("L10_iso281_h") is not None else "-"])
     print_columns(con, "Seats (loads carried, shaft frame)", headers, rows)
+    if r.get("duty"):
+        d = r["duty"]
+        rows = [(f"{s['name']}: L10r (Palmgren-Miner)", h, "=h")
+                for s, h in zip(r["seats"], d["seat_hours"])]
+        rows.append((f"system (e = {d['weibull_slope']:.4g})", d["system_hours"], "=h"))
+        print_sections(con, [(f"Duty cycle ({len(d['fractions'])} cases)", rows)], units)
     for n in r["notes"]:
         con.print(literal(f"note: {n}"), style="dim")
 

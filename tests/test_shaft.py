@@ -621,3 +621,26 @@ def test_df_dt_seats_match_duplex_pair(arr, Fa):
     got = np.maximum([float(b.loads[0]) for b in r.bearings[0]], 0)
     np.testing.assert_allclose(got, pair.solve(Fa=Fa).axial_loads, rtol=1e-7, atol=1e-7 * 1500)
     assert r.reactions[0, 0] == pytest.approx(Fa, rel=1e-9)
+
+
+def test_case_file_duty_cycle():
+    """The gearbox example's [[duty]] cases (point loads x 1.4, 1.0, 0.5 at 1000, 1500,
+    2000 rpm for 20/50/30 % of the time) give the lives of shaft.duty_cycle on the same
+    scaled loads (1e-9)."""
+    import json
+    runner, app = _cli()
+    res = runner.invoke(app, ["shaft", str(EXAMPLES / "shaft_gearbox.toml"), "--json"])
+    r = json.loads(res.output)
+    brg = ballrace.BallBearing(12.7e-3, 9, 60e-3, 0.52, 0.525, diametral_clearance=15e-6)
+    mat = ballrace.Material(E=210e9, nu=0.3, density=7850.0)
+    s = S.Shaft([(0.03, 0.04, 0.0), (0.2, 0.048, 0.0), (0.03, 0.04, 0.0)], mat)
+    seats = [S.Seat(0.015, brg), S.Seat(0.245, brg, floating=True)]
+
+    def gear(f):
+        return [S.gear_mesh(0.09, 5000.0 * f, 0.12, helix_angle=np.radians(15),
+                            mesh_azimuth=np.radians(90))]
+    d = S.duty_cycle(s, seats, [(gear(1.4), 0.2, 1000.0), (gear(1.0), 0.5, 1500.0),
+                                (gear(0.5), 0.3, 2000.0)],
+                     nominal_contact_angle=0.0, gravity=(0, -S.STANDARD_GRAVITY, 0))
+    np.testing.assert_allclose(r["duty"]["seat_hours"], d.seat_hours, rtol=1e-9)
+    assert r["duty"]["system_hours"] == pytest.approx(d.system_hours, rel=1e-9)
