@@ -303,16 +303,29 @@ def test_weight_resultant():
 
 
 # --------------------------------------------------------------------------- invariants
-@settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+_PAIR = dx.DuplexPair(AC, "DB", preload=1000.0)
+
+
+@settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(x=st.floats(0.0, 0.3), Fy=st.floats(-8000, 8000), Fz=st.floats(-8000, 8000),
-       Fa=st.floats(-2000, 2000), M=st.floats(-100, 100), three=st.booleans())
-def test_global_equilibrium(x, Fy, Fz, Fa, M, three):
+       Fa=st.floats(-2000, 2000), M=st.floats(-100, 100), cfg=st.integers(0, 3),
+       off=st.floats(-20e-6, 20e-6))
+def test_global_equilibrium(x, Fy, Fz, Fa, M, cfg, off):
     """sum(loads) - sum(reactions) = 0 with moments about any point, to the solver
-    tolerance (1e-8 of the largest load), and the bearings' own results balance."""
+    tolerance (1e-8 of the largest load), floating seats carry no thrust, and each
+    bearing's own result carries its seat's reaction (mapped to its frame): deep-groove
+    seats with a third floating seat, an O pair of angular-contact bearings with end play
+    or preload, a DB pair with 20 mm row spacing and a floating deep-groove seat."""
     s = S.Shaft([(0.1, 40e-3, 0.0), (0.1, 50e-3, 10e-3), (0.1, 40e-3, 0.0)], STEEL)
-    seats = [S.Seat(0.02, DG), S.Seat(0.28, DG, floating=True)]
-    if three:
-        seats.insert(1, S.Seat(0.15, DG, floating=True))
+    if cfg == 0:
+        seats = [S.Seat(0.02, DG), S.Seat(0.28, DG, floating=True)]
+    elif cfg == 1:
+        seats = [S.Seat(0.02, DG0), S.Seat(0.15, DG, floating=True),
+                 S.Seat(0.28, DG0, floating=True)]
+    elif cfg == 2:
+        seats = [S.Seat(0.02, AC, 1, offset=off), S.Seat(0.28, AC, -1, offset=off)]
+    else:
+        seats = [S.Seat(0.03, _PAIR, row_spacing=0.02), S.Seat(0.28, DG0, floating=True)]
     loads = [S.PointLoad(x, Fa=Fa, Fy=Fy, Fz=Fz, My=M), S.PointLoad(0.2, Fy=1000.0)]
     r = S.solve(s, seats, loads)
     scale = max(abs(Fa), abs(Fy), abs(Fz), 1000.0)
@@ -320,10 +333,15 @@ def test_global_equilibrium(x, Fy, Fz, Fa, M, three):
         res = r.equilibrium_residual(pt)
         assert np.abs(res[:3]).max() < 1e-8 * scale
         assert np.abs(res[3:]).max() < 1e-8 * scale * 0.3
-    for k in (1, len(seats) - 1):
-        assert abs(r.reactions[k, 0]) < 1e-8 * scale            # floating seats
-    for b, R in zip(r.bearings, r.reactions):
-        np.testing.assert_allclose(b.loads, R, rtol=1e-9, atol=1e-9 * scale)
+    for k, seat in enumerate(seats):
+        if seat.floating:
+            assert abs(r.reactions[k, 0]) < 1e-8 * scale
+        b = r.bearings[k]
+        if isinstance(b, tuple):
+            continue
+        T = np.ones(5) if seat.direction > 0 else S.MIRROR
+        np.testing.assert_allclose(b.loads, T * r.reactions[k], rtol=1e-9,
+                                   atol=1e-9 * scale)
 
 
 # --------------------------------------------------------------------------- bad input
