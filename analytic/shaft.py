@@ -592,6 +592,9 @@ def _ring_forces(bearing: BallBearing, clearance, u, balls: bool = False):
         dF/du [N/m, N/rad, N m/m, N m/rad].
     delta_max : ndarray, shape (N,)
         Largest ball approach [m].
+    energy : ndarray, shape (N,)
+        Elastic energy of the ball contacts, sum 2/5 K_n(beta_j) delta_j^(5/2) [J] (the
+        potential of F with K_n held at each ball's angle; the line search's merit).
     Q : ndarray, shape (N, Z)
         Ball loads [N] (only with ``balls=True``).
     """
@@ -605,9 +608,11 @@ def _ring_forces(bearing: BallBearing, clearance, u, balls: bool = False):
             _GEO_CACHE.clear()
         _GEO_CACHE[key] = mg
     st = loaddist._State(mg[0], mg[1], np.asarray(u, float).reshape(-1, 5), "groove")
+    d = st.delta
+    energy = 0.4 * (st.Kn * d * d * np.sqrt(d)).sum(1)
     if balls:
-        return st.F, st.J, st.delta.max(1), st.Q
-    return st.F, st.J, st.delta.max(1)
+        return st.F, st.J, d.max(1), energy, st.Q
+    return st.F, st.J, d.max(1), energy
 
 
 def _ring_result(bearing: BallBearing, clearance, u) -> loaddist.LoadDistribution:
@@ -979,8 +984,10 @@ class _Problem:
         Ks = np.zeros((ns, 5, 5))
         ul = np.einsum("rij,rj->ri", self.Gr, rel[self.rk])
         ul[:, 0] += self.roff
+        energy = 0.0
         for (b, c), idx in self.groups:
-            F, J, dm = _ring_forces(b, c, ul[idx])
+            F, J, dm, en = _ring_forces(b, c, ul[idx])
+            energy += float(en.sum())
             self.fmax[idx] = np.abs(F[:, :3]).max(1)
             for j, r in enumerate(idx):
                 Gm = self.Gr[r]
@@ -990,11 +997,17 @@ class _Problem:
         dmax = self.dmax
         nb = self.nb
         R = np.empty(self.N)
-        R[:nb] = self.Kc @ Y[:nb] - lam * self.fc + Rs.ravel()
+        Kb = self.Kc @ Y[:nb]
+        R[:nb] = Kb - lam * self.fc + Rs.ravel()
+        # total potential (the residual is its gradient): shaft, loads, bearings, springs
+        pot = 0.5 * float(Y[:nb] @ Kb) - lam * float(self.fc @ Y[:nb]) + energy + \
+            float((self.const * rel).sum())
         for k, (loc, gl, Kh) in enumerate(self.outer):
             if loc.size:
                 # outer ring: the housing spring and a preload spring balance the balls
                 R[gl] = Kh @ Y[gl] - Rs[k, loc] - self.spring[k, loc]
+                pot += 0.5 * float(Y[gl] @ Kh @ Y[gl]) - float(self.spring[k, loc] @ Y[gl])
+        self.potential = pot
         if not want_J:
             return R, None, Rs, Ks, dmax
         Jm = np.zeros((self.N, self.N))
@@ -1275,19 +1288,39 @@ def _newton_step(pb, X, lam, sc, rtol, max_iter):
         size = max(np.abs(rel_step[:, :3]).max(), np.abs(rel_step[:, 3:]).max() * Rmax)
         if not np.all(np.isfinite(dX)):
             return X, it, err, False
+        g = float(R @ dX)
+        if not g < 0.0:
+            # not a descent direction of the potential: the symmetric part, then the
+            # scaled gradient
+            Jsym = 0.5 * (Jd * sc[:, None] / D[None, :] + (Jd * sc[:, None] / D[None, :]).T)
+            try:
+                dX = -np.linalg.solve(Jsym, R)
+            except np.linalg.LinAlgError:
+                dX = -R / np.maximum(np.abs(np.diag(Jsym)), 1e-300)
+            if not float(R @ dX) < 0.0:
+                dX = -R / np.maximum(np.abs(np.diag(Jsym)), 1e-300)
+            rel_step = dX[:pb.nb].reshape(-1, 5).copy()
+            for k, (loc, gl, _) in enumerate(pb.outer):
+                rel_step[k, loc] -= dX[gl]
+            size = max(np.abs(rel_step[:, :3]).max(), np.abs(rel_step[:, 3:]).max() * Rmax)
+            g = float(R @ dX)
         if size > dlim:
             dX *= dlim / size
+            g *= dlim / size
+        # Armijo on the total potential (the residual is its gradient; bearing energies
+        # with K_n at each ball's angle), which falls through a clearance gap where the
+        # residual stays flat and rises on an overshoot into a contact; or on the scaled
+        # residual norm, which the potential's round-off cannot judge near the solution.
+        p0 = pb.potential
         m0 = float(np.sum((R / sc) ** 2))
         t = 1.0
-        for _ in range(30):
+        for _ in range(40):
             Xn = X + t * dX
             Rn, Jn, Rsn, _, _ = pb.evaluate(Xn, lam)
-            mn = float(np.sum((Rn / sc) ** 2))
-            if mn <= (1 - 1e-4 * t) * m0 or err < 1e-6 and mn < m0:
+            if pb.potential <= p0 + 1e-4 * t * g or \
+                    float(np.sum((Rn / sc) ** 2)) <= (1 - 1e-4 * t) * m0:
                 break
             t *= 0.5
-        else:
-            Xn, Rn, Jn, Rsn = X + t * dX, Rn, Jn, Rsn
         en = error(Rn, Rsn)
         if en > 0.5 * err and err < 1e3 * rtol:
             # no more progress near the tolerance: the round-off floor of the sums
@@ -1428,7 +1461,7 @@ def life(result: ShaftResult, *, rotating: str = "inner", dynamic_rating=None,
     rows, ratings, seat, cat = [], [], [], []
     for k, s in enumerate(result.seats):
         # the ball loads of the seat's rows (as in result.bearings, without building them)
-        lds = [_Balls(_ring_forces(b, c, ul[None], balls=True)[3][0])
+        lds = [_Balls(_ring_forces(b, c, ul[None], balls=True)[4][0])
                for kk, b, c, ul in result._rows if kk == k]
         rr = [reference_rating_life(s.ball_bearing, ld_, dynamic_rating=C[k],
                                     rotating=rotating, nominal_contact_angle=alpha[k])
