@@ -1122,7 +1122,7 @@ def solve(shaft: Shaft, seats, loads=(), *, gravity=None, shaft_temperature_chan
         Equilibrium tolerance: largest residual force (moments over the largest bearing
         pitch radius) relative to the largest applied or reaction load [-].
     max_iter : int
-        Newton iterations per load step.
+        Newton iterations per load step (and 10 max_iter over all load steps).
     initial : ShaftResult, optional
         A solution of the same shaft and seats to start from (a neighbouring load case
         of a sweep or duty cycle); ignored if it does not fit.
@@ -1231,7 +1231,12 @@ def _newton(pb, rtol, max_iter, X0=None):
         X = np.zeros(pb.N)
         ok = True
         for lam in fracs:
-            X, it, err, ok = _newton_step(pb, X, lam, sc, rtol, max_iter)
+            # an overall budget of 10 max_iter keeps a hopeless case from running long
+            budget = min(max_iter, 10 * max_iter - total)
+            if budget <= 0:
+                ok = False
+                break
+            X, it, err, ok = _newton_step(pb, X, lam, sc, rtol, budget)
             total += it
             last_err = err
             if not ok:
