@@ -662,3 +662,12 @@ def test_case_file_duty_cycle():
                      nominal_contact_angle=0.0, gravity=(0, -S.STANDARD_GRAVITY, 0))
     np.testing.assert_allclose(r["duty"]["seat_hours"], d.seat_hours, rtol=1e-9)
     assert r["duty"]["system_hours"] == pytest.approx(d.system_hours, rel=1e-9)
+
+
+def test_convergence_error_reports_residual_and_iterations():
+    """A solve cut short (max_iter=1) raises ConvergenceError naming the residual and the
+    iteration count, instead of returning an unbalanced result."""
+    s = S.Shaft([(0.26, 45e-3, 0.0)], STEEL)
+    with pytest.raises(ld.ConvergenceError, match=r"relative residual .* after \d+ Newton"):
+        S.solve(s, [S.Seat(0.03, DG), S.Seat(0.23, DG)], [S.PointLoad(0.09, Fy=5000.0)],
+                max_iter=1)
