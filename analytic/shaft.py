@@ -1093,8 +1093,10 @@ def solve(shaft: Shaft, seats, loads=(), *, gravity=None, shaft_temperature_chan
     each row mapped to its own frame; see the module notes), by Newton's method with the
     analytic bearing tangent stiffness, a Levenberg floor for unloaded directions
     (clearance), a trust radius of a quarter of the groove-centre distance A on every
-    bearing's relative displacement, a backtracking line search on the scaled residual
-    norm, and load stepping (quarters of the load, then finer) when the full load fails.
+    bearing's relative displacement, a backtracking (Armijo) line search on the total
+    potential -- beam, loads, springs and the bearings' contact energies, whose gradient
+    is the residual -- or on the scaled residual norm, and load stepping (quarters of the
+    load, then finer) when the full load fails.
 
     Parameters
     ----------
