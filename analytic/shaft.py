@@ -1257,11 +1257,14 @@ def _newton_step(pb, X, lam, sc, rtol, max_iter):
     """Newton iterations at load factor lam from X; returns (X, its, err, converged)."""
     dlim = 0.25 * pb.A_ref
     R, J, Rs, _, _ = pb.evaluate(X, lam)
-    # scale of the applied loads: point loads and weight (the thermal strain's nodal forces
-    # are self-equilibrated and would only loosen the tolerance)
+    # scale of the applied loads: point loads, weight and the thermal strain's nodal
+    # forces (self-equilibrated, but the residual's round-off scales with them; without
+    # them a shaft free in its end play, loaded by nothing else, has no scale at all)
     s5 = sc[:5]
+    scf = np.ones(pb.n)
+    scf[3::5] = scf[4::5] = s5[3]
     ext = lam * max([np.abs(p.vector / s5).max() for p in pb.loads]
-                    + [np.abs(pb.weight[:3]).max()])
+                    + [np.abs(pb.f_base / scf).max()])
 
     def error(R, Rs):
         scale = max(ext, np.abs(Rs / sc[:5]).max(), pb.fmax.max(), 1e-300)

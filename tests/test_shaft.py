@@ -671,3 +671,17 @@ def test_convergence_error_reports_residual_and_iterations():
     with pytest.raises(ld.ConvergenceError, match=r"relative residual .* after \d+ Newton"):
         S.solve(s, [S.Seat(0.03, DG), S.Seat(0.23, DG)], [S.PointLoad(0.09, Fy=5000.0)],
                 max_iter=1)
+
+
+def test_shaft_free_in_its_end_play():
+    """Past lift-off (shaft warmer by more than 2 offset/(alpha L)) an O pair has a gap:
+    with no other load the equilibrium has no force at all, and the solver finds it (it
+    must not stall on a flat residual or lose its scale)."""
+    s = S.Shaft([(0.2, 40e-3, 0.0)], STEEL, thermal_expansion=11.5e-6)
+    seats = [S.Seat(0.02, AC, 1, offset=8e-6), S.Seat(0.18, AC, -1, offset=8e-6)]
+    for dT in (9.0, 16.0):
+        r = S.solve(s, seats, [], shaft_temperature_change=dT)
+        assert np.abs(r.reactions).max() < 1e-6
+        # no force: the seats move apart by the free thermal growth alpha dT L
+        grow = r.ring_displacements[1, 0] - r.ring_displacements[0, 0]
+        assert grow == pytest.approx(11.5e-6 * dT * 0.16, rel=1e-6)
