@@ -685,3 +685,16 @@ def test_shaft_free_in_its_end_play():
         # no force: the seats move apart by the free thermal growth alpha dT L
         grow = r.ring_displacements[1, 0] - r.ring_displacements[0, 0]
         assert grow == pytest.approx(11.5e-6 * dT * 0.16, rel=1e-6)
+
+
+def test_ring_forces_are_loaddist_at_imposed_displacements():
+    """The shaft's bearing kernel gives loaddist.solve's loads and tangent stiffness with
+    every DOF imposed (1e-12), for a deep-groove bearing with clearance and an
+    angular-contact bearing under a general displacement."""
+    for brg, u in ((DG, [3e-6, 2e-5, -7e-6, 1e-4, -2e-4]),
+                   (AC, [2e-5, 1e-5, 4e-6, -1e-4, 3e-4])):
+        F, K, _, _ = S._ring_forces(brg, None, np.array([u]))
+        ref = ld.solve(brg, displacements=u)
+        np.testing.assert_allclose(F[0], ref.loads, rtol=1e-12, atol=1e-12 * np.abs(F).max())
+        np.testing.assert_allclose(K[0], ref.stiffness, rtol=1e-12,
+                                   atol=1e-12 * np.abs(K).max())
