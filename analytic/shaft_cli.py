@@ -38,6 +38,7 @@ shaft and seats on top of each other are one-line errors naming the key)::
     floating = false                    # outer ring axially free (non-locating)
     # offset = "5 um"; spring_preload = "200 N"; clearance = "5 um"; row_spacing = "0 mm"
     # housing_stiffness = { axial = "1e9 N/m", radial = "5e8 N/m", tilt = "1e6 N*m/rad" }
+    #   (a key left out is rigid: 1000 times the stiffest one given)
 
     [[load]]                            # point load in the shaft frame
     position = "90 mm"
