@@ -40,6 +40,13 @@ shaft and seats on top of each other are one-line errors naming the key)::
     # housing_stiffness = { axial = "1e9 N/m", radial = "5e8 N/m", tilt = "1e6 N*m/rad" }
     #   (a key left out is rigid: 1000 times the stiffest one given)
 
+    [seat.fits]                         # optional, for the [[seat]] above: its operating
+    bore = "40 mm"                      # clearance from the fits and ring temperatures
+    outside_diameter = "80 mm"          # (ballrace.analytic.clearance)
+    shaft_interference = "12 um"
+    inner_temperature = "60 degC"
+    outer_temperature = "45 degC"
+
     [[load]]                            # point load in the shaft frame
     position = "90 mm"
     Fy = "5 kN"                         # also Fa, Fz, My, Mz ("N*m")
@@ -127,6 +134,18 @@ def _models():
         radial: str = "inf N/m"
         tilt: str = "inf N*m/rad"
 
+    class FitsSpec(_Strict):
+        bore: str
+        outside_diameter: str
+        shaft_interference: str = "0 m"
+        housing_interference: str = "0 m"
+        housing_diameter: str = "inf m"
+        inner_temperature: str = "20 degC"
+        outer_temperature: str = "20 degC"
+        reference_temperature: str = "20 degC"
+        shaft_expansion: Optional[str] = None
+        housing_expansion: Optional[str] = None
+
     class SeatSpec(_Strict):
         name: str = ""
         position: str
@@ -138,6 +157,7 @@ def _models():
         clearance: Optional[str] = None
         row_spacing: Optional[str] = None
         housing_stiffness: Optional[HousingSpec] = None
+        fits: Optional[FitsSpec] = None
 
     class LoadSpec(_Strict):
         name: str = ""
@@ -330,6 +350,15 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
             v = q(getattr(s, key), dim, f"{where}.{key}")
             if v is not None:
                 kw[key] = v
+        if s.fits is not None:
+            if "clearance" in kw:
+                raise err(f"{where}.fits", "give clearance or fits, not both")
+            if isinstance(brg, DuplexPair):
+                raise err(f"{where}.fits", "the operating clearance is for a single bearing; "
+                          "a pair keeps its preload")
+            kw["clearance"] = _fits(s.fits, brg, shaft, position(s.position,
+                                                                 f"{where}.position"),
+                                    q, source, where)
         if s.housing_stiffness is not None:
             h = s.housing_stiffness
             ka = q(h.axial, "[force] / [length]", f"{where}.housing_stiffness.axial")
@@ -409,6 +438,33 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
                      nominal_angles=tuple(alpha_n), solve_options=opts)
 
 
+def _fits(f, brg, shaft, x, q, source, where):
+    """OperatingClearance of a seat from its fits and ring temperatures (clearance module;
+    the shaft's bore at the seat and its material)."""
+    from ballrace.analytic import clearance as _cl
+    from ballrace.analytic.casefile import CaseFileError, _temperature, parse_inf
+
+    w = f"{where}.fits"
+    T = {k: _temperature(getattr(f, k), f"{source}: {w}.{k}")
+         for k in ("inner_temperature", "outer_temperature", "reference_temperature")}
+    exp = {k: q(getattr(f, k), "1 / [temperature]", f"{w}.{k}")
+           for k in ("shaft_expansion", "housing_expansion")}
+    if exp["shaft_expansion"] is None and shaft.thermal_expansion > 0:
+        exp["shaft_expansion"] = shaft.thermal_expansion
+    try:
+        return _cl.operating_clearance(
+            brg, bore=q(f.bore, "[length]", f"{w}.bore"),
+            outside_diameter=q(f.outside_diameter, "[length]", f"{w}.outside_diameter"),
+            shaft_interference=q(f.shaft_interference, "[length]", f"{w}.shaft_interference"),
+            housing_interference=q(f.housing_interference, "[length]",
+                                   f"{w}.housing_interference"),
+            shaft_bore=float(shaft.diameters(x)[1]), shaft_material=shaft.material,
+            housing_diameter=parse_inf(q, f.housing_diameter, f"{w}.housing_diameter"),
+            **T, **exp)
+    except ValueError as exc:
+        raise CaseFileError(f"{source}: {w}: {exc}") from None
+
+
 def _delta_T(text, source, where) -> float:
     """A temperature difference [K] from "10 K", "10 delta_degC" (not "10 degC")."""
     from ballrace.analytic.casefile import CaseFileError
@@ -469,6 +525,8 @@ def analyze(case: ShaftCase) -> dict:
                  bearing=("pair " + s.bearing.arrangement) if isinstance(s.bearing, DuplexPair)
                  else "single",
                  direction=s.direction, floating=s.floating,
+                 clearance=(s.ball_bearing.diametral_clearance if s.clearance is None
+                            else s.clearance),
                  reaction=[float(v) for v in R], radial_load=float(np.hypot(R[1], R[2])),
                  max_ball_load=float(Q.max()), max_pressure=pmax,
                  contact_angle_min=float(beta.min()), contact_angle_max=float(beta.max()),

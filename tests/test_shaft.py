@@ -455,6 +455,15 @@ def _cli():
 EXAMPLES = __import__("pathlib").Path(__file__).resolve().parents[1] / "examples"
 
 
+def _gearbox_clearance(brg, mat):
+    """Seat A of examples/shaft_gearbox.toml: 10 um fit on a solid shaft of ``mat``, inner
+    ring at 60 degC, outer at 50 degC (clearance module)."""
+    from ballrace.analytic.clearance import operating_clearance
+    return operating_clearance(brg, bore=0.04, outside_diameter=0.08,
+                               shaft_interference=10e-6, inner_temperature=333.15,
+                               outer_temperature=323.15, shaft_material=mat)
+
+
 def test_gearbox_example_against_direct_solve_and_statics(tmp_path):
     """``ballrace shaft examples/shaft_gearbox.toml --json``: the reactions are those of a
     direct solve with the same inputs (1e-9), the gear's axial force F_t tan(15 deg) =
@@ -470,7 +479,8 @@ def test_gearbox_example_against_direct_solve_and_statics(tmp_path):
     brg = ballrace.BallBearing(12.7e-3, 9, 60e-3, 0.52, 0.525, diametral_clearance=15e-6)
     mat = ballrace.Material(E=210e9, nu=0.3, density=7850.0)
     s = S.Shaft([(0.03, 0.04, 0.0), (0.2, 0.048, 0.0), (0.03, 0.04, 0.0)], mat)
-    seats = [S.Seat(0.015, brg), S.Seat(0.245, brg, floating=True)]
+    seats = [S.Seat(0.015, brg, clearance=_gearbox_clearance(brg, mat)),
+             S.Seat(0.245, brg, floating=True)]
     gear = S.gear_mesh(0.09, 5000.0, 0.12, pressure_angle=np.radians(20),
                        helix_angle=np.radians(15), mesh_azimuth=np.radians(90))
     d = S.solve(s, seats, [gear], gravity=(0, -S.STANDARD_GRAVITY, 0))
@@ -480,6 +490,8 @@ def test_gearbox_example_against_direct_solve_and_statics(tmp_path):
     assert abs(got[1, 0]) < 1e-8 * 5000
     assert np.abs(r["shaft"]["equilibrium_residual"]).max() < 1e-8 * 5000
     assert r["life"]["system"] < min(x["L10r"] for x in r["seats"])
+    assert r["seats"][0]["clearance"] == pytest.approx(seats[0].clearance, rel=1e-12)
+    assert r["seats"][0]["clearance"] < 15e-6              # fit and warm inner ring
 
 
 def test_spindle_example_runs_and_keeps_the_preload():
@@ -530,6 +542,8 @@ Fy = "1 kN"
     (dict(extra="[operation]\nspede = \"1 rpm\""), r"\[operation\]\.spede"),
     (dict(extra="[[gear]]\nposition = \"100 mm\"\ntangential_force = \"1 kN\"\n"
                 "pitch_diameter = \"10 kg\""), r"\[\[gear\]\]\[0\]\.pitch_diameter"),
+    (dict(extra="[seat.fits]\nbore = \"30 mm\"\noutside_diameter = \"40 mm\""),
+     r"\[\[seat\]\]\[1\]\.fits: outside_diameter must exceed"),
 ])
 def test_case_file_errors_are_one_line_naming_the_key(tmp_path, kw, match):
     runner, app = _cli()
@@ -652,7 +666,8 @@ def test_case_file_duty_cycle():
     brg = ballrace.BallBearing(12.7e-3, 9, 60e-3, 0.52, 0.525, diametral_clearance=15e-6)
     mat = ballrace.Material(E=210e9, nu=0.3, density=7850.0)
     s = S.Shaft([(0.03, 0.04, 0.0), (0.2, 0.048, 0.0), (0.03, 0.04, 0.0)], mat)
-    seats = [S.Seat(0.015, brg), S.Seat(0.245, brg, floating=True)]
+    seats = [S.Seat(0.015, brg, clearance=_gearbox_clearance(brg, mat)),
+             S.Seat(0.245, brg, floating=True)]
 
     def gear(f):
         return [S.gear_mesh(0.09, 5000.0 * f, 0.12, helix_angle=np.radians(15),
