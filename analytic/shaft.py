@@ -1568,7 +1568,13 @@ def duty_cycle(shaft: Shaft, seats, cases, *, rotating: str = "inner", dynamic_r
     cases = list(cases)
     if not cases:
         raise ValueError("cases must hold at least one (loads, fraction, speed_rpm)")
-    res, hours, fr = [], [], []
+    from .iso16281 import reference_rating_life
+    from .life import BALL_WEIBULL_SLOPE
+
+    check_choice(rotating, "rotating", ("inner", "outer"))
+    e = BALL_WEIBULL_SLOPE if weibull_slope is None else float(
+        check_positive(weibull_slope, "weibull_slope", "-"))
+    res, speeds, fr = [], [], []
     prev = None
     for i, c in enumerate(cases):
         try:
@@ -1576,17 +1582,31 @@ def duty_cycle(shaft: Shaft, seats, cases, *, rotating: str = "inner", dynamic_r
         except (TypeError, ValueError):
             raise ValueError(f"cases[{i}] must be (loads, fraction, speed_rpm); got {c!r}") \
                 from None
-        n = float(check_positive(n, f"cases[{i}] speed_rpm", "rev/min"))
+        speeds.append(float(check_positive(n, f"cases[{i}] speed_rpm", "rev/min")))
         r = solve(shaft, seats, loads, initial=prev, **solve_kwargs)
-        lf = life(r, rotating=rotating, dynamic_rating=dynamic_rating,
-                  nominal_contact_angle=nominal_contact_angle, modified=modified,
-                  weibull_slope=weibull_slope)
-        hours.append(lf.hours(n)[0])
         fr.append(float(t))
         res.append(r)
         prev = r
-        e = lf.weibull_slope
-    H = np.array(hours)
+    # the lives of every row over all cases at once (the same rules as life())
+    ns = len(res[0].seats)
+    C = dynamic_rating if dynamic_rating is None or np.ndim(dynamic_rating) == 0 \
+        else list(dynamic_rating)
+    A = nominal_contact_angle if nominal_contact_angle is None or \
+        np.ndim(nominal_contact_angle) == 0 else list(nominal_contact_angle)
+    seat_L = np.zeros((len(res), ns))
+    for i, (k, b, c, _) in enumerate(res[0]._rows):
+        U = np.array([r._rows[i][3] for r in res])
+        Q = _ring_forces(b, c, U, balls=True)[4]
+        rr = reference_rating_life(res[0].seats[k].ball_bearing, _Balls(Q),
+                                   dynamic_rating=C[k] if isinstance(C, list) else C,
+                                   rotating=rotating,
+                                   nominal_contact_angle=A[k] if isinstance(A, list) else A)
+        L = np.asarray(rr.modified(**modified) if modified else rr.L10r, float)
+        with np.errstate(divide="ignore"):
+            seat_L[:, k] += np.where(np.isinf(L), 0.0, L ** -e)
+    with np.errstate(divide="ignore"):
+        Lk = np.where(seat_L > 0, seat_L ** (-1.0 / e), np.inf)      # per case and seat
+    H = Lk * 1e6 / (60.0 * np.array(speeds)[:, None])
     t = np.array(fr)
     seat_h = np.array([miner(H[:, k], t) for k in range(H.shape[1])])
     return DutyCycleLife(seat_hours=seat_h, system_hours=float(system_life(seat_h, e)),
