@@ -6,6 +6,7 @@ heavy dependencies only when a command runs:
 
 * ``contact``  — this module;
 * ``bearing``  — :mod:`ballrace.analytic.cli` (when present);
+* ``shaft``    — :mod:`ballrace.analytic.shaft_cli`;
 * ``fem``      — :mod:`ballrace.fem.cli`;
 * ``validate``, ``teach`` — :mod:`ballrace.validation.cli`.
 
@@ -64,7 +65,8 @@ app = typer.Typer(cls=_Group, add_completion=False, no_args_is_help=True,
                   help="ballrace: Hertz contact and ball-bearing calculations (SI inside; "
                        "tables in engineering units, --units to choose; --json in SI).")
 
-_SUBMODULES = ("ballrace.analytic.cli", "ballrace.fem.cli", "ballrace.validation.cli")
+_SUBMODULES = ("ballrace.analytic.cli", "ballrace.analytic.shaft_cli", "ballrace.fem.cli",
+               "ballrace.validation.cli")
 
 #: Values of the ``--units`` option of the table-printing commands.
 UNIT_SYSTEMS = ("eng", "si", "us")

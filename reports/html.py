@@ -32,6 +32,7 @@ AREA_TITLES = {
     "ehl": "Elastohydrodynamic film",
     "kinematics": "Kinematics and defect frequencies",
     "highspeed": "High speed: centrifugal force, gyroscopic moment, Jones equilibrium",
+    "shaft": "Shafts on their bearings",
     "fem": "Finite-element checks",
 }
 

@@ -212,9 +212,8 @@ def test_fe_check():
     assert k["passed"] is True
 
 
-
 def test_iso_life_and_operating_clearance():
-    k = run(checks("plot_15_iso_life_and_operating_clearance.py"))
+    k = run(checks("plot_17_iso_life_and_operating_clearance.py"))
     # Lamé with a solid shaft of the ring's steel and no temperature change reduces to
     # the textbook rule: the inner raceway grows by I d/F (Harris 2001 §4.3), exactly.
     assert k["fit_check"] < 1e-15
@@ -229,3 +228,29 @@ def test_iso_life_and_operating_clearance():
     j = int(np.argmax(k["L10r"]))
     assert -20e-6 < k["operating"][j] < 0
     assert np.all(np.diff(k["L10r"][:j + 1]) > 0) and np.all(np.diff(k["L10r"][j:]) < 0)
+
+
+def test_shaft_gearbox():
+    # Statics of a shaft (independent of the solver): the seats carry the gear's forces,
+    # sum R = F, and its moment about seat A, (x_g - x_A) F_y = (x_B - x_A) R_By + Mz_A
+    # + Mz_B (moments the seats carry), the locating seat takes F_t tan(15 deg); 1e-9.
+    import numpy as np
+
+    k = run(checks("plot_15_shaft_gearbox.py"))
+    R, F = np.asarray(k["reactions"]), np.asarray(k["gear"])
+    assert R[:, :3].sum(0) == pytest.approx(F[:3], abs=1e-9 * 5000)
+    xa, xb = k["x_seats"]
+    lhs = (k["x_gear"] - xa) * F[1] + F[4]
+    rhs = (xb - xa) * R[1, 1] + R[0, 4] + R[1, 4]
+    assert lhs == pytest.approx(rhs, abs=1e-9 * 5000)
+    assert R[0, 0] == pytest.approx(5000 * np.tan(np.radians(15)), rel=1e-9)
+    assert abs(R[1, 0]) < 1e-9 * 5000
+
+
+def test_shaft_thermal_preload():
+    # An O pair with offset delta each on a shaft warmer by dT: the preload vanishes at
+    # alpha dT L / 2 = delta exactly (no force left, free shaft length); positive before.
+    k = run(checks("plot_16_shaft_thermal_preload.py"))
+    assert k["P0"] > 100.0
+    assert abs(k["P_star"]) < 1e-6 * k["P0"]
+    assert k["P_95"] > 0.0

@@ -44,6 +44,7 @@ CALC_MODULES = (
     "ballrace.validation.calc_life",
     "ballrace.validation.calc_ehl",
     "ballrace.validation.calc_kinematics",
+    "ballrace.validation.calc_shaft",
     "ballrace.validation.calc_fem",
 )
 
