@@ -151,62 +151,79 @@ def _kn_exact(model, beta):
 #: Required accuracy of the tabulated ln K_n(cos beta) against exact Hertz (absolute in
 #: ln K_n, i.e. relative in K_n), checked when the table is built.
 _TABLE_TOL = 1e-13
+#: Required accuracy of its derivative d ln K_n / d beta, relative to the largest value.
+_TABLE_DTOL = 5e-9
 
 
 def _kn_table(model):
-    """Chebyshev series of ln K_n in t = cos(beta) on [-1, 1], or None if not accurate.
+    """Chebyshev series of ln K_n in tau = 2 cos(beta) - 1 (beta in [0, 90] deg), or None.
 
     K_n depends on beta only through gamma = (D/d_e) cos(beta) (Ricci 2009 eqs. 8-11),
-    an analytic function of t, so a Chebyshev interpolant converges geometrically.  The
-    series is accepted only if it reproduces the exact Hertz value to ``_TABLE_TOL`` at
-    1001 check points and its derivative to 1e-9 relative; otherwise the exact
-    evaluation is used throughout.
+    an analytic function of t = cos(beta), so a Chebyshev interpolant converges
+    geometrically.  Only t in [0, 1] is tabulated: a ball touches only where its
+    groove-centre line points outwards (x > 0, |beta| < 90 deg); :func:`_kn` evaluates
+    the exact solution for the rare t < 0.  The series is accepted only if it reproduces
+    the exact Hertz value to ``_TABLE_TOL`` at 1001 check points and its derivative to
+    ``_TABLE_DTOL`` relative (it enters only the Jacobian); otherwise the exact evaluation is used throughout.  Returns an
+    (n, 2) array: the coefficients of ln K_n and of its tau-derivative.
     """
     C = np.polynomial.chebyshev
-    t_chk = np.cos(np.linspace(0.0, np.pi, 1001))
-    b_chk = np.arccos(t_chk)
+    b_chk = np.linspace(0.0, 0.5 * np.pi, 1001)
+    tau_chk = 2.0 * np.cos(b_chk) - 1.0
     Kx, dx = _kn_exact(model, b_chk)
-    for deg in (24, 40, 64, 96):
-        c = C.chebinterpolate(lambda t: np.log(_kn_exact(model, np.arccos(np.clip(t, -1, 1)))[0]),
-                              deg)
-        err = np.max(np.abs(C.chebval(t_chk, c) - np.log(Kx)))
-        kc = np.arange(c.size) * c
-        d = -(np.sin(b_chk[:, None] * np.arange(c.size)) @ kc)
+    for deg in (10, 12, 14, 16, 20, 24):       # rounding noise grows with the degree
+        c = C.chebinterpolate(
+            lambda x: np.log(_kn_exact(model, np.arccos(np.clip(0.5 * (x + 1.0), 0, 1)))[0]),
+            deg)
+        err = np.max(np.abs(C.chebval(tau_chk, c) - np.log(Kx)))
+        cd = np.append(C.chebder(c), 0.0)
+        d = -2.0 * np.sin(b_chk) * C.chebval(tau_chk, cd)
         derr = np.max(np.abs(d - dx)) / max(np.max(np.abs(dx)), 1e-300)
-        if err <= _TABLE_TOL and derr <= 1e-9:
+        if err <= _TABLE_TOL and derr <= _TABLE_DTOL:
             log.debug("K_n table: degree %d, max error %.2e (ln K_n), %.2e (derivative)",
                       deg, err, derr)
-            return c, kc, kc[1:].copy()
-    log.info("K_n table not accurate enough (%.2e); using exact Hertz at every step", err)
+            return np.ascontiguousarray(np.stack([c, cd], axis=1))
+    log.info("K_n table not accurate enough (%.2e, %.2e); using exact Hertz at every step",
+             err, derr)
     return None
 
 
-def _kn(model, beta):
+def _kn(model, beta, c=None, sn=None):
     """Ball stiffness K_n(beta) [N/m^1.5] and d ln K_n / d beta [1/rad] (arrays).
 
-    With the table, ln K_n = sum c_k T_k(cos beta) = sum c_k cos(k beta): a cosine series
-    (one matrix product) for small arrays, Clenshaw's recurrence in cos(beta) for large
-    ones; the derivative is -sin(beta) sum k c_k U_{k-1}(cos beta), term by term.
+    With the table, ln K_n = sum a_k T_k(tau), tau = 2 cos(beta) - 1: T_k(tau) =
+    cos(k theta), theta = arccos(tau), as one matrix product for small arrays, Clenshaw's
+    recurrence for large ones; d ln K_n / d beta = -2 sin(beta) d ln K_n / d tau from the
+    derivative series.  ``c``, ``sn``: cos(beta), sin(beta) when known.  Exact Hertz where
+    cos(beta) < 0 (beyond the table; such balls are unloaded in the solver).
     """
     if model.table is None:
         return _kn_exact(model, beta)
-    c, kc, cu = model.table
-    n = c.size
-    if beta.size * n <= 4096:
-        arg = beta[..., None] * np.arange(n)
-        return np.exp(np.cos(arg) @ c), -(np.sin(arg) @ kc)
-    t = np.cos(beta)
-    t2 = 2.0 * t
-    b1 = np.zeros_like(t)                  # Clenshaw for sum c_k T_k(t)
-    b2 = np.zeros_like(t)
-    for ck in c[:0:-1]:
-        b1, b2 = t2 * b1 - b2 + ck, b1
-    lnK = t * b1 - b2 + c[0]
-    b1 = np.zeros_like(t)                  # Clenshaw for sum cu_k U_k(t), cu_k = (k+1) c_{k+1}
-    b2 = np.zeros_like(t)
-    for ck in cu[::-1]:
-        b1, b2 = t2 * b1 - b2 + ck, b1
-    return np.exp(lnK), -np.sin(beta) * b1
+    if c is None:
+        c, sn = np.cos(beta), np.sin(beta)
+    tab = model.table
+    n = tab.shape[0]
+    tau = 2.0 * c - 1.0
+    if tau.size * n <= 4096:
+        th = np.arccos(np.maximum(tau, -1.0))
+        v = np.cos(th[..., None] * np.arange(n)) @ tab
+        lnK, dtau = v[..., 0], v[..., 1]
+    else:
+        tau = np.maximum(tau, -1.0)
+        t2 = 2.0 * tau
+        out = []
+        for col in (tab[:, 0], tab[:, 1]):             # Clenshaw for sum a_k T_k(tau)
+            b1 = np.zeros_like(tau)
+            b2 = np.zeros_like(tau)
+            for ck in col[:0:-1]:
+                b1, b2 = t2 * b1 - b2 + ck, b1
+            out.append(tau * b1 - b2 + col[0])
+        lnK, dtau = out
+    Kn, d = np.exp(lnK), -2.0 * sn * dtau
+    if not c.min(initial=0.0) >= 0.0:
+        neg = c < 0
+        Kn[neg], d[neg] = _kn_exact(model, np.asarray(beta)[neg])
+    return Kn, d
 
 
 def ball_stiffness(bearing: BallBearing, contact_angle):
