@@ -52,12 +52,14 @@ from __future__ import annotations
 
 import functools
 import logging
+import math
+import weakref
 from dataclasses import dataclass, field, replace
 
 import numpy as np
 
 from . import hertz
-from ._checks import (as_array, broadcast, check_choice, check_integer, check_nonnegative,
+from ._checks import (MAX_MAGNITUDE, as_array, broadcast, check_choice, check_integer, check_nonnegative,
                       check_positive, check_range)
 from .bearing import BallBearing
 
@@ -289,8 +291,24 @@ class _Model:
     capacity: float = np.inf
 
     @staticmethod
-    @functools.lru_cache(maxsize=64)
     def of(b: BallBearing) -> "_Model":
+        """The model of bearing ``b``: looked up by identity (a dict and a weak reference,
+        about 0.3 us), else by value (hashing the frozen bearing, some us), else built."""
+        hit = _MODELS.get(id(b))
+        if hit is not None and hit[0]() is b:
+            return hit[1]
+        m = _Model._of(b)
+        key = id(b)
+
+        def forget(ref, key=key):
+            if _MODELS.get(key, (None,))[0] is ref:
+                del _MODELS[key]
+        _MODELS[key] = (weakref.ref(b, forget), m)
+        return m
+
+    @staticmethod
+    @functools.lru_cache(maxsize=64)
+    def _of(b: BallBearing) -> "_Model":
         if b.n_rows != 1:
             raise NotImplementedError(
                 f"load distribution is implemented for single-row bearings (n_rows=1); "
@@ -305,6 +323,10 @@ class _Model:
         Kmax = 1.01 * float(np.max(_kn_exact(m, np.linspace(0.0, np.pi, 181))[0]))
         cap = m.Z * Kmax * (MAX_APPROACH_RATIO * D) ** 1.5
         return replace(m, table=_kn_table(m), Kn_free=Kf, capacity=cap)
+
+
+#: id(bearing) -> (weak reference to it, its _Model): see _Model.of
+_MODELS: dict = {}
 
 
 def _reference(model: _Model, clearance, centered: bool):
@@ -322,7 +344,7 @@ def _reference(model: _Model, clearance, centered: bool):
 class _Geo:
     """Per-solve constants: ball azimuths and the kinematic vectors dx_j/du, dz_j/du."""
 
-    __slots__ = ("psi", "cp", "sp", "gx", "gz", "G", "x0", "z0", "A", "g0")
+    __slots__ = ("psi", "cp", "sp", "gx", "gz", "G", "G2", "kk", "x0", "z0", "A", "g0")
 
     def __init__(self, model, psi, x0, z0):
         Z = psi.size
@@ -333,6 +355,10 @@ class _Geo:
         gz[:, 0], gz[:, 3], gz[:, 4] = 1.0, model.Ri * self.sp, -model.Ri * self.cp
         self.gx, self.gz = gx, gz
         self.G = np.stack([gx, gz], axis=1)                  # (Z, 2, 5)
+        self.G2 = np.concatenate([gx, gz])                   # (2Z, 5): (dx; dz) = G2 u
+        kk = np.zeros((Z, 5))                                # d(contact-arm vector)/d r
+        kk[:, 3], kk[:, 4] = self.sp, -self.cp
+        self.kk = kk
         self.x0, self.z0, self.A = x0, z0, model.A
         # x0^2 + z0^2 - A^2 without cancellation: 0 for the touching reference,
         # (x0 - A)(x0 + A) = -(P_d/2)(x0 + A) for the centred one
@@ -357,6 +383,9 @@ class _State:
     __slots__ = ("s", "beta", "c", "sn", "delta", "Kn", "dlnK", "Q", "F", "J")
 
     def __init__(self, model, geo, u, arm, jac=True, Kn=None):
+        if u.shape[0] == 1 and jac and Kn is None:
+            self._one(model, geo, u[0], arm)
+            return
         x, z, s, delta = geo.xz(u)
         s = np.maximum(s, 1e-300)
         c, sn = x / s, z / s
@@ -378,6 +407,55 @@ class _State:
         self.s, self.beta, self.c, self.sn = s, beta, c, sn
         self.delta, self.Kn, self.dlnK, self.Q, self.F = delta, Kn, dlnK, Q, F
         self.J = _jacobian(model, geo, self, arm) if jac else None
+
+    def _one(self, model, geo, u, arm):
+        """One load case (u of shape (5,)): the same quantities with fewer array operations.
+
+        With e = (cos b, sin b), t = (-sin b, cos b) per ball and the kinematic rows
+        g_e = e G = d(approach)/du, g_t = t G (G = (dx/du; dz/du)), dQ/du = k15 g_e +
+        qk g_t (k15 = 1.5 K_n delta^0.5, qk = Q (dlnK_n/dbeta)/s) and d e/du = t g_t / s:
+        F = sum Q h_e,  J = sum h_e (x) dQ/du + (Q/s) h_t (x) g_t [+ contact-arm term],
+        h_e = cos b g_x + sin b h, h_t = -sin b g_x + cos b h, h = g_z (groove arm) or
+        (1, 0, 0, r sin psi, -r cos psi), r = (d_e - D cos b)/2 (contact arm), whose
+        change with beta adds Q sin b (D/2) sin b / s (0,0,0, sin psi, -cos psi) (x) g_t.
+        """
+        Z = geo.cp.size
+        d = geo.G2 @ u
+        dx, dz = d[:Z], d[Z:]
+        x = dx + geo.x0
+        z = dz + geo.z0
+        s = np.hypot(x, z)
+        approach = (geo.g0 + dx * (2.0 * geo.x0 + dx) + dz * (2.0 * geo.z0 + dz)) / (s + geo.A)
+        s = np.maximum(s, 1e-300)
+        c, sn = x / s, z / s
+        beta = np.arctan2(z, x)
+        delta = np.maximum(approach, 0.0)
+        if not x.min() > 0:
+            delta[~(x > 0)] = 0.0
+        Kn, dlnK = _kn(model, beta, c, sn)
+        sq = np.sqrt(delta)
+        Q = Kn * delta * sq
+        cc, ss = c[:, None], sn[:, None]
+        ge = cc * geo.gx + ss * geo.gz
+        gt = cc * geo.gz - ss * geo.gx
+        qs = Q / s
+        V = (1.5 * Kn * sq)[:, None] * ge + (qs * dlnK)[:, None] * gt
+        if arm == "groove":
+            he, ht = ge, gt
+            F = Q @ he
+            J = he.T @ V + (qs[:, None] * ht).T @ gt
+        else:
+            r = 0.5 * (model.dm - model.D * c)
+            h = geo.kk * r[:, None]
+            h[:, 0] = 1.0
+            he = cc * geo.gx + ss * h
+            ht = cc * h - ss * geo.gx
+            F = Q @ he
+            w = qs * sn * sn * (0.5 * model.D)
+            J = he.T @ V + (qs[:, None] * ht + w[:, None] * geo.kk).T @ gt
+        self.s, self.beta, self.c, self.sn = s[None], beta[None], c[None], sn[None]
+        self.delta, self.Kn, self.dlnK, self.Q = delta[None], Kn[None], dlnK[None], Q[None]
+        self.F, self.J = F[None], J[None]
 
 
 def _jacobian(model, geo, st, arm):
@@ -435,6 +513,8 @@ _FLOOR_CAP = 1e-9
 #: Load-deflection range of the model: contact approach of a ball up to this fraction of D
 #: (some ten times the approach at the static-capacity stress of 4.2 GPa).
 MAX_APPROACH_RATIO = 0.1
+
+_EPS20 = 20.0 * float(np.finfo(float).eps)
 
 
 def _floor(rtol, dmax, umax):
@@ -643,6 +723,7 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
         Js.flat[::6] += np.where(fx, 1.0, mu)
         return Js, mu
 
+    cap = max(_FLOOR_CAP, 100.0 * rtol)
     u = u0[0].copy()
     st = _State(model, geo, u[None], arm)
     R, err, qmax = residual(st)
@@ -695,7 +776,8 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
                 unew = u + t * du
                 snew = _State(model, geo, unew[None], arm)
                 Rn, en, qn = residual(snew)
-        fl = float(_floor(rtol, float(snew.delta.max()), float(np.abs(unew * sc).max())))
+        dmx, umx = float(snew.delta.max()), float(np.abs(unew * sc).max())    # _floor
+        fl = min(max(100.0 * rtol, _EPS20 * umx / dmx), cap) if dmx > 0 else 0.0
         floor = fl >= en > 0.5 * err
         u, st, R, err, qmax = unew, snew, Rn, en, qn
         if err < best[0]:
@@ -920,7 +1002,16 @@ def _fold_unloaded(beta, Q):
     return np.where(unl & (beta <= -0.5 * np.pi), beta + np.pi, beta)
 
 
+def _plain(v) -> bool:
+    """A plain finite float (or moderate int, not bool) within the load bound 1e30."""
+    t = type(v)
+    return (t is float or t is np.float64 or (t is int and -(2**53) <= v <= 2**53)) and \
+        -MAX_MAGNITUDE <= v <= MAX_MAGNITUDE
+
+
 def _loads_array(Fa, Fy, Fz, My, Mz):
+    if _plain(Fa) and _plain(Fy) and _plain(Fz) and _plain(My) and _plain(Mz):
+        return np.array([Fa, Fy, Fz, My, Mz], dtype=float)    # what the checks would give
     arrs = [as_array(v, n, bounded=True, tiny_ok=True)
             for v, n in ((Fa, "Fa"), (Fy, "Fy"), (Fz, "Fz"), (My, "My"), (Mz, "Mz"))]
     b = np.broadcast_arrays(*arrs)
