@@ -48,8 +48,7 @@ import numpy as np
 
 from ._checks import as_array, check_choice, check_nonnegative, check_positive
 from .bearing import BallBearing
-from .loaddist import (MAX_APPROACH_RATIO, ConvergenceError, _fold_unloaded, _Model,
-                       ball_stiffness)
+from .loaddist import MAX_APPROACH_RATIO, ConvergenceError, _fold_unloaded, _kn, _Model
 
 __all__ = ["ARRANGEMENTS", "DuplexPair", "DuplexResult", "axial_load", "axial_deflection",
            "power_law_unloading_ratio"]
@@ -64,12 +63,25 @@ def _groove_centres(bearing, da, dr):
     """(A, psi, x, z): radial and axial components of each ball's line of groove centres [m]
     at ring displacements (da, dr), vectorized over their leading axes (Jones 1960;
     H&D 1981 eqs. 3.61-3.63)."""
-    A = bearing.curvature_center_distance
-    bf = bearing.free_contact_angle
-    psi = bearing.azimuths(0.0)
-    z = A * np.sin(bf) + np.asarray(da, float)[..., None]
-    x = A * np.cos(bf) + np.asarray(dr, float)[..., None] * np.cos(psi)
+    A, sf, cf, psi, cpsi = _constants(bearing)
+    z = A * sf + np.asarray(da, float)[..., None]
+    x = A * cf + np.asarray(dr, float)[..., None] * cpsi
     return A, psi, x, z
+
+
+def _constants(bearing):
+    """(A, sin beta_f, cos beta_f, psi, cos psi) of a bearing, cached with its model."""
+    m = _Model.of(bearing)
+    hit = _CONST.get(id(m))
+    if hit is None or hit[0] is not m:
+        if len(_CONST) > 256:                                # bounded: models come and go
+            _CONST.clear()
+        psi = 2.0 * np.pi * np.arange(m.Z) / m.Z            # bearing.azimuths(0.0)
+        hit = _CONST[id(m)] = (m, (m.A, np.sin(m.beta_f), np.cos(m.beta_f), psi, np.cos(psi)))
+    return hit[1]
+
+
+_CONST: dict = {}
 
 
 def _forces(bearing, da, dr):
@@ -81,7 +93,10 @@ def _forces(bearing, da, dr):
     A, psi, x, z = _groove_centres(bearing, da, dr)
     s = np.hypot(x, z)
     b = np.arctan2(z, x)
-    Kn, _ = ball_stiffness(bearing, b)
+    # K_n from the bearing model's table (exact Hertz to 1e-13, as in loaddist.solve)
+    model = _Model.of(bearing)
+    sb = np.maximum(s, 1e-300)
+    Kn, _ = _kn(model, b, x / sb, z / sb)
     # half-torus grooves: no contact where the groove-centre line points inwards (x <= 0);
     # unloaded balls report that line's angle folded into (-pi/2, pi/2] (as in loaddist)
     Q = np.where(x > 0, Kn * np.maximum(s - A, 0.0) ** 1.5, 0.0)
