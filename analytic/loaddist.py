@@ -52,7 +52,6 @@ from __future__ import annotations
 
 import functools
 import logging
-import math
 import weakref
 from dataclasses import dataclass, field, replace
 
