@@ -752,16 +752,23 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
         t = 1.0
         local = err < 1e-6
         if arm == "groove":
-            if not local:
+            unew = u + du
+            snew = _State(model, geo, unew[None], arm)      # the full step's state, which
+            if not local:                                   # also gives its potential
                 d = st.delta
                 phi0 = 0.4 * float((st.Kn * d * d * np.sqrt(d)).sum()) - float(F @ u)
-                for _ in range(60):
-                    ph = float(_potential(model, geo, (u + t * du)[None], st.Kn, F[None])[0])
-                    if ph <= phi0 + 1e-4 * t * g:
-                        break
-                    t *= 0.5
-            unew = u + t * du
-            snew = _State(model, geo, unew[None], arm)
+                d = snew.delta
+                ph = 0.4 * float((st.Kn * d * d * np.sqrt(d)).sum()) - float(F @ unew)
+                if not ph <= phi0 + 1e-4 * g:
+                    t = 0.5
+                    for _ in range(59):
+                        ph = float(_potential(model, geo, (u + t * du)[None], st.Kn,
+                                              F[None])[0])
+                        if ph <= phi0 + 1e-4 * t * g:
+                            break
+                        t *= 0.5
+                    unew = u + t * du
+                    snew = _State(model, geo, unew[None], arm)
             Rn, en, qn = residual(snew)
         else:
             m0 = float(R @ R)
@@ -1078,7 +1085,7 @@ def _result(bearing, model, psi, x0, z0, Pd, u, applied, imposed, arm, iters, sh
 def solve(bearing: BallBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *, displacements=None,
           clearance=None, azimuth_offset: float = 0.0, moment_arm: str = "groove",
           rtol: float = 1e-12, max_iter: int = 200, initial=None,
-          _centered: bool = False) -> LoadDistribution:
+          _centered: bool = False, _contact_direct: bool = False) -> LoadDistribution:
     r"""General five-degree-of-freedom static load distribution (rigid rings, exact Hertz).
 
     Solves, for the inner-ring displacement u = (dx, dy, dz, theta_y, theta_z), the
@@ -1199,16 +1206,41 @@ def solve(bearing: BallBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *, displ
     rtol = float(check_range(rtol, "rtol", 0.0, 1e-3, high_inclusive=True, unit="-"))
     geo = _Geo(model, psi, x0, z0)
     st = None
+    direct = moment_arm == "contact" and _contact_direct
     if L.shape[0] == 1:
         try:
-            u, iters, st = _newton_one(model, geo, L, u0, imposed, "groove", rtol, max_iter)
-            if moment_arm == "contact":
-                u, it2, st = _newton_one(model, geo, L, u, imposed, "contact", rtol, max_iter)
-                iters = iters + it2
+            st = None
+            if direct:                  # straight from a close start (eccentric_thrust)
+                try:
+                    u, iters, st = _newton_one(model, geo, L, u0, imposed, "contact", rtol,
+                                               max_iter)
+                except ConvergenceError:
+                    st = None
+            if st is None:
+                u, iters, st = _newton_one(model, geo, L, u0, imposed, "groove", rtol, max_iter)
+                if moment_arm == "contact":
+                    u, it2, st = _newton_one(model, geo, L, u, imposed, "contact", rtol,
+                                             max_iter)
+                    iters = iters + it2
         except ConvergenceError:
             u, iters = _retry(model, geo, L, u0, imposed, moment_arm, rtol, max_iter,
                               np.zeros(1, bool), u0.copy(), np.zeros(1, int))
             st = None
+    elif direct:                        # straight from a close start (eccentric_thrust)
+        u, iters, ok = _newton(model, geo, L, u0, imposed, "contact", rtol, max_iter,
+                               strict=False)
+        if not np.all(ok):
+            b = ~ok
+            ub, ib, okb = _newton(model, geo, L[b], u0[b], imposed[b], "groove", rtol,
+                                  max_iter, strict=False)
+            u2, it2, ok2 = _newton(model, geo, L[b][okb], ub[okb], imposed[b][okb], "contact",
+                                   rtol, max_iter, strict=False)
+            ub[okb], ib[okb] = u2, ib[okb] + it2
+            okb[okb] = ok2
+            u[b], iters[b], ok[b] = ub, iters[b] + ib, okb
+        if not np.all(ok):
+            u, iters = _retry(model, geo, L, u0, imposed, moment_arm, rtol, max_iter, ok, u,
+                              iters)
     else:
         u, iters, ok = _newton(model, geo, L, u0, imposed, "groove", rtol, max_iter,
                                strict=False)
@@ -1594,7 +1626,7 @@ def eccentric_thrust(bearing: BallBearing, Fa, e, *, rtol: float = 1e-12,
     u0[..., 0] = (model.A * np.sin(bt - model.beta_f) / np.cos(bt)).reshape(F.shape)
     d = np.array([np.nan, 0.0, 0.0, 0.0, np.nan])
     res = solve(bearing, Fa=F, Mz=-e_ * F, displacements=d, moment_arm="contact", rtol=rtol,
-                max_iter=max_iter, initial=u0)
+                max_iter=max_iter, initial=u0, _contact_direct=True)
     log.debug("eccentric thrust: converged in %d Newton iterations", res.iterations)
     return res
 
