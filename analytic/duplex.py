@@ -230,7 +230,11 @@ def _inverse(bearing, F, rtol=1e-13, max_iter=200):
     if F == 0.0:
         return 0.0
     A = bearing.curvature_center_distance
-    lo, hi = 0.0, 1e-4 * A
+    # upper end from the point-contact power law at the free angle, F = Z K_n
+    # sin(b_f) (da sin(b_f))^1.5 (no more than a guess: the angle grows with the load)
+    m = _Model.of(bearing)
+    sf = max(float(np.sin(m.beta_f)), 0.1)
+    lo, hi = 0.0, min(1.5 * (F / (m.Z * m.Kn_free * sf)) ** (2.0 / 3.0) / sf, A)
     f_hi, k_hi = _axial(bearing, hi)
     while f_hi < F:
         lo, hi = hi, 2.0 * hi
@@ -402,7 +406,7 @@ class DuplexPair:
             return _inverse(self.bearing, 0.5 * self.preload)
         return _inverse(self.bearing, self.preload)
 
-    @property
+    @functools.cached_property
     def unloading_load(self) -> float:
         r"""External axial load at which the pair unloads [N].
 
