@@ -52,6 +52,7 @@ from __future__ import annotations
 
 import functools
 import logging
+import math
 import weakref
 from dataclasses import dataclass, field, replace
 
@@ -285,9 +286,10 @@ class _Model:
     Z: int
     beta_f: float
     Pd: float
-    table: tuple | None = None
+    table: np.ndarray | None = None
     Kn_free: float = 0.0
     capacity: float = np.inf
+    geos: dict = field(default_factory=dict, repr=False, compare=False)  # _geo() cache
 
     @staticmethod
     def of(b: BallBearing) -> "_Model":
@@ -340,6 +342,20 @@ def _reference(model: _Model, clearance, centered: bool):
 
 
 # =========================================================================== kernel
+def _geo(model, bearing, azimuth_offset, x0, z0):
+    """The _Geo of a solve, cached on the model for plain finite float offsets."""
+    key = (azimuth_offset, x0, z0)
+    plain = type(azimuth_offset) is float and math.isfinite(azimuth_offset)
+    if plain:
+        g = model.geos.get(key)
+        if g is not None:
+            return g
+    g = _Geo(model, bearing.azimuths(azimuth_offset), x0, z0)
+    if plain and len(model.geos) < 64:
+        model.geos[key] = g
+    return g
+
+
 class _Geo:
     """Per-solve constants: ball azimuths and the kinematic vectors dx_j/du, dz_j/du."""
 
@@ -1171,7 +1187,10 @@ def solve(bearing: BallBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *, displ
     model = _Model.of(bearing)
     L = _loads_array(Fa, Fy, Fz, My, Mz)
     if displacements is None:
-        D = np.full(L.shape, np.nan)
+        shape = L.shape[:-1]
+        L = L.reshape(-1, 5)
+        D = None
+        imposed = np.zeros(L.shape, dtype=bool)
     else:
         D = np.asarray(displacements, dtype=float)
         if D.shape[-1:] != (5,):
@@ -1179,19 +1198,20 @@ def solve(bearing: BallBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *, displ
                              f"theta_z) with None/NaN for free DOFs; got shape {D.shape}")
         if np.any(np.isinf(D)):
             raise ValueError("displacements must be finite or None/NaN (free) [m, rad]")
-    L, D = np.broadcast_arrays(L, D)
-    shape = L.shape[:-1]
-    L = L.reshape(-1, 5).astype(float)
-    D = D.reshape(-1, 5)
-    imposed = ~np.isnan(D)
-    if np.any(imposed & (L != 0)):
-        k = int(np.argwhere(imposed & (L != 0))[0][1])
-        raise ValueError(f"the load on DOF {DOF[k]!r} must be 0 when its displacement is "
-                         "imposed (the reaction is returned in result.loads)")
+        L, D = np.broadcast_arrays(L, D)
+        shape = L.shape[:-1]
+        L = L.reshape(-1, 5).astype(float)
+        D = D.reshape(-1, 5)
+        imposed = ~np.isnan(D)
+        if np.any(imposed & (L != 0)):
+            k = int(np.argwhere(imposed & (L != 0))[0][1])
+            raise ValueError(f"the load on DOF {DOF[k]!r} must be 0 when its displacement is "
+                             "imposed (the reaction is returned in result.loads)")
     Pd, x0, z0 = _reference(model, clearance, _centered)
-    psi = bearing.azimuths(azimuth_offset)
+    geo = _geo(model, bearing, azimuth_offset, x0, z0)
+    psi = geo.psi.copy()
     lim = np.array([1.0, 1.0, 1.0, 1.0 / model.Ri, 1.0 / model.Ri]) * model.D
-    if np.any(np.abs(np.nan_to_num(D)) > lim):
+    if D is not None and np.any(np.abs(np.nan_to_num(D)) > lim):
         raise ValueError("imposed displacements must be within +-D = "
                          f"{model.D:g} m (translations) and +-D/R_i = {lim[3]:g} rad (tilts)")
     _check_loads(model, L)
@@ -1202,9 +1222,10 @@ def solve(bearing: BallBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *, displ
             raise ValueError("initial must be within +-D = "
                              f"{model.D:g} m (translations) and +-D/R_i = {lim[3]:g} rad "
                              "(tilts)")
-    u0 = np.where(imposed, np.nan_to_num(D), u0)
-    rtol = float(check_range(rtol, "rtol", 0.0, 1e-3, high_inclusive=True, unit="-"))
-    geo = _Geo(model, psi, x0, z0)
+    if D is not None:
+        u0 = np.where(imposed, np.nan_to_num(D), u0)
+    if not (type(rtol) is float and 0.0 < rtol <= 1e-3):
+        rtol = float(check_range(rtol, "rtol", 0.0, 1e-3, high_inclusive=True, unit="-"))
     st = None
     direct = moment_arm == "contact" and _contact_direct
     if L.shape[0] == 1:
@@ -1469,7 +1490,8 @@ def thrust(bearing: BallBearing, Fa, *, rtol: float = 1e-13, max_iter: int = 100
     u = np.zeros((Fv.size, 5))
     u[:, 0] = dt
     Pd, x0, z0 = _reference(model, None, False)
-    psi = bearing.azimuths(0.0)
+    geo = _geo(model, bearing, 0.0, x0, z0)
+    psi = geo.psi.copy()
     L = np.zeros_like(u)
     L[:, 0] = Fv
     imposed = np.zeros(u.shape, dtype=bool)
@@ -1478,7 +1500,6 @@ def thrust(bearing: BallBearing, Fa, *, rtol: float = 1e-13, max_iter: int = 100
     # tolerance on beta is not one on the thrust
     fixed = np.zeros(u.shape, dtype=bool)
     fixed[:, 1:] = True
-    geo = _Geo(model, psi, x0, z0)
     u, iters, _ = _newton(model, geo, L, u, fixed, "groove", max(rtol, 1e-13), max_iter)
     return _result(bearing, model, psi, x0, z0, Pd, u, L, imposed, "groove",
                    iters, shape, "exact", rtol=rtol, what="thrust")
