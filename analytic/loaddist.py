@@ -701,46 +701,86 @@ def _newton(model, geo, F, u0, fixed, arm, rtol, max_iter, strict=True):
     return u, iters, conv
 
 
+def _solve_small(A, b):
+    """Solve A x = b (lists; A square, small) by Gaussian elimination with partial pivoting.
+
+    LAPACK's gesv algorithm on Python floats: for a 5 x 5 system some ten times faster than
+    ``numpy.linalg.solve``'s call overhead.  ``numpy.linalg.LinAlgError`` if singular.
+    """
+    n = len(b)
+    M = [row[:] + [b[i]] for i, row in enumerate(A)]
+    for k in range(n):
+        p = max(range(k, n), key=lambda i: abs(M[i][k]))
+        if M[p][k] == 0.0 or M[p][k] != M[p][k]:
+            raise np.linalg.LinAlgError("Singular matrix")
+        if p != k:
+            M[k], M[p] = M[p], M[k]
+        rk = M[k]
+        piv = rk[k]
+        for i in range(k + 1, n):
+            ri = M[i]
+            f = ri[k] / piv
+            if f != 0.0:
+                for j in range(k + 1, n + 1):
+                    ri[j] -= f * rk[j]
+    x = [0.0] * n
+    for i in range(n - 1, -1, -1):
+        ri = M[i]
+        acc = ri[n]
+        for j in range(i + 1, n):
+            acc -= ri[j] * x[j]
+        x[i] = acc / ri[i]
+    return x
+
+
 def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
     """`_newton` for a single load case, with scalar control flow.
 
     The same iteration -- scaled Newton step with the Levenberg floor, the symmetric
     frozen-stiffness fallback, the trust radius, the Armijo search on the frozen-stiffness
     potential ("groove" arm) or on the residual norm ("contact" arm), the round-off floor --
-    without the vectorized driver's active-set indexing, which for one case costs more
-    than the physics.  ``tests/test_loaddist.py`` checks that both drivers agree.
-    Returns (u (1,5), iterations (1,), final _State).
+    without the vectorized driver's active-set indexing, and with the five-component
+    bookkeeping (residual, scaled Jacobian, linear solve, step) in Python floats, which for
+    one case cost more than the physics as NumPy calls.  ``tests/test_loaddist.py`` checks
+    that both drivers agree.  Returns (u (1,5), iterations (1,), final _State).
     """
-    sc = np.array([1.0, 1.0, 1.0, model.Ri, model.Ri])
-    sc2 = np.outer(sc, sc)
-    fx = fixed[0]
-    anyfixed = bool(fx.any())
-    n_free = max(int((~fx).sum()), 1)
-    F = np.where(fx, 0.0, F[0])
-    Fs_ext = float(np.abs(F / sc).max())
+    Ri = float(model.Ri)
+    sc = [1.0, 1.0, 1.0, Ri, Ri]
+    fx = [bool(v) for v in fixed[0]]
+    anyfixed = any(fx)
+    free = [i for i in range(5) if not fx[i]]
+    n_free = max(len(free), 1)
+    F = [0.0 if fx[i] else float(v) for i, v in enumerate(F[0])]
+    Fs_ext = max(abs(F[i] / sc[i]) for i in range(5))
     step_max = 0.25 * model.A
+    Farr = np.array(F)
 
     def residual(st):
-        R = (st.F[0] - F) / sc
-        if anyfixed:
-            R[fx] = 0.0
+        Fst = st.F[0].tolist()
+        R = [0.0 if fx[i] else (Fst[i] - F[i]) / sc[i] for i in range(5)]
         qmax = float(st.Q.max())
-        return R, float(np.abs(R).max()) / max(Fs_ext, qmax, 1e-300), qmax
+        return R, max(abs(r) for r in R) / max(Fs_ext, qmax, 1e-300), qmax
 
     def scaled(J, mu):
-        Js = J / sc2
+        Js = [[J[i][j] / (sc[i] * sc[j]) for j in range(5)] for i in range(5)]
         if anyfixed:
-            Js[fx, :] = 0.0
-            Js[:, fx] = 0.0
+            for i in range(5):
+                for j in range(5):
+                    if fx[i] or fx[j]:
+                        Js[i][j] = 0.0
         if mu is None:                                    # Levenberg floor (see _newton)
-            mu = max(1e-12 * abs(float(np.trace(Js))) / n_free,
+            mu = max(1e-12 * abs(sum(Js[i][i] for i in range(5))) / n_free,
                      1e-6 * max(Fs_ext, qmax) / model.A)
-        Js.flat[::6] += np.where(fx, 1.0, mu)
+        for i in range(5):
+            Js[i][i] += 1.0 if fx[i] else mu
         return Js, mu
 
+    def dot(a, b):
+        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] + a[4] * b[4]
+
     cap = max(_FLOOR_CAP, 100.0 * rtol)
-    u = u0[0].copy()
-    st = _State(model, geo, u[None], arm)
+    u = u0[0].tolist()
+    st = _State(model, geo, np.array(u)[None], arm)
     R, err, qmax = residual(st)
     best = (err if err == err else np.inf, u, st)
     it = 0
@@ -751,54 +791,58 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
                 break
             raise ConvergenceError(
                 f"load distribution did not converge after {it} iterations: relative "
-                f"equilibrium residual {err:.3e} (> rtol={rtol:g}); loads {F.tolist()}, "
-                f"displacements {u.tolist()}")
+                f"equilibrium residual {err:.3e} (> rtol={rtol:g}); loads {F}, "
+                f"displacements {u}")
         it += 1
-        Js, mu = scaled(st.J[0], None)
-        dS = -np.linalg.solve(Js, R)
-        if arm == "groove" and not float(R @ dS) < 0.0:
-            sb = _State(model, geo, u[None], arm, Kn=st.Kn)
-            Jb, _ = scaled(0.5 * (sb.J[0] + sb.J[0].T), mu)
-            dS = -np.linalg.solve(Jb, R)
-        size = float(np.abs(dS).max())
+        Js, mu = scaled(st.J[0].tolist(), None)
+        dS = [-v for v in _solve_small(Js, R)]
+        if arm == "groove" and not dot(R, dS) < 0.0:
+            sb = _State(model, geo, np.array(u)[None], arm, Kn=st.Kn)
+            Jsym = (0.5 * (sb.J[0] + sb.J[0].T)).tolist()
+            Jb, _ = scaled(Jsym, mu)
+            dS = [-v for v in _solve_small(Jb, R)]
+        size = max(abs(v) for v in dS)
         if size > step_max:
-            dS *= step_max / size
-        g = float(R @ dS)
-        du = dS / sc
+            f = step_max / size
+            dS = [v * f for v in dS]
+        g = dot(R, dS)
+        du = [dS[i] / sc[i] for i in range(5)]
         t = 1.0
         local = err < 1e-6
         if arm == "groove":
-            unew = u + du
-            snew = _State(model, geo, unew[None], arm)      # the full step's state, which
-            if not local:                                   # also gives its potential
+            unew = [u[i] + du[i] for i in range(5)]
+            snew = _State(model, geo, np.array(unew)[None], arm)   # the full step's state,
+            if not local:                                   # which also gives its potential
                 d = st.delta
-                phi0 = 0.4 * float((st.Kn * d * d * np.sqrt(d)).sum()) - float(F @ u)
+                phi0 = 0.4 * float((st.Kn * d * d * np.sqrt(d)).sum()) - dot(F, u)
                 d = snew.delta
-                ph = 0.4 * float((st.Kn * d * d * np.sqrt(d)).sum()) - float(F @ unew)
+                ph = 0.4 * float((st.Kn * d * d * np.sqrt(d)).sum()) - dot(F, unew)
                 if not ph <= phi0 + 1e-4 * g:
                     t = 0.5
+                    ua, dua = np.array(u), np.array(du)
                     for _ in range(59):
-                        ph = float(_potential(model, geo, (u + t * du)[None], st.Kn,
-                                              F[None])[0])
+                        ph = float(_potential(model, geo, (ua + t * dua)[None], st.Kn,
+                                              Farr[None])[0])
                         if ph <= phi0 + 1e-4 * t * g:
                             break
                         t *= 0.5
-                    unew = u + t * du
-                    snew = _State(model, geo, unew[None], arm)
+                    unew = [u[i] + t * du[i] for i in range(5)]
+                    snew = _State(model, geo, np.array(unew)[None], arm)
             Rn, en, qn = residual(snew)
         else:
-            m0 = float(R @ R)
-            unew = u + du
-            snew = _State(model, geo, unew[None], arm)
+            m0 = dot(R, R)
+            unew = [u[i] + du[i] for i in range(5)]
+            snew = _State(model, geo, np.array(unew)[None], arm)
             Rn, en, qn = residual(snew)
             for _ in range(0 if local else 40):
-                if float(Rn @ Rn) <= m0:
+                if dot(Rn, Rn) <= m0:
                     break
                 t *= 0.5
-                unew = u + t * du
-                snew = _State(model, geo, unew[None], arm)
+                unew = [u[i] + t * du[i] for i in range(5)]
+                snew = _State(model, geo, np.array(unew)[None], arm)
                 Rn, en, qn = residual(snew)
-        dmx, umx = float(snew.delta.max()), float(np.abs(unew * sc).max())    # _floor
+        dmx = float(snew.delta.max())                                      # _floor
+        umx = max(abs(unew[i] * sc[i]) for i in range(5))
         fl = min(max(100.0 * rtol, _EPS20 * umx / dmx), cap) if dmx > 0 else 0.0
         floor = fl >= en > 0.5 * err
         u, st, R, err, qmax = unew, snew, Rn, en, qn
@@ -809,7 +853,7 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
             break
     if it:
         log.debug("load distribution: converged in %d Newton iterations", it)
-    return u[None], np.array([it]), st
+    return np.array(u)[None], np.array([it]), st
 
 
 # =========================================================================== results
