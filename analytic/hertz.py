@@ -656,6 +656,34 @@ def _contact_from_parts(Q, Rx, Ry, Ep, method) -> HertzContact:
     delta = K (9/(2 E R)) (Q/(pi k E'))^2)^(1/3) = K b^2 / (2 E R).
     :func:`_contact_scalar` repeats these operations for one contact.
     """
+    n = np.size(Q)
+    if np.ndim(Q) == 1 and n > 2 * _BLOCK:
+        # blocks that stay in cache: the temporaries of a whole 10^5-element array are
+        # fresh megabyte allocations (page faults) and cache misses
+        out = [np.empty(n) for _ in range(8)]
+        try:
+            for i in range(0, n, _BLOCK):
+                j = i + _BLOCK
+                for o, v in zip(out, _contact_arrays(Q[i:j], Rx[i:j], Ry[i:j], Ep[i:j],
+                                                     method)):
+                    o[i:j] = v
+        except ValueError:
+            _radius_ratio(Rx, Ry)              # the message for the whole array
+            raise
+    else:
+        out = _contact_arrays(Q, Rx, Ry, Ep, method)
+    k, a, b, approach, p_max, stiffness, K, E = out
+    s = _scalar
+    return HertzContact(load=s(Q), Rx=s(Rx), Ry=s(Ry), E_prime=s(Ep), k=s(k), a=s(a), b=s(b),
+                        approach=s(approach), p_max=s(p_max), stiffness=s(stiffness),
+                        ellipk=s(K), ellipe=s(E), method=method)
+
+
+_BLOCK = 16384                          # elements per block of the vectorized contact
+
+
+def _contact_arrays(Q, Rx, Ry, Ep, method):
+    """(k, a, b, approach, p_max, stiffness, K, E) of validated, broadcast arrays."""
     k, K, E = _ellipticity(_radius_ratio(Rx, Ry), method)
     R = Rx * Ry
     R /= Rx + Ry
@@ -681,10 +709,7 @@ def _contact_from_parts(Q, Rx, Ry, Ep, method) -> HertzContact:
     w /= K * K * K
     stiffness = (np.pi * k) * Ep
     stiffness *= np.sqrt(w)
-    s = _scalar
-    return HertzContact(load=s(Q), Rx=s(Rx), Ry=s(Ry), E_prime=s(Ep), k=s(k), a=s(a), b=s(b),
-                        approach=s(approach), p_max=s(p_max), stiffness=s(stiffness),
-                        ellipk=s(K), ellipe=s(E), method=method)
+    return k, a, b, approach, p_max, stiffness, K, E
 
 
 def _contact_scalar(Q: float, Rx: float, Ry: float, Ep: float) -> HertzContact:

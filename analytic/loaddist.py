@@ -710,7 +710,10 @@ def _solve_small(A, b):
     n = len(b)
     M = [row[:] + [b[i]] for i, row in enumerate(A)]
     for k in range(n):
-        p = max(range(k, n), key=lambda i: abs(M[i][k]))
+        p, big = k, abs(M[k][k])
+        for i in range(k + 1, n):
+            if abs(M[i][k]) > big:
+                p, big = i, abs(M[i][k])
         if M[p][k] == 0.0 or M[p][k] != M[p][k]:
             raise np.linalg.LinAlgError("Singular matrix")
         if p != k:
@@ -810,24 +813,18 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
         t = 1.0
         local = err < 1e-6
         if arm == "groove":
-            unew = [u[i] + du[i] for i in range(5)]
-            snew = _State(model, geo, np.array(unew)[None], arm)   # the full step's state,
-            if not local:                                   # which also gives its potential
+            if not local:
                 d = st.delta
                 phi0 = 0.4 * float((st.Kn * d * d * np.sqrt(d)).sum()) - dot(F, u)
-                d = snew.delta
-                ph = 0.4 * float((st.Kn * d * d * np.sqrt(d)).sum()) - dot(F, unew)
-                if not ph <= phi0 + 1e-4 * g:
-                    t = 0.5
-                    ua, dua = np.array(u), np.array(du)
-                    for _ in range(59):
-                        ph = float(_potential(model, geo, (ua + t * dua)[None], st.Kn,
-                                              Farr[None])[0])
-                        if ph <= phi0 + 1e-4 * t * g:
-                            break
-                        t *= 0.5
-                    unew = [u[i] + t * du[i] for i in range(5)]
-                    snew = _State(model, geo, np.array(unew)[None], arm)
+                ua, dua = np.array(u), np.array(du)
+                for _ in range(60):
+                    ph = float(_potential(model, geo, (ua + t * dua)[None], st.Kn,
+                                          Farr[None])[0])
+                    if ph <= phi0 + 1e-4 * t * g:
+                        break
+                    t *= 0.5
+            unew = [u[i] + t * du[i] for i in range(5)]
+            snew = _State(model, geo, np.array(unew)[None], arm)
             Rn, en, qn = residual(snew)
         else:
             m0 = dot(R, R)
