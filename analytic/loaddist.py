@@ -1318,6 +1318,73 @@ def solve(bearing: BallBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *, displ
                    "exact", state=st, rtol=rtol)
 
 
+def ring_forces(bearing: BallBearing, displacements, *, moment_arm: str = "groove",
+                clearance=None, azimuth_offset: float = 0.0):
+    r"""Resultant of the ball forces on the inner ring and its tangent stiffness at given
+    ring displacements (no equilibrium solve): the inner loop of a shaft-system Newton.
+
+    .. math:: F(u) = \sum_j Q_j(u)\,\frac{\partial \delta_{n,j}}{\partial u}, \qquad
+              K(u) = \frac{\partial F}{\partial u}
+
+    with the model of :func:`solve` (same reference configuration, K_n table, moment arm);
+    K is analytic (chain rule through each ball's approach and contact angle, including
+    dK_n/dbeta), not a finite difference.  ``solve(...).loads`` and ``.stiffness`` are
+    these at the equilibrium displacements.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        Single-row bearing.
+    displacements : array_like
+        Shape (..., 5): inner-ring (dx, dy, dz [m], theta_y, theta_z [rad]) from the
+        reference configuration, within +-D (translations) and +-D/R_i (tilts).
+    moment_arm : {"groove", "contact"}
+        As in :func:`solve`.
+    clearance : float, optional
+        Diametral clearance P_d [m], < 2A; default the bearing's.
+    azimuth_offset : float, optional
+        Azimuth of ball 1 from +y [rad].
+
+    Returns
+    -------
+    F : ndarray, shape (..., 5)
+        (Fa, Fy, Fz [N], My, Mz [N m]) carried by the balls.
+    K : ndarray, shape (..., 5, 5)
+        dF/du [N/m, N/rad, N m/m, N m/rad].
+
+    References
+    ----------
+    Jones (1960); Harris (2001) §7.4; Hamrock & Dowson (1981) eqs. (3.61)–(3.74).
+
+    Examples
+    --------
+    >>> import ballrace
+    >>> brg = ballrace.BallBearing(22.225e-3, 16, 125.26e-3, 0.5232, 0.5232,
+    ...                            free_contact_angle=np.radians(40))
+    >>> r = solve(brg, Fa=17800.0, Fy=8900.0, Mz=-200.0)
+    >>> F, K = ring_forces(brg, r.displacements)
+    >>> bool(np.allclose(F, r.loads, rtol=1e-12) and np.allclose(K, r.stiffness, rtol=1e-12))
+    True
+    """
+    if not isinstance(bearing, BallBearing):
+        raise TypeError(f"bearing must be a ballrace.BallBearing; got {type(bearing).__name__}")
+    check_choice(moment_arm, "moment_arm", MOMENT_ARMS)
+    model = _Model.of(bearing)
+    u = as_array(displacements, "displacements", bounded=True, tiny_ok=True)
+    if u.shape[-1:] != (5,):
+        raise ValueError("displacements must have shape (..., 5): (dx, dy, dz, theta_y, "
+                         f"theta_z); got shape {u.shape}")
+    lim = np.array([1.0, 1.0, 1.0, 1.0 / model.Ri, 1.0 / model.Ri]) * model.D
+    if np.any(np.abs(u) > lim):
+        raise ValueError("displacements must be within +-D = "
+                         f"{model.D:g} m (translations) and +-D/R_i = {lim[3]:g} rad (tilts)")
+    Pd, x0, z0 = _reference(model, clearance, False)
+    geo = _geo(model, bearing, azimuth_offset, x0, z0)
+    shape = u.shape[:-1]
+    st = _State(model, geo, u.reshape(-1, 5), moment_arm)
+    return st.F.reshape(shape + (5,)), st.J.reshape(shape + (5, 5))
+
+
 def _retry(model, geo, L, u0, imposed, arm, rtol, max_iter, ok, u, iters):
     """Second attempts for the cases (``~ok``) where the direct path did not converge.
 

@@ -89,3 +89,59 @@ def test_tabulated_ellipticity_at_interval_edges_matches_mpmath(alpha):
     # series range was widened to m < 0.3
     k, _, _ = hertz._solve_k(np.array([alpha]))
     assert k[0] == pytest.approx(k_exact(alpha), rel=5e-15, abs=0)
+
+
+# --------------------------------------------------------------------------- load distribution
+def _ricci218():
+    return ballrace.BallBearing(22.225e-3, 16, 125.26e-3, 0.5232, 0.5232,
+                                free_contact_angle=np.radians(40), material=STEEL)
+
+
+@pytest.mark.parametrize("arm", ["groove", "contact"])
+def test_ring_forces_stiffness_is_the_derivative(arm):
+    # central differences of F(u) (step 1e-9 m / 1e-8 rad; truncation ~1e-10 relative)
+    from ballrace.analytic import loaddist
+    brg = _ricci218()
+    r = loaddist.solve(brg, Fa=17800.0, Fy=8900.0, Mz=-200.0, moment_arm=arm)
+    F, K = loaddist.ring_forces(brg, r.displacements, moment_arm=arm)
+    assert np.array_equal(F, r.loads) and np.array_equal(K, r.stiffness)
+    u = r.displacements
+    h = np.array([1e-9, 1e-9, 1e-9, 1e-8, 1e-8])
+    fd = np.empty((5, 5))
+    for j in range(5):
+        up, um = u.copy(), u.copy()
+        up[j] += h[j]
+        um[j] -= h[j]
+        fd[:, j] = (loaddist.ring_forces(brg, up, moment_arm=arm)[0]
+                    - loaddist.ring_forces(brg, um, moment_arm=arm)[0]) / (2 * h[j])
+    sc = np.array([1, 1, 1, brg.inner_groove_center_radius, brg.inner_groove_center_radius])
+    Ks, fds = K / sc[:, None] / sc[None, :], fd / sc[:, None] / sc[None, :]
+    assert np.max(np.abs(Ks - fds)) < 1e-8 * np.max(np.abs(Ks))
+
+
+@settings(max_examples=60, deadline=None)
+@given(u=st.tuples(st.floats(-3e-5, 8e-5), st.floats(-5e-5, 5e-5), st.floats(-5e-5, 5e-5),
+                   st.floats(-1e-3, 1e-3), st.floats(-1e-3, 1e-3)),
+       arm=st.sampled_from(["groove", "contact"]))
+def test_ring_forces_one_case_equals_batch(u, arm):
+    # one displacement runs the one-case kernel (_State._one), several the batch kernel
+    from ballrace.analytic import loaddist
+    brg = _ricci218()
+    u = np.array(u)
+    F1, K1 = loaddist.ring_forces(brg, u, moment_arm=arm)
+    Fb, Kb = loaddist.ring_forces(brg, np.stack([u, 0.5 * u]), moment_arm=arm)
+    scale = max(np.abs(F1).max(), 1.0)
+    assert np.allclose(F1, Fb[0], rtol=1e-12, atol=1e-12 * scale)
+    assert np.allclose(K1, Kb[0], rtol=1e-11, atol=1e-12 * max(np.abs(K1).max(), 1.0))
+
+
+def test_small_solver_matches_numpy():
+    from ballrace.analytic.loaddist import _solve_small
+    rng = np.random.default_rng(4)
+    for _ in range(50):
+        A = rng.normal(size=(5, 5)) + 5 * np.eye(5) * rng.uniform(0, 1)
+        b = rng.normal(size=5)
+        x = _solve_small(A.tolist(), b.tolist())
+        assert np.allclose(x, np.linalg.solve(A, b), rtol=1e-10, atol=1e-12)
+    with pytest.raises(np.linalg.LinAlgError):
+        _solve_small([[1.0, 2.0], [2.0, 4.0]], [1.0, 1.0])
