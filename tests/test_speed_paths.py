@@ -145,3 +145,21 @@ def test_small_solver_matches_numpy():
         assert np.allclose(x, np.linalg.solve(A, b), rtol=1e-10, atol=1e-12)
     with pytest.raises(np.linalg.LinAlgError):
         _solve_small([[1.0, 2.0], [2.0, 4.0]], [1.0, 1.0])
+
+
+def test_blocked_vectorised_contact_equals_small_arrays():
+    # arrays above two blocks run the in-place block kernel (_exact_block), small ones the
+    # plain array path: the same operations, so the same bits (zero loads and a circle too)
+    rng = np.random.default_rng(11)
+    n = 3 * hertz._BLOCK + 123
+    Rx = 10 ** rng.uniform(-3, -1, n)
+    Ry = Rx * 10 ** rng.uniform(-4, 4, n)
+    Q = 10 ** rng.uniform(0, 5, n)
+    Q[::9] = 0.0
+    Ry[5] = Rx[5]
+    big = hertz.elliptical_contact(Q, Rx, Ry, 2.1e11)
+    for i in range(0, n, 5000):
+        sl = slice(i, i + 5000)
+        small = hertz.elliptical_contact(Q[sl], Rx[sl], Ry[sl], 2.1e11)
+        for f in FIELDS:
+            assert np.array_equal(getattr(big, f)[sl], getattr(small, f)), f
