@@ -98,6 +98,18 @@ def as_array(value, name: str, *, allow_inf: bool = False, bounded: bool = False
     ...
     ValueError: load must have a physical magnitude, 0 or in [1e-30, 1e+30] [N]; got 1e+308
     """
+    if type(value) is np.ndarray and value.dtype == np.float64 and value.size:
+        # fast path: two reductions instead of elementwise masks (min/max propagate NaN);
+        # anything not plainly fine goes the elementwise way below, which words the error
+        lo, hi = float(value.min()), float(value.max())
+        if lo == lo and hi == hi and (allow_inf or (-np.inf < lo and hi < np.inf)):
+            if not bounded:
+                return value
+            if tiny_ok:
+                if -MAX_MAGNITUDE <= lo and hi <= MAX_MAGNITUDE:
+                    return value
+            elif MIN_MAGNITUDE <= lo and hi <= MAX_MAGNITUDE:
+                return value
     if _has_non_number(value):
         raise _type_error(value, name)
     try:
@@ -172,8 +184,11 @@ def check_positive(value, name: str, unit: str = "", *, allow_inf: bool = False,
                    bounded: bool = False) -> np.ndarray:
     """Array of floats > 0, else ``ValueError`` naming ``name`` and the allowed range."""
     arr = as_array(value, name, allow_inf=allow_inf)
-    bad = ~(arr > 0)
-    if bad.any():
+    if arr.size and arr.min() > 0:                      # one reduction when all is well
+        bad = None
+    else:
+        bad = ~(arr > 0)
+    if bad is not None and bad.any():
         u = f" [{unit}]" if unit else ""
         raise ValueError(f"{name} must be > 0{u}; got {_first(arr, bad)!r}{_where(bad)}")
     if bounded:
@@ -185,10 +200,11 @@ def check_nonnegative(value, name: str, unit: str = "", *, bounded: bool = False
                       tiny_ok: bool = False) -> np.ndarray:
     """Array of finite floats >= 0, else ``ValueError`` naming ``name``."""
     arr = as_array(value, name)
-    bad = arr < 0
-    if bad.any():
-        u = f" [{unit}]" if unit else ""
-        raise ValueError(f"{name} must be >= 0{u}; got {_first(arr, bad)!r}{_where(bad)}")
+    if not (arr.size and arr.min() >= 0):               # one reduction when all is well
+        bad = arr < 0
+        if bad.any():
+            u = f" [{unit}]" if unit else ""
+            raise ValueError(f"{name} must be >= 0{u}; got {_first(arr, bad)!r}{_where(bad)}")
     if bounded:
         as_array(arr, name, bounded=True, tiny_ok=tiny_ok, unit=unit)
     return arr

@@ -48,8 +48,7 @@ import numpy as np
 
 from ._checks import as_array, check_choice, check_nonnegative, check_positive
 from .bearing import BallBearing
-from .loaddist import (MAX_APPROACH_RATIO, ConvergenceError, _fold_unloaded, _Model,
-                       ball_stiffness)
+from .loaddist import MAX_APPROACH_RATIO, ConvergenceError, _fold_unloaded, _kn, _Model
 
 __all__ = ["ARRANGEMENTS", "DuplexPair", "DuplexResult", "axial_load", "axial_deflection",
            "power_law_unloading_ratio"]
@@ -64,31 +63,69 @@ def _groove_centres(bearing, da, dr):
     """(A, psi, x, z): radial and axial components of each ball's line of groove centres [m]
     at ring displacements (da, dr), vectorized over their leading axes (Jones 1960;
     H&D 1981 eqs. 3.61-3.63)."""
-    A = bearing.curvature_center_distance
-    bf = bearing.free_contact_angle
-    psi = bearing.azimuths(0.0)
-    z = A * np.sin(bf) + np.asarray(da, float)[..., None]
-    x = A * np.cos(bf) + np.asarray(dr, float)[..., None] * np.cos(psi)
+    A, sf, cf, psi, cpsi = _constants(bearing)
+    z = A * sf + np.asarray(da, float)[..., None]
+    x = A * cf + np.asarray(dr, float)[..., None] * cpsi
     return A, psi, x, z
 
 
-def _forces(bearing, da, dr):
+def _constants(bearing):
+    """(A, sin beta_f, cos beta_f, psi, cos psi) of a bearing, cached with its model."""
+    m = _Model.of(bearing)
+    hit = _CONST.get(id(m))
+    if hit is None or hit[0] is not m:
+        if len(_CONST) > 256:                                # bounded: models come and go
+            _CONST.clear()
+        psi = 2.0 * np.pi * np.arange(m.Z) / m.Z            # bearing.azimuths(0.0)
+        hit = _CONST[id(m)] = (m, (m.A, np.sin(m.beta_f), np.cos(m.beta_f), psi, np.cos(psi)))
+    return hit[1]
+
+
+_CONST: dict = {}
+
+
+def _forces(bearing, da, dr, jac=False):
     """(Fa, Fr, ball loads, contact angles) of one bearing at ring displacements (da, dr).
 
     Vectorized over leading axes of ``da`` and ``dr`` (broadcast); Jones combined-load
-    model (H&D 1981 eqs. 3.61-3.70) with K_n at each ball's own angle.
+    model (H&D 1981 eqs. 3.61-3.70) with K_n at each ball's own angle.  With ``jac`` also
+    the analytic derivatives d(Fa, Fr)/d(da, dr), shape (..., 2, 2): per ball, with
+    e = (cos b, sin b), t = (-sin b, cos b) and X = (x, z) its groove-centre line,
+    d(Q e)/dX = (k15 - Q/s) e e' + (Q/s) dlnK_n/db e t' + (Q/s) I, k15 = 1.5 K_n (s - A)^0.5,
+    and dX/d(da, dr) = ((0, cos psi), (1, 0)).
     """
     A, psi, x, z = _groove_centres(bearing, da, dr)
     s = np.hypot(x, z)
     b = np.arctan2(z, x)
-    Kn, _ = ball_stiffness(bearing, b)
+    # K_n from the bearing model's table (exact Hertz to 1e-13, as in loaddist.solve)
+    model = _Model.of(bearing)
+    sb = np.maximum(s, 1e-300)
+    c, sn = x / sb, z / sb
+    Kn, dlnK = _kn(model, b, c, sn)
     # half-torus grooves: no contact where the groove-centre line points inwards (x <= 0);
     # unloaded balls report that line's angle folded into (-pi/2, pi/2] (as in loaddist)
-    Q = np.where(x > 0, Kn * np.maximum(s - A, 0.0) ** 1.5, 0.0)
+    d = np.where(x > 0, np.maximum(s - A, 0.0), 0.0)
+    sq = np.sqrt(d)
+    Q = Kn * d * sq
     b = _fold_unloaded(b, Q)
+    cpsi = _constants(bearing)[4]
     Fa = np.sum(Q * np.sin(b), axis=-1)
-    Fr = np.sum(Q * np.cos(b) * np.cos(psi), axis=-1)
-    return Fa, Fr, Q, b
+    Fr = np.sum(Q * np.cos(b) * cpsi, axis=-1)
+    if not jac:
+        return Fa, Fr, Q, b
+    qs = Q / sb
+    a = 1.5 * Kn * sq - qs
+    qk = qs * dlnK
+    W00 = a * c * c - qk * c * sn + qs          # d(Q cos b)/dx
+    W01 = a * c * sn + qk * c * c               # d(Q cos b)/dz
+    W10 = a * sn * c - qk * sn * sn             # d(Q sin b)/dx
+    W11 = a * sn * sn + qk * sn * c + qs        # d(Q sin b)/dz
+    J = np.empty(np.shape(Fa) + (2, 2))
+    J[..., 0, 0] = W11.sum(-1)                  # dFa/dda
+    J[..., 0, 1] = (W10 * cpsi).sum(-1)         # dFa/ddr
+    J[..., 1, 0] = (W01 * cpsi).sum(-1)         # dFr/dda
+    J[..., 1, 1] = (W00 * cpsi * cpsi).sum(-1)  # dFr/ddr
+    return Fa, Fr, Q, b, J
 
 
 def _approach(bearing, da, dr):
@@ -193,29 +230,41 @@ def _inverse(bearing, F, rtol=1e-13, max_iter=200):
     if F == 0.0:
         return 0.0
     A = bearing.curvature_center_distance
-    lo, hi = 0.0, 1e-4 * A
-    while float(_forces(bearing, hi, 0.0)[0]) < F:
+    # upper end from the point-contact power law at the free angle, F = Z K_n
+    # sin(b_f) (da sin(b_f))^1.5 (no more than a guess: the angle grows with the load)
+    m = _Model.of(bearing)
+    sf = max(float(np.sin(m.beta_f)), 0.1)
+    lo, hi = 0.0, min(1.5 * (F / (m.Z * m.Kn_free * sf)) ** (2.0 / 3.0) / sf, A)
+    f_hi, k_hi = _axial(bearing, hi)
+    while f_hi < F:
         lo, hi = hi, 2.0 * hi
         if hi > 10.0 * A:
             raise ValueError(f"Fa={F!r} N is beyond the load-deflection range of the bearing")
-    f_lo, f_hi = -F, float(_forces(bearing, hi, 0.0)[0]) - F
-    x = hi
+        f_hi, k_hi = _axial(bearing, hi)
+    # Newton on the increasing, convex-ish curve from the upper end, kept inside the
+    # bracket (bisection when a step leaves it), with the analytic slope dFa/dda
+    x, fx, kx = hi, f_hi - F, k_hi
     for it in range(max_iter):
-        # Illinois-type regula falsi on the smooth, convex-ish curve; bisection fallback
-        x = hi - f_hi * (hi - lo) / (f_hi - f_lo)
-        if not lo < x < hi:
-            x = 0.5 * (lo + hi)
-        fx = float(_forces(bearing, x, 0.0)[0]) - F
+        xn = x - fx / kx if kx > 0 else 0.5 * (lo + hi)
+        if not lo < xn < hi:
+            xn = 0.5 * (lo + hi)
+        x = xn
+        fa, kx = _axial(bearing, x)
+        fx = fa - F
         if abs(fx) <= rtol * F or (hi - lo) <= 1e-15 * A:
             return x
         if fx < 0:
-            lo, f_lo = x, fx
-            f_hi *= 0.5
+            lo = x
         else:
-            hi, f_hi = x, fx
-            f_lo *= 0.5
+            hi = x
     raise ConvergenceError(f"axial deflection did not converge for Fa={F!r} N after "
                            f"{max_iter} iterations (bracket {lo:.6g}..{hi:.6g} m)")
+
+
+def _axial(bearing, da):
+    """(Fa, dFa/dda) of one bearing under pure axial displacement ``da`` (a float)."""
+    Fa, _, _, _, J = _forces(bearing, np.array(da), np.array(0.0), jac=True)
+    return float(Fa), float(J[0, 0])
 
 
 def power_law_unloading_ratio(exponent: float = 1.5) -> float:
@@ -357,7 +406,7 @@ class DuplexPair:
             return _inverse(self.bearing, 0.5 * self.preload)
         return _inverse(self.bearing, self.preload)
 
-    @property
+    @functools.cached_property
     def unloading_load(self) -> float:
         r"""External axial load at which the pair unloads [N].
 
@@ -378,15 +427,31 @@ class DuplexPair:
         Fa, Fr, Q, b = _forces(self.bearing, d, np.array([dr, dr]))
         return d, Fa, Fr, Q, b
 
-    def _pair(self, x, dr):
-        d, Fa, Fr, Q, b = self._state(x, dr)
-        if self.arrangement == "DT":
-            Fa_pair = Fa[0] + Fa[1] - self.preload
-        else:
-            Fa_pair = Fa[0] - Fa[1]
-        return np.array([Fa_pair, Fr[0] + Fr[1]])
+    def _pair(self, x, dr, jac=False):
+        """Resultant (Fa, Fr) of the pair at shaft displacements (x, dr) [N]; with ``jac``
+        also its analytic derivative d(Fa, Fr)/d(x, dr) [N/m]."""
+        d0 = self.preload_deflection
+        dt = self.arrangement == "DT"
+        d = np.array([d0 + x, d0 + x]) if dt else np.array([d0 + x, d0 - x])
+        out = _forces(self.bearing, d, np.array([dr, dr]), jac=jac)
+        Fa, Fr = out[0], out[1]
+        Fa_pair = Fa[0] + Fa[1] - self.preload if dt else Fa[0] - Fa[1]
+        r = np.array([Fa_pair, Fr[0] + Fr[1]])
+        if not jac:
+            return r
+        J1, J2 = out[4]
+        s2 = 1.0 if dt else -1.0               # d(deflection of bearing 2)/dx
+        sa = 1.0 if dt else -1.0               # sign of bearing 2's axial load in the pair's
+        J = np.array([[J1[0, 0] + sa * s2 * J2[0, 0], J1[0, 1] + sa * J2[0, 1]],
+                      [J1[1, 0] + s2 * J2[1, 0], J1[1, 1] + J2[1, 1]]])
+        return r, J
 
-    def _jacobian(self, x, dr, h):
+    def _jacobian(self, x, dr):
+        """Analytic tangent stiffness d(Fa, Fr)/d(x, dr) of the pair [N/m]."""
+        return self._pair(x, dr, jac=True)[1]
+
+    def _secant(self, x, dr, h):
+        """Central differences of (Fa, Fr) over +-h [N/m] (where the tangent is singular)."""
         J = np.empty((2, 2))
         for k, (ex, er) in enumerate(((h, 0.0), (0.0, h))):
             J[:, k] = (self._pair(x + ex, dr + er) - self._pair(x - ex, dr - er)) / (2 * h)
@@ -461,15 +526,17 @@ class DuplexPair:
                 else min(_inverse(self.bearing, abs(Fa) + P) - d0, d0))
         dr = 0.0
         radial_free = Fr > 0
-        h = 1e-7 * A
-        r = self._pair(x, dr) - target
+        r, J = self._pair(x, dr, jac=True)
+        r = r - target
         err = np.max(np.abs(r if radial_free else r[:1])) / scale
         it = 0
         while err > rtol and it < max_iter:
             it += 1
-            # difference step below the deflections (light loads deflect less than 1e-7 A)
-            h = 1e-7 * min(A, max(abs(x), abs(dr), d0, 1e-6 * A))
-            J = self._jacobian(x, dr, h)
+            if (J[0, 0] * J[1, 1] - J[0, 1] * J[1, 0] == 0.0) if radial_free else J[0, 0] == 0:
+                # no ball loaded yet (all just touching): the tangent is singular, the
+                # secant over a small step below the deflections is not
+                h = 1e-7 * min(A, max(abs(x), abs(dr), d0, 1e-6 * A))
+                J = self._secant(x, dr, h)
             if radial_free:
                 try:
                     step = np.linalg.solve(J, -r)
@@ -488,7 +555,8 @@ class DuplexPair:
             t, f0 = 1.0, float(np.sum(r**2))
             for _ in range(50):
                 xn, drn = x + t * step[0], dr + t * step[1]
-                rn = self._pair(xn, drn) - target
+                rn, Jn = self._pair(xn, drn, jac=True)
+                rn = rn - target
                 if not radial_free:
                     rn[1] = 0.0
                 # Armijo on |r|^2 for the (possibly shortened) Newton step
@@ -497,7 +565,7 @@ class DuplexPair:
                 t *= 0.5
             else:
                 break
-            x, dr, r = xn, drn, rn
+            x, dr, r, J = xn, drn, rn, Jn
             err = np.max(np.abs(r)) / scale
         if not err <= rtol:
             d, _, _, Q, b = self._state(x, dr)
@@ -513,7 +581,7 @@ class DuplexPair:
             raise ConvergenceError(f"duplex pair equilibrium did not converge: relative residual "
                                    f"{err:.3e} after {it} iterations (Fa={Fa!r} N, Fr={Fr!r} N)")
         d, Fa_b, Fr_b, Q, b = self._state(x, dr)
-        K = self._jacobian(x, dr, h)
+        K = J                                       # analytic, at the solution
         return DuplexResult(
             pair=self, Fa=Fa, Fr=Fr, axial_loads=np.maximum(Fa_b, 0.0), radial_loads=Fr_b,
             axial_deflections=d, axial_displacement=float(x), radial_displacement=float(dr),

@@ -18,14 +18,17 @@ The exact solution needs the ellipticity k from Hertz's transcendental equation
           {\mathcal{K}(m) - \mathcal{E}(m)}, \qquad m = 1 - 1/k^2,
 
 with the complete elliptic integrals K (first kind) and E (second kind).  It is
-solved here to 1e-12 relative in k for 1 <= alpha_r <= 1e8: a cubic-Hermite table of
-ln k on a uniform grid of ln alpha_r (built once, lazily, in a few ms from the exact
-relation) gives a start accurate to ~1e-10, one Newton step polishes it, and every
-result is checked against the residual before it is returned (more Newton steps if
-needed; ``RuntimeError`` with the residual and iteration count if that ever fails).
-Measured: max relative error 1.1e-15 against a 30-digit mpmath reference, about
-4 million contacts per second on one core (``benchmarks/bench_hertz.py``).  Near the circle the difference K - E is summed as a
-series so there is no cancellation.
+solved here to 1e-12 relative in k for 1 <= alpha_r <= 1e8: k is read from piecewise
+polynomials of alpha_r (64 intervals per octave, degree 5, built once, lazily, in some
+20 ms by Newton's method on the exact relation and accurate to rounding), then K and E
+are evaluated at that k and the relation is checked before anything is returned: its
+residual bounds the error in k (a few 1e-16; beyond 1e-12 Newton's method takes over,
+``RuntimeError`` with the residual and iteration count if that ever fails).  One K and
+one E per contact, no logarithm: measured max relative error 1.8e-15 against a 30-digit
+mpmath reference; throughput against scipy's ``ellipk`` + ``ellipe`` alone in
+``benchmarks/core_table.py`` (docs/performance.md).  Near the circle (m < 0.3) the
+difference K - E is summed as a series so there is no cancellation.  One contact of
+plain numbers takes a scalar path with the same operations (bit-for-bit the same result).
 
 Accuracy of the simplified formulas: maximum |relative error| against the exact
 solution over 1 <= alpha_r <= alpha_max (4001 log-spaced ratios; regenerate with
@@ -50,13 +53,15 @@ from __future__ import annotations
 
 import functools
 import logging
+import math
+import struct
 from dataclasses import dataclass
 
 import numpy as np
 from scipy import special
 
-from ._checks import (as_array, broadcast, check_choice, check_instance, check_nonnegative,
-                      check_positive)
+from ._checks import (MAX_MAGNITUDE, MIN_MAGNITUDE, as_array, broadcast, check_choice,
+                      check_instance, check_nonnegative, check_positive)
 from .materials import Material, effective_modulus
 
 __all__ = [
@@ -103,7 +108,8 @@ APPROXIMATION_ERROR = {
 
 _ALPHA_MAX = 1e8          # largest radius ratio handled (k ~ 1.2e5)
 _RTOL_K = 1e-12           # required relative accuracy of k
-_SERIES_M = 0.05          # below this m, K - E is summed as a series
+_SERIES_M = 0.3           # below this m, K - E is summed as a series (_SERIES_TERMS terms)
+_SERIES_TERMS = 40        # 0.3^40 ~ 1e-21: exact to rounding for m < 0.3
 
 
 # --------------------------------------------------------------------------- geometry
@@ -240,8 +246,12 @@ def d1_series_coefficients(n_terms: int = 17) -> np.ndarray:
 
 
 def _d1_series(m: np.ndarray) -> np.ndarray:
-    """(K(m) - E(m))/m by its power series (:func:`d1_series_coefficients`), m < 0.05."""
-    return np.polyval(d1_series_coefficients(), m)
+    """(K(m) - E(m))/m by its power series (:func:`d1_series_coefficients`), m < 0.3.
+
+    K - E loses about log10(4/(3m)) digits to cancellation; the series below m = 0.3
+    keeps Hertz's relation within a few rounding errors (1e-14 at m = 0.05 otherwise).
+    """
+    return np.polyval(d1_series_coefficients(_SERIES_TERMS), m)
 
 
 _TABLE_N = 4096                       # intervals of the ln k(ln alpha) table
@@ -294,8 +304,13 @@ def _table_lookup(v: np.ndarray):
     return u, dudv
 
 
-def _solve_k(alpha: np.ndarray):
-    """Ellipticity k(alpha) for alpha >= 1 to 1e-12 relative; returns (k, K, E)."""
+def _solve_k_newton(alpha: np.ndarray):
+    """Ellipticity k(alpha) for alpha >= 1 by Newton's method from the Hermite table.
+
+    One Newton step from :func:`_table`'s start, then more while the residual says the
+    relative error in k exceeds 1e-12.  Builds :func:`_poly_table` and is the fallback of
+    :func:`_solve_k` (never needed so far).  Returns (k, K, E).
+    """
     v = np.log(alpha)
     u, s = _table_lookup(v)
     r, _, _ = _ellip_parts(np.exp(u))
@@ -319,6 +334,152 @@ def _solve_k(alpha: np.ndarray):
     if it:
         log.debug("ellipticity: %d extra Newton iterations", it)
     k = np.where(alpha == 1.0, 1.0, k)
+    return k, K, E
+
+
+_OCT_BITS = 6                          # 2^6 = 64 intervals per octave of alpha_r
+_SHIFT = 52 - _OCT_BITS                # float64 bits >> _SHIFT: exponent and top mantissa bits
+_FRAC_MASK = (1 << _SHIFT) - 1         # the remaining mantissa bits: position in the interval
+_FRAC_SCALE = 2.0 ** -_SHIFT
+_IDX0 = int(np.array(1.0).view(np.int64)) >> _SHIFT
+_DEG = 5                               # degree of the polynomial on each interval
+
+
+@functools.cache
+def _poly_table():
+    """Piecewise polynomials of k(alpha_r) on 64 intervals per octave of alpha_r, [1, 1e8].
+
+    Interval i = 64 e + j covers alpha_r in [2^e (1 + j/64), 2^e (1 + (j + 1)/64)); it is
+    read from the bits of the float64 alpha_r (exponent and the top six mantissa bits),
+    and the remaining mantissa bits are the position t in [0, 1) inside it, so neither a
+    logarithm nor an exponential is needed.  On each interval k(t) is the degree-5
+    polynomial through the exact k (Newton on Hertz's relation, polished to rounding) at
+    six Chebyshev points of t: the interpolation error, about (1/128)^6 / 6! relative,
+    is far below rounding.  Built once, lazily (some 20 ms).
+
+    Returns (coef, s_max): ``coef[d]`` the coefficients of t^d (shape (6, n)), and
+    s_max >= d ln k / d ln alpha_r, which turns the residual of Hertz's relation into a
+    bound on the relative error in k (:func:`_solve_k`).
+    """
+    n = ((int(np.array(_ALPHA_MAX).view(np.int64)) >> _SHIFT) - _IDX0) + 1
+    tc = 0.5 - 0.5 * np.cos((2 * np.arange(_DEG + 1) + 1) * np.pi / (2 * _DEG + 2))
+    i = np.arange(n)
+    e, j = i >> _OCT_BITS, i & ((1 << _OCT_BITS) - 1)
+    width = np.ldexp(1.0, e - _OCT_BITS)
+    alpha = (np.ldexp(1.0, e)[:, None] + width[:, None] * (j[:, None] + tc[None, :])).ravel()
+    k, _, _ = _solve_k_newton(alpha)
+    v = np.log(alpha)
+    u = np.log(k)
+    s = _table_lookup(v)[1]
+    for _ in range(2):                                   # polish to rounding
+        r, _, _ = _ellip_parts(np.exp(u))
+        u = u - s * (r - v)
+    k = np.exp(u).reshape(n, _DEG + 1)
+    V = np.vander(tc, _DEG + 1, increasing=True)          # k(t_c) = V coef
+    coef = np.linalg.solve(V, k.T)
+    coef[0, 0] = 1.0                                      # k(1) = 1 exactly (was 1 + ~1e-16)
+    s_max = 1.05 * float(np.max(_table()[2]))
+    return np.ascontiguousarray(coef), s_max
+
+
+def _k_from_table(alpha: np.ndarray) -> np.ndarray:
+    """k(alpha_r) from :func:`_poly_table` (alpha_r: contiguous float64 in [1, 1e8])."""
+    coef, _ = _poly_table()
+    bits = alpha.view(np.int64)
+    idx = (bits >> _SHIFT) - _IDX0
+    t = (bits & _FRAC_MASK).astype(float)
+    t *= _FRAC_SCALE
+    k = coef[_DEG].take(idx)
+    for d in range(_DEG - 1, -1, -1):                    # Horner
+        k *= t
+        k += coef[d].take(idx)
+    return k
+
+
+def _relation(k: np.ndarray, alpha: np.ndarray):
+    """(K, E, alpha_r(k)/alpha_r - 1): the elliptic integrals at k and Hertz's relation.
+
+    alpha_r(k) = D2/(p D1), p = 1/k^2, D1 = (K - E)/m, D2 = K - D1 (as :func:`_ellip_parts`,
+    with the series for D1 below m = 0.05).
+    """
+    p = 1.0 / (k * k)
+    m = 1.0 - p
+    K = special.ellipkm1(p)           # K(m) with m = 1 - p; accurate as m -> 1
+    E = special.ellipe(m)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        D1 = (K - E) / m
+    small = m < _SERIES_M
+    if small.any():
+        ks = k[small]
+        D1[small] = _d1_series((ks - 1.0) * (ks + 1.0) / (ks * ks))
+    rel = (K - D1) / (p * D1 * alpha)
+    rel -= 1.0
+    return K, E, rel
+
+
+def _solve_k(alpha: np.ndarray):
+    """Ellipticity k(alpha) for alpha >= 1 to 1e-12 relative; returns (k, K, E).
+
+    k from :func:`_poly_table`, then K(m), E(m) at that k and Hertz's relation checked:
+    |alpha_r(k)/alpha_r - 1| s_max bounds the relative error in k (it is a few 1e-16);
+    where it exceeds 1e-12, :func:`_solve_k_newton` takes over.
+    """
+    shape = np.shape(alpha)
+    alpha = np.array(alpha, dtype=float, copy=None).reshape(-1)    # contiguous, 1-d
+    if not alpha.flags.c_contiguous:
+        alpha = alpha.copy()
+    k = _k_from_table(alpha)
+    K, E, rel = _relation(k, alpha)
+    s_max = _poly_table()[1]
+    lo, hi = float(rel.min(initial=0.0)), float(rel.max(initial=0.0))
+    if not max(-lo, hi) * s_max <= _RTOL_K:
+        bad = ~(np.abs(rel) * s_max <= _RTOL_K)
+        log.debug("ellipticity: %d values polished by Newton", int(bad.sum()))
+        kb, Kb, Eb = _solve_k_newton(alpha[bad])
+        k[bad], K[bad], E[bad] = kb, Kb, Eb
+    return k.reshape(shape), K.reshape(shape), E.reshape(shape)
+
+
+_FLOAT64, _INT64 = struct.Struct("d"), struct.Struct("q")
+
+
+@functools.cache
+def _poly_rows() -> list:
+    """:func:`_poly_table`'s coefficients as Python floats, one list per interval."""
+    return _poly_table()[0].T.tolist()
+
+
+@functools.cache
+def _d1_coef_list() -> list:
+    return d1_series_coefficients(_SERIES_TERMS).tolist()
+
+
+def _solve_k_scalar(alpha: float):
+    """:func:`_solve_k` for one Python float, the same operations in the same order
+    (bit-for-bit the same result; ``tests/test_speed_paths.py``)."""
+    coef, s_max = _poly_table()
+    bits = _INT64.unpack(_FLOAT64.pack(alpha))[0]
+    i = (bits >> _SHIFT) - _IDX0
+    t = float(bits & _FRAC_MASK) * _FRAC_SCALE
+    c = _poly_rows()[i]
+    k = c[_DEG]
+    for d in range(_DEG - 1, -1, -1):
+        k = k * t + c[d]
+    p = 1.0 / (k * k)
+    m = 1.0 - p
+    K = float(special.ellipkm1(p))
+    E = float(special.ellipe(m))
+    if m < _SERIES_M:
+        ms = (k - 1.0) * (k + 1.0) / (k * k)
+        D1 = 0.0
+        for cf in _d1_coef_list():
+            D1 = D1 * ms + cf
+    else:
+        D1 = (K - E) / m
+    rel = (K - D1) / (p * D1 * alpha) - 1.0
+    if not abs(rel) * s_max <= _RTOL_K:
+        kb, Kb, Eb = _solve_k_newton(np.array([alpha]))
+        return float(kb[0]), float(Kb[0]), float(Eb[0])
     return k, K, E
 
 
@@ -479,35 +640,196 @@ class HertzContact:
 
 def _radius_ratio(Rx, Ry) -> np.ndarray:
     """Larger over smaller effective radius, checked against the ellipticity solver's range."""
-    alpha = np.where(Ry >= Rx, Ry / Rx, Rx / Ry)
-    if np.any(alpha > _ALPHA_MAX):
+    alpha = np.maximum(Rx, Ry)
+    alpha /= np.minimum(Rx, Ry)
+    if not alpha.max(initial=1.0) <= _ALPHA_MAX:
         raise ValueError(f"radius ratio Ry/Rx must be in [1e-8, 1e8] [-]; got "
                          f"{float(np.max(alpha)):g} (close to line contact: use line_contact)")
     return alpha
 
 
 def _contact_from_parts(Q, Rx, Ry, Ep, method) -> HertzContact:
-    """Internal: contact for validated, broadcast arrays."""
-    R = Rx * Ry / (Rx + Ry)
-    k, K, E = _ellipticity(_radius_ratio(Rx, Ry), method)
-    # Hamrock & Dowson (1981) eqs. 3.8-3.16; Ricci (2009) eqs. 12-13
-    c = (6.0 / np.pi) * E * Q * R / Ep
-    a = np.cbrt(c * k * k)
-    b = np.cbrt(c / k)
-    x = Q / (k * Ep)
-    approach = K * np.cbrt((4.5 / np.pi**2) * x * x / (E * R))
-    unloaded = Q == 0
-    if np.any(unloaded):
-        with np.errstate(divide="ignore", invalid="ignore"):
-            p_max = np.where(unloaded, 0.0, (1.5 / np.pi) * Q / (a * b))
+    r"""Internal: contact for validated, broadcast arrays.
+
+    Hamrock & Dowson (1981) eqs. 3.8-3.16, 3.33; Ricci (2009) eqs. 12-13, with one cube
+    root: b = (6 E Q R / (pi k E'))^(1/3), a = k b, and the approach
+    delta = K (9/(2 E R)) (Q/(pi k E'))^2)^(1/3) = K b^2 / (2 E R).
+    :func:`_contact_scalar` repeats these operations for one contact.
+    """
+    n = np.size(Q)
+    if np.ndim(Q) == 1 and n > 2 * _BLOCK:
+        # blocks that stay in cache: the temporaries of a whole 10^5-element array are
+        # fresh megabyte allocations (page faults) and cache misses
+        out = [np.empty(n) for _ in range(8)]
+        work = [np.empty(_BLOCK) for _ in range(7)]
+        iwork = [np.empty(_BLOCK, dtype=np.int64) for _ in range(2)]
+        try:
+            for i in range(0, n, _BLOCK):
+                j = min(i + _BLOCK, n)
+                o = [v[i:j] for v in out]
+                if method == "exact":
+                    _exact_block(Q[i:j], Rx[i:j], Ry[i:j], Ep[i:j], o,
+                                 [w[:j - i] for w in work], [w[:j - i] for w in iwork])
+                else:
+                    for dst, v in zip(o, _contact_arrays(Q[i:j], Rx[i:j], Ry[i:j], Ep[i:j],
+                                                         method)):
+                        dst[...] = v
+        except ValueError:
+            _radius_ratio(Rx, Ry)              # the message for the whole array
+            raise
     else:
-        p_max = (1.5 / np.pi) * Q / (a * b)
-    # Hamrock & Dowson (1981) eq. 3.33: Q = K delta^1.5
-    stiffness = np.pi * k * Ep * np.sqrt((2.0 / 9.0) * E * R / (K * K * K))
+        out = _contact_arrays(Q, Rx, Ry, Ep, method)
+    k, a, b, approach, p_max, stiffness, K, E = out
     s = _scalar
     return HertzContact(load=s(Q), Rx=s(Rx), Ry=s(Ry), E_prime=s(Ep), k=s(k), a=s(a), b=s(b),
                         approach=s(approach), p_max=s(p_max), stiffness=s(stiffness),
                         ellipk=s(K), ellipe=s(E), method=method)
+
+
+_BLOCK = 8192                          # elements per block of the vectorized contact
+
+
+def _exact_block(Q, Rx, Ry, Ep, out, w, iw):
+    """:func:`_contact_arrays` (exact method) for one block, in place.
+
+    The same operations in the same order, written into the output slices ``out`` =
+    (k, a, b, approach, p_max, stiffness, K, E) and the block-sized work arrays ``w``
+    (7 float) and ``iw`` (2 int64): no allocation per operation, everything in cache.
+    Bit-for-bit the result of :func:`_contact_arrays` (``tests/test_speed_paths.py``).
+    """
+    k, a, b, approach, p_max, stiff, K, E = out
+    alpha, w1, w2, w3, w4, w5, w6 = w
+    np.maximum(Rx, Ry, out=alpha)                         # _radius_ratio
+    np.minimum(Rx, Ry, out=w1)
+    np.divide(alpha, w1, out=alpha)
+    if not alpha.max(initial=1.0) <= _ALPHA_MAX:
+        raise ValueError("radius ratio")                  # reworded for the whole array
+    coef, s_max = _poly_table()                           # _k_from_table
+    bits = alpha.view(np.int64)
+    idx, tb = iw
+    np.right_shift(bits, _SHIFT, out=idx)
+    np.subtract(idx, _IDX0, out=idx)
+    np.bitwise_and(bits, _FRAC_MASK, out=tb)
+    t = w1
+    t[...] = tb
+    np.multiply(t, _FRAC_SCALE, out=t)
+    np.take(coef[_DEG], idx, out=k)
+    for d in range(_DEG - 1, -1, -1):
+        np.multiply(k, t, out=k)
+        np.add(k, np.take(coef[d], idx, out=w2), out=k)
+    p, m, D1 = w2, w3, w4                                 # _relation
+    np.multiply(k, k, out=p)
+    np.divide(1.0, p, out=p)
+    np.subtract(1.0, p, out=m)
+    special.ellipkm1(p, out=K)
+    special.ellipe(m, out=E)
+    np.subtract(K, E, out=D1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        np.divide(D1, m, out=D1)
+    small = m < _SERIES_M
+    if small.any():
+        ks = k[small]
+        D1[small] = _d1_series((ks - 1.0) * (ks + 1.0) / (ks * ks))
+    np.multiply(p, D1, out=w5)
+    np.multiply(w5, alpha, out=w5)
+    np.subtract(K, D1, out=w6)
+    np.divide(w6, w5, out=w6)                             # rel + 1
+    lo, hi = float(w6.min()) - 1.0, float(w6.max()) - 1.0
+    if not max(-lo, hi) * s_max <= _RTOL_K:
+        rel = w6 - 1.0
+        bad = ~(np.abs(rel) * s_max <= _RTOL_K)
+        log.debug("ellipticity: %d values polished by Newton", int(bad.sum()))
+        kb, Kb, Eb = _solve_k_newton(alpha[bad])
+        k[bad], K[bad], E[bad] = kb, Kb, Eb
+    R, ER, c = w1, w2, w3                                 # the contact
+    np.multiply(Rx, Ry, out=R)
+    np.add(Rx, Ry, out=w4)
+    np.divide(R, w4, out=R)
+    np.multiply(E, R, out=ER)
+    np.multiply(6.0 / np.pi, ER, out=c)
+    np.multiply(c, Q, out=c)
+    np.divide(c, Ep, out=c)
+    np.divide(c, k, out=c)
+    np.cbrt(c, out=b)
+    np.multiply(b, k, out=a)
+    np.multiply(K, b, out=approach)
+    np.multiply(approach, b, out=approach)
+    np.multiply(2.0, ER, out=w4)
+    np.divide(approach, w4, out=approach)
+    ab = w5
+    np.multiply(a, b, out=ab)
+    if (Q == 0).any():
+        with np.errstate(divide="ignore", invalid="ignore"):
+            p_max[...] = np.where(Q == 0, 0.0, (1.5 / np.pi) * Q / ab)
+    else:
+        np.multiply(1.5 / np.pi, Q, out=p_max)
+        np.divide(p_max, ab, out=p_max)
+    np.multiply(2.0 / 9.0, ER, out=w6)
+    np.multiply(K, K, out=w4)
+    np.multiply(w4, K, out=w4)
+    np.divide(w6, w4, out=w6)
+    np.sqrt(w6, out=w6)
+    np.multiply(np.pi, k, out=stiff)
+    np.multiply(stiff, Ep, out=stiff)
+    np.multiply(stiff, w6, out=stiff)
+
+
+def _contact_arrays(Q, Rx, Ry, Ep, method):
+    """(k, a, b, approach, p_max, stiffness, K, E) of validated, broadcast arrays."""
+    k, K, E = _ellipticity(_radius_ratio(Rx, Ry), method)
+    R = Rx * Ry
+    R /= Rx + Ry
+    ER = E * R
+    c = (6.0 / np.pi) * ER
+    c *= Q
+    c /= Ep
+    c /= k
+    b = np.cbrt(c)
+    a = b * k
+    approach = K * b
+    approach *= b
+    approach /= 2.0 * ER
+    ab = a * b
+    if (Q == 0).any():
+        with np.errstate(divide="ignore", invalid="ignore"):
+            p_max = np.where(Q == 0, 0.0, (1.5 / np.pi) * Q / ab)
+    else:
+        p_max = (1.5 / np.pi) * Q
+        p_max /= ab
+    # Hamrock & Dowson (1981) eq. 3.33: Q = K delta^1.5
+    w = (2.0 / 9.0) * ER
+    w /= K * K * K
+    stiffness = (np.pi * k) * Ep
+    stiffness *= np.sqrt(w)
+    return k, a, b, approach, p_max, stiffness, K, E
+
+
+def _contact_scalar(Q: float, Rx: float, Ry: float, Ep: float) -> HertzContact:
+    """:func:`_contact_from_parts` (exact method) for one contact of Python floats.
+
+    The same operations in the same order on Python floats (IEEE double, like NumPy's),
+    NumPy's own ``cbrt`` and SciPy's elliptic integrals: bit-for-bit the array path's
+    result (``tests/test_speed_paths.py``), some 20 times faster.  Inputs validated.
+    """
+    alpha = (Rx if Rx > Ry else Ry) / (Ry if Rx > Ry else Rx)
+    if not alpha <= _ALPHA_MAX:
+        return _contact_from_parts(*np.broadcast_arrays(Q, Rx, Ry, Ep), "exact")  # raises
+    k, K, E = _solve_k_scalar(alpha)
+    R = Rx * Ry / (Rx + Ry)
+    ER = E * R
+    c = (6.0 / np.pi) * ER * Q / Ep / k
+    b = float(_cbrt(c))
+    a = b * k
+    approach = K * b * b / (2.0 * ER)
+    p_max = (1.5 / np.pi) * Q / (a * b) if Q != 0 else 0.0
+    stiffness = (np.pi * k) * Ep * math.sqrt((2.0 / 9.0) * ER / (K * K * K))
+    f = np.float64
+    return HertzContact(load=f(Q), Rx=f(Rx), Ry=f(Ry), E_prime=f(Ep), k=f(k), a=f(a), b=f(b),
+                        approach=f(approach), p_max=f(p_max), stiffness=f(stiffness),
+                        ellipk=f(K), ellipe=f(E), method="exact")
+
+
+_cbrt = np.cbrt
 
 
 def elliptical_contact(load, Rx, Ry, E_prime, method: str = "exact") -> HertzContact:
@@ -549,6 +871,11 @@ def elliptical_contact(load, Rx, Ry, E_prime, method: str = "exact") -> HertzCon
     >>> round(float(c.a) * 1e3, 4), round(float(c.p_max) / 1e9, 4)
     (0.3244, 4.5383)
     """
+    if method == "exact":                       # one contact of plain numbers: fast path
+        q, x, y, e = _real(load), _real(Rx), _real(Ry), _real(E_prime)
+        if (q is not None and x is not None and y is not None and e is not None
+                and _load_ok(q) and _size_ok(x) and _size_ok(y) and _size_ok(e)):
+            return _contact_scalar(q, x, y, e)
     check_choice(method, "method", METHODS)
     Q = check_nonnegative(load, "load", "N", bounded=True)
     Rx = check_positive(Rx, "Rx", "m", bounded=True)
@@ -556,6 +883,35 @@ def elliptical_contact(load, Rx, Ry, E_prime, method: str = "exact") -> HertzCon
     Ep = check_positive(E_prime, "E_prime", "Pa", bounded=True)
     Q, Rx, Ry, Ep = broadcast(load=Q, Rx=Rx, Ry=Ry, E_prime=Ep)
     return _contact_from_parts(Q, Rx, Ry, Ep, method)
+
+
+# scalar fast paths: plain float checks that accept exactly what the array checks accept;
+# anything else (arrays, odd types, a value out of range) goes the array way, which
+# raises the documented errors
+def _real(x):
+    """``x`` as a Python float if it is a plain float or a moderate int (not bool), else None."""
+    t = type(x)
+    if t is float or t is np.float64:
+        return float(x)
+    if t is int and -(2**53) <= x <= 2**53:
+        return float(x)
+    return None
+
+
+def _load_ok(q: float) -> bool:
+    """check_nonnegative(..., bounded=True) passes: 0, or finite in [1e-30, 1e30]."""
+    return q == 0.0 or MIN_MAGNITUDE <= q <= MAX_MAGNITUDE
+
+
+def _size_ok(x: float) -> bool:
+    """check_positive(..., bounded=True) passes: in [1e-30, 1e30]."""
+    return MIN_MAGNITUDE <= x <= MAX_MAGNITUDE
+
+
+def _radius_ok(r: float) -> bool:
+    """:func:`_radius` passes: non-zero, +-inf, or magnitude in [1e-30, 1e30]."""
+    a = abs(r)
+    return a == math.inf or MIN_MAGNITUDE <= a <= MAX_MAGNITUDE
 
 
 def point_contact(load, rx1, ry1, rx2, ry2, material1: Material,
@@ -598,6 +954,16 @@ def point_contact(load, rx1, ry1, rx2, ry2, material1: Material,
     >>> round(float(c.a) * 1e6, 2), round(float(c.p_max) / 1e6, 1), round(float(c.approach) * 1e6, 3)
     (129.4, 2851.3, 5.274)
     """
+    if method == "exact":                       # one contact of plain numbers: fast path
+        q, x1, y1, x2, y2 = _real(load), _real(rx1), _real(ry1), _real(rx2), _real(ry2)
+        if (q is not None and x1 is not None and y1 is not None and x2 is not None
+                and y2 is not None and _load_ok(q) and _radius_ok(x1) and _radius_ok(y1)
+                and _radius_ok(x2) and _radius_ok(y2)):
+            cx = 1.0 / x1 + 1.0 / x2                    # as curvature()
+            cy = 1.0 / y1 + 1.0 / y2
+            if cx > 0.0 and cy > 0.0:
+                Ep = effective_modulus(material1, material2)
+                return _contact_scalar(q, 1.0 / cx, 1.0 / cy, Ep)
     check_choice(method, "method", METHODS)
     Ep = effective_modulus(material1, material2)
     Q = check_nonnegative(load, "load", "N", bounded=True)

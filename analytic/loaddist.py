@@ -52,12 +52,14 @@ from __future__ import annotations
 
 import functools
 import logging
+import math
+import weakref
 from dataclasses import dataclass, field, replace
 
 import numpy as np
 
 from . import hertz
-from ._checks import (as_array, broadcast, check_choice, check_integer, check_nonnegative,
+from ._checks import (MAX_MAGNITUDE, as_array, broadcast, check_choice, check_integer, check_nonnegative,
                       check_positive, check_range)
 from .bearing import BallBearing
 
@@ -151,62 +153,79 @@ def _kn_exact(model, beta):
 #: Required accuracy of the tabulated ln K_n(cos beta) against exact Hertz (absolute in
 #: ln K_n, i.e. relative in K_n), checked when the table is built.
 _TABLE_TOL = 1e-13
+#: Required accuracy of its derivative d ln K_n / d beta, relative to the largest value.
+_TABLE_DTOL = 5e-9
 
 
 def _kn_table(model):
-    """Chebyshev series of ln K_n in t = cos(beta) on [-1, 1], or None if not accurate.
+    """Chebyshev series of ln K_n in tau = 2 cos(beta) - 1 (beta in [0, 90] deg), or None.
 
     K_n depends on beta only through gamma = (D/d_e) cos(beta) (Ricci 2009 eqs. 8-11),
-    an analytic function of t, so a Chebyshev interpolant converges geometrically.  The
-    series is accepted only if it reproduces the exact Hertz value to ``_TABLE_TOL`` at
-    1001 check points and its derivative to 1e-9 relative; otherwise the exact
-    evaluation is used throughout.
+    an analytic function of t = cos(beta), so a Chebyshev interpolant converges
+    geometrically.  Only t in [0, 1] is tabulated: a ball touches only where its
+    groove-centre line points outwards (x > 0, |beta| < 90 deg); :func:`_kn` evaluates
+    the exact solution for the rare t < 0.  The series is accepted only if it reproduces
+    the exact Hertz value to ``_TABLE_TOL`` at 1001 check points and its derivative to
+    ``_TABLE_DTOL`` relative (it enters only the Jacobian); otherwise the exact evaluation is used throughout.  Returns an
+    (n, 2) array: the coefficients of ln K_n and of its tau-derivative.
     """
     C = np.polynomial.chebyshev
-    t_chk = np.cos(np.linspace(0.0, np.pi, 1001))
-    b_chk = np.arccos(t_chk)
+    b_chk = np.linspace(0.0, 0.5 * np.pi, 1001)
+    tau_chk = 2.0 * np.cos(b_chk) - 1.0
     Kx, dx = _kn_exact(model, b_chk)
-    for deg in (24, 40, 64, 96):
-        c = C.chebinterpolate(lambda t: np.log(_kn_exact(model, np.arccos(np.clip(t, -1, 1)))[0]),
-                              deg)
-        err = np.max(np.abs(C.chebval(t_chk, c) - np.log(Kx)))
-        kc = np.arange(c.size) * c
-        d = -(np.sin(b_chk[:, None] * np.arange(c.size)) @ kc)
+    for deg in (10, 12, 14, 16, 20, 24):       # rounding noise grows with the degree
+        c = C.chebinterpolate(
+            lambda x: np.log(_kn_exact(model, np.arccos(np.clip(0.5 * (x + 1.0), 0, 1)))[0]),
+            deg)
+        err = np.max(np.abs(C.chebval(tau_chk, c) - np.log(Kx)))
+        cd = np.append(C.chebder(c), 0.0)
+        d = -2.0 * np.sin(b_chk) * C.chebval(tau_chk, cd)
         derr = np.max(np.abs(d - dx)) / max(np.max(np.abs(dx)), 1e-300)
-        if err <= _TABLE_TOL and derr <= 1e-9:
+        if err <= _TABLE_TOL and derr <= _TABLE_DTOL:
             log.debug("K_n table: degree %d, max error %.2e (ln K_n), %.2e (derivative)",
                       deg, err, derr)
-            return c, kc, kc[1:].copy()
-    log.info("K_n table not accurate enough (%.2e); using exact Hertz at every step", err)
+            return np.ascontiguousarray(np.stack([c, cd], axis=1))
+    log.info("K_n table not accurate enough (%.2e, %.2e); using exact Hertz at every step",
+             err, derr)
     return None
 
 
-def _kn(model, beta):
+def _kn(model, beta, c=None, sn=None):
     """Ball stiffness K_n(beta) [N/m^1.5] and d ln K_n / d beta [1/rad] (arrays).
 
-    With the table, ln K_n = sum c_k T_k(cos beta) = sum c_k cos(k beta): a cosine series
-    (one matrix product) for small arrays, Clenshaw's recurrence in cos(beta) for large
-    ones; the derivative is -sin(beta) sum k c_k U_{k-1}(cos beta), term by term.
+    With the table, ln K_n = sum a_k T_k(tau), tau = 2 cos(beta) - 1: T_k(tau) =
+    cos(k theta), theta = arccos(tau), as one matrix product for small arrays, Clenshaw's
+    recurrence for large ones; d ln K_n / d beta = -2 sin(beta) d ln K_n / d tau from the
+    derivative series.  ``c``, ``sn``: cos(beta), sin(beta) when known.  Exact Hertz where
+    cos(beta) < 0 (beyond the table; such balls are unloaded in the solver).
     """
     if model.table is None:
         return _kn_exact(model, beta)
-    c, kc, cu = model.table
-    n = c.size
-    if beta.size * n <= 4096:
-        arg = beta[..., None] * np.arange(n)
-        return np.exp(np.cos(arg) @ c), -(np.sin(arg) @ kc)
-    t = np.cos(beta)
-    t2 = 2.0 * t
-    b1 = np.zeros_like(t)                  # Clenshaw for sum c_k T_k(t)
-    b2 = np.zeros_like(t)
-    for ck in c[:0:-1]:
-        b1, b2 = t2 * b1 - b2 + ck, b1
-    lnK = t * b1 - b2 + c[0]
-    b1 = np.zeros_like(t)                  # Clenshaw for sum cu_k U_k(t), cu_k = (k+1) c_{k+1}
-    b2 = np.zeros_like(t)
-    for ck in cu[::-1]:
-        b1, b2 = t2 * b1 - b2 + ck, b1
-    return np.exp(lnK), -np.sin(beta) * b1
+    if c is None:
+        c, sn = np.cos(beta), np.sin(beta)
+    tab = model.table
+    n = tab.shape[0]
+    tau = 2.0 * c - 1.0
+    if tau.size * n <= 4096:
+        th = np.arccos(np.maximum(tau, -1.0))
+        v = np.cos(th[..., None] * np.arange(n)) @ tab
+        lnK, dtau = v[..., 0], v[..., 1]
+    else:
+        tau = np.maximum(tau, -1.0)
+        t2 = 2.0 * tau
+        out = []
+        for col in (tab[:, 0], tab[:, 1]):             # Clenshaw for sum a_k T_k(tau)
+            b1 = np.zeros_like(tau)
+            b2 = np.zeros_like(tau)
+            for ck in col[:0:-1]:
+                b1, b2 = t2 * b1 - b2 + ck, b1
+            out.append(tau * b1 - b2 + col[0])
+        lnK, dtau = out
+    Kn, d = np.exp(lnK), -2.0 * sn * dtau
+    if not c.min(initial=0.0) >= 0.0:
+        neg = c < 0
+        Kn[neg], d[neg] = _kn_exact(model, np.asarray(beta)[neg])
+    return Kn, d
 
 
 def ball_stiffness(bearing: BallBearing, contact_angle):
@@ -267,13 +286,30 @@ class _Model:
     Z: int
     beta_f: float
     Pd: float
-    table: tuple | None = None
+    table: np.ndarray | None = None
     Kn_free: float = 0.0
     capacity: float = np.inf
+    geos: dict = field(default_factory=dict, repr=False, compare=False)  # _geo() cache
+
+    @staticmethod
+    def of(b: BallBearing) -> "_Model":
+        """The model of bearing ``b``: looked up by identity (a dict and a weak reference,
+        about 0.3 us), else by value (hashing the frozen bearing, some us), else built."""
+        hit = _MODELS.get(id(b))
+        if hit is not None and hit[0]() is b:
+            return hit[1]
+        m = _Model._of(b)
+        key = id(b)
+
+        def forget(ref, key=key):
+            if _MODELS.get(key, (None,))[0] is ref:
+                del _MODELS[key]
+        _MODELS[key] = (weakref.ref(b, forget), m)
+        return m
 
     @staticmethod
     @functools.lru_cache(maxsize=64)
-    def of(b: BallBearing) -> "_Model":
+    def _of(b: BallBearing) -> "_Model":
         if b.n_rows != 1:
             raise NotImplementedError(
                 f"load distribution is implemented for single-row bearings (n_rows=1); "
@@ -290,6 +326,10 @@ class _Model:
         return replace(m, table=_kn_table(m), Kn_free=Kf, capacity=cap)
 
 
+#: id(bearing) -> (weak reference to it, its _Model): see _Model.of
+_MODELS: dict = {}
+
+
 def _reference(model: _Model, clearance, centered: bool):
     """(x0, z0): groove-centre separation of the reference configuration (H&D 3.39, 3.61)."""
     if clearance is None:
@@ -302,10 +342,24 @@ def _reference(model: _Model, clearance, centered: bool):
 
 
 # =========================================================================== kernel
+def _geo(model, bearing, azimuth_offset, x0, z0):
+    """The _Geo of a solve, cached on the model for plain finite float offsets."""
+    key = (azimuth_offset, x0, z0)
+    plain = type(azimuth_offset) is float and math.isfinite(azimuth_offset)
+    if plain:
+        g = model.geos.get(key)
+        if g is not None:
+            return g
+    g = _Geo(model, bearing.azimuths(azimuth_offset), x0, z0)
+    if plain and len(model.geos) < 64:
+        model.geos[key] = g
+    return g
+
+
 class _Geo:
     """Per-solve constants: ball azimuths and the kinematic vectors dx_j/du, dz_j/du."""
 
-    __slots__ = ("psi", "cp", "sp", "gx", "gz", "G", "x0", "z0", "A", "g0")
+    __slots__ = ("psi", "cp", "sp", "gx", "gz", "G", "G2", "kk", "x0", "z0", "A", "g0")
 
     def __init__(self, model, psi, x0, z0):
         Z = psi.size
@@ -316,6 +370,10 @@ class _Geo:
         gz[:, 0], gz[:, 3], gz[:, 4] = 1.0, model.Ri * self.sp, -model.Ri * self.cp
         self.gx, self.gz = gx, gz
         self.G = np.stack([gx, gz], axis=1)                  # (Z, 2, 5)
+        self.G2 = np.concatenate([gx, gz])                   # (2Z, 5): (dx; dz) = G2 u
+        kk = np.zeros((Z, 5))                                # d(contact-arm vector)/d r
+        kk[:, 3], kk[:, 4] = self.sp, -self.cp
+        self.kk = kk
         self.x0, self.z0, self.A = x0, z0, model.A
         # x0^2 + z0^2 - A^2 without cancellation: 0 for the touching reference,
         # (x0 - A)(x0 + A) = -(P_d/2)(x0 + A) for the centred one
@@ -340,6 +398,9 @@ class _State:
     __slots__ = ("s", "beta", "c", "sn", "delta", "Kn", "dlnK", "Q", "F", "J")
 
     def __init__(self, model, geo, u, arm, jac=True, Kn=None):
+        if u.shape[0] == 1 and jac and Kn is None:
+            self._one(model, geo, u[0], arm)
+            return
         x, z, s, delta = geo.xz(u)
         s = np.maximum(s, 1e-300)
         c, sn = x / s, z / s
@@ -361,6 +422,55 @@ class _State:
         self.s, self.beta, self.c, self.sn = s, beta, c, sn
         self.delta, self.Kn, self.dlnK, self.Q, self.F = delta, Kn, dlnK, Q, F
         self.J = _jacobian(model, geo, self, arm) if jac else None
+
+    def _one(self, model, geo, u, arm):
+        """One load case (u of shape (5,)): the same quantities with fewer array operations.
+
+        With e = (cos b, sin b), t = (-sin b, cos b) per ball and the kinematic rows
+        g_e = e G = d(approach)/du, g_t = t G (G = (dx/du; dz/du)), dQ/du = k15 g_e +
+        qk g_t (k15 = 1.5 K_n delta^0.5, qk = Q (dlnK_n/dbeta)/s) and d e/du = t g_t / s:
+        F = sum Q h_e,  J = sum h_e (x) dQ/du + (Q/s) h_t (x) g_t [+ contact-arm term],
+        h_e = cos b g_x + sin b h, h_t = -sin b g_x + cos b h, h = g_z (groove arm) or
+        (1, 0, 0, r sin psi, -r cos psi), r = (d_e - D cos b)/2 (contact arm), whose
+        change with beta adds Q sin b (D/2) sin b / s (0,0,0, sin psi, -cos psi) (x) g_t.
+        """
+        Z = geo.cp.size
+        d = geo.G2 @ u
+        dx, dz = d[:Z], d[Z:]
+        x = dx + geo.x0
+        z = dz + geo.z0
+        s = np.hypot(x, z)
+        approach = (geo.g0 + dx * (2.0 * geo.x0 + dx) + dz * (2.0 * geo.z0 + dz)) / (s + geo.A)
+        s = np.maximum(s, 1e-300)
+        c, sn = x / s, z / s
+        beta = np.arctan2(z, x)
+        delta = np.maximum(approach, 0.0)
+        if not x.min() > 0:
+            delta[~(x > 0)] = 0.0
+        Kn, dlnK = _kn(model, beta, c, sn)
+        sq = np.sqrt(delta)
+        Q = Kn * delta * sq
+        cc, ss = c[:, None], sn[:, None]
+        ge = cc * geo.gx + ss * geo.gz
+        gt = cc * geo.gz - ss * geo.gx
+        qs = Q / s
+        V = (1.5 * Kn * sq)[:, None] * ge + (qs * dlnK)[:, None] * gt
+        if arm == "groove":
+            he, ht = ge, gt
+            F = Q @ he
+            J = he.T @ V + (qs[:, None] * ht).T @ gt
+        else:
+            r = 0.5 * (model.dm - model.D * c)
+            h = geo.kk * r[:, None]
+            h[:, 0] = 1.0
+            he = cc * geo.gx + ss * h
+            ht = cc * h - ss * geo.gx
+            F = Q @ he
+            w = qs * sn * sn * (0.5 * model.D)
+            J = he.T @ V + (qs[:, None] * ht + w[:, None] * geo.kk).T @ gt
+        self.s, self.beta, self.c, self.sn = s[None], beta[None], c[None], sn[None]
+        self.delta, self.Kn, self.dlnK, self.Q = delta[None], Kn[None], dlnK[None], Q[None]
+        self.F, self.J = F[None], J[None]
 
 
 def _jacobian(model, geo, st, arm):
@@ -418,6 +528,8 @@ _FLOOR_CAP = 1e-9
 #: Load-deflection range of the model: contact approach of a ball up to this fraction of D
 #: (some ten times the approach at the static-capacity stress of 4.2 GPa).
 MAX_APPROACH_RATIO = 0.1
+
+_EPS20 = 20.0 * float(np.finfo(float).eps)
 
 
 def _floor(rtol, dmax, umax):
@@ -589,45 +701,89 @@ def _newton(model, geo, F, u0, fixed, arm, rtol, max_iter, strict=True):
     return u, iters, conv
 
 
+def _solve_small(A, b):
+    """Solve A x = b (lists; A square, small) by Gaussian elimination with partial pivoting.
+
+    LAPACK's gesv algorithm on Python floats: for a 5 x 5 system some ten times faster than
+    ``numpy.linalg.solve``'s call overhead.  ``numpy.linalg.LinAlgError`` if singular.
+    """
+    n = len(b)
+    M = [row[:] + [b[i]] for i, row in enumerate(A)]
+    for k in range(n):
+        p, big = k, abs(M[k][k])
+        for i in range(k + 1, n):
+            if abs(M[i][k]) > big:
+                p, big = i, abs(M[i][k])
+        if M[p][k] == 0.0 or M[p][k] != M[p][k]:
+            raise np.linalg.LinAlgError("Singular matrix")
+        if p != k:
+            M[k], M[p] = M[p], M[k]
+        rk = M[k]
+        piv = rk[k]
+        for i in range(k + 1, n):
+            ri = M[i]
+            f = ri[k] / piv
+            if f != 0.0:
+                for j in range(k + 1, n + 1):
+                    ri[j] -= f * rk[j]
+    x = [0.0] * n
+    for i in range(n - 1, -1, -1):
+        ri = M[i]
+        acc = ri[n]
+        for j in range(i + 1, n):
+            acc -= ri[j] * x[j]
+        x[i] = acc / ri[i]
+    return x
+
+
 def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
     """`_newton` for a single load case, with scalar control flow.
 
     The same iteration -- scaled Newton step with the Levenberg floor, the symmetric
     frozen-stiffness fallback, the trust radius, the Armijo search on the frozen-stiffness
     potential ("groove" arm) or on the residual norm ("contact" arm), the round-off floor --
-    without the vectorized driver's active-set indexing, which for one case costs more
-    than the physics.  ``tests/test_loaddist.py`` checks that both drivers agree.
-    Returns (u (1,5), iterations (1,), final _State).
+    without the vectorized driver's active-set indexing, and with the five-component
+    bookkeeping (residual, scaled Jacobian, linear solve, step) in Python floats, which for
+    one case cost more than the physics as NumPy calls.  ``tests/test_loaddist.py`` checks
+    that both drivers agree.  Returns (u (1,5), iterations (1,), final _State).
     """
-    sc = np.array([1.0, 1.0, 1.0, model.Ri, model.Ri])
-    sc2 = np.outer(sc, sc)
-    fx = fixed[0]
-    anyfixed = bool(fx.any())
-    n_free = max(int((~fx).sum()), 1)
-    F = np.where(fx, 0.0, F[0])
-    Fs_ext = float(np.abs(F / sc).max())
+    Ri = float(model.Ri)
+    sc = [1.0, 1.0, 1.0, Ri, Ri]
+    fx = [bool(v) for v in fixed[0]]
+    anyfixed = any(fx)
+    free = [i for i in range(5) if not fx[i]]
+    n_free = max(len(free), 1)
+    F = [0.0 if fx[i] else float(v) for i, v in enumerate(F[0])]
+    Fs_ext = max(abs(F[i] / sc[i]) for i in range(5))
     step_max = 0.25 * model.A
+    Farr = np.array(F)
 
     def residual(st):
-        R = (st.F[0] - F) / sc
-        if anyfixed:
-            R[fx] = 0.0
+        Fst = st.F[0].tolist()
+        R = [0.0 if fx[i] else (Fst[i] - F[i]) / sc[i] for i in range(5)]
         qmax = float(st.Q.max())
-        return R, float(np.abs(R).max()) / max(Fs_ext, qmax, 1e-300), qmax
+        return R, max(abs(r) for r in R) / max(Fs_ext, qmax, 1e-300), qmax
 
     def scaled(J, mu):
-        Js = J / sc2
+        Js = [[J[i][j] / (sc[i] * sc[j]) for j in range(5)] for i in range(5)]
         if anyfixed:
-            Js[fx, :] = 0.0
-            Js[:, fx] = 0.0
+            for i in range(5):
+                for j in range(5):
+                    if fx[i] or fx[j]:
+                        Js[i][j] = 0.0
         if mu is None:                                    # Levenberg floor (see _newton)
-            mu = max(1e-12 * abs(float(np.trace(Js))) / n_free,
+            mu = max(1e-12 * abs(sum(Js[i][i] for i in range(5))) / n_free,
                      1e-6 * max(Fs_ext, qmax) / model.A)
-        Js.flat[::6] += np.where(fx, 1.0, mu)
+        for i in range(5):
+            Js[i][i] += 1.0 if fx[i] else mu
         return Js, mu
 
-    u = u0[0].copy()
-    st = _State(model, geo, u[None], arm)
+    def dot(a, b):
+        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] + a[4] * b[4]
+
+    cap = max(_FLOOR_CAP, 100.0 * rtol)
+    u = u0[0].tolist()
+    st = _State(model, geo, np.array(u)[None], arm)
     R, err, qmax = residual(st)
     best = (err if err == err else np.inf, u, st)
     it = 0
@@ -638,47 +794,53 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
                 break
             raise ConvergenceError(
                 f"load distribution did not converge after {it} iterations: relative "
-                f"equilibrium residual {err:.3e} (> rtol={rtol:g}); loads {F.tolist()}, "
-                f"displacements {u.tolist()}")
+                f"equilibrium residual {err:.3e} (> rtol={rtol:g}); loads {F}, "
+                f"displacements {u}")
         it += 1
-        Js, mu = scaled(st.J[0], None)
-        dS = -np.linalg.solve(Js, R)
-        if arm == "groove" and not float(R @ dS) < 0.0:
-            sb = _State(model, geo, u[None], arm, Kn=st.Kn)
-            Jb, _ = scaled(0.5 * (sb.J[0] + sb.J[0].T), mu)
-            dS = -np.linalg.solve(Jb, R)
-        size = float(np.abs(dS).max())
+        Js, mu = scaled(st.J[0].tolist(), None)
+        dS = [-v for v in _solve_small(Js, R)]
+        if arm == "groove" and not dot(R, dS) < 0.0:
+            sb = _State(model, geo, np.array(u)[None], arm, Kn=st.Kn)
+            Jsym = (0.5 * (sb.J[0] + sb.J[0].T)).tolist()
+            Jb, _ = scaled(Jsym, mu)
+            dS = [-v for v in _solve_small(Jb, R)]
+        size = max(abs(v) for v in dS)
         if size > step_max:
-            dS *= step_max / size
-        g = float(R @ dS)
-        du = dS / sc
+            f = step_max / size
+            dS = [v * f for v in dS]
+        g = dot(R, dS)
+        du = [dS[i] / sc[i] for i in range(5)]
         t = 1.0
         local = err < 1e-6
         if arm == "groove":
             if not local:
                 d = st.delta
-                phi0 = 0.4 * float((st.Kn * d * d * np.sqrt(d)).sum()) - float(F @ u)
+                phi0 = 0.4 * float((st.Kn * d * d * np.sqrt(d)).sum()) - dot(F, u)
+                ua, dua = np.array(u), np.array(du)
                 for _ in range(60):
-                    ph = float(_potential(model, geo, (u + t * du)[None], st.Kn, F[None])[0])
+                    ph = float(_potential(model, geo, (ua + t * dua)[None], st.Kn,
+                                          Farr[None])[0])
                     if ph <= phi0 + 1e-4 * t * g:
                         break
                     t *= 0.5
-            unew = u + t * du
-            snew = _State(model, geo, unew[None], arm)
+            unew = [u[i] + t * du[i] for i in range(5)]
+            snew = _State(model, geo, np.array(unew)[None], arm)
             Rn, en, qn = residual(snew)
         else:
-            m0 = float(R @ R)
-            unew = u + du
-            snew = _State(model, geo, unew[None], arm)
+            m0 = dot(R, R)
+            unew = [u[i] + du[i] for i in range(5)]
+            snew = _State(model, geo, np.array(unew)[None], arm)
             Rn, en, qn = residual(snew)
             for _ in range(0 if local else 40):
-                if float(Rn @ Rn) <= m0:
+                if dot(Rn, Rn) <= m0:
                     break
                 t *= 0.5
-                unew = u + t * du
-                snew = _State(model, geo, unew[None], arm)
+                unew = [u[i] + t * du[i] for i in range(5)]
+                snew = _State(model, geo, np.array(unew)[None], arm)
                 Rn, en, qn = residual(snew)
-        fl = float(_floor(rtol, float(snew.delta.max()), float(np.abs(unew * sc).max())))
+        dmx = float(snew.delta.max())                                      # _floor
+        umx = max(abs(unew[i] * sc[i]) for i in range(5))
+        fl = min(max(100.0 * rtol, _EPS20 * umx / dmx), cap) if dmx > 0 else 0.0
         floor = fl >= en > 0.5 * err
         u, st, R, err, qmax = unew, snew, Rn, en, qn
         if err < best[0]:
@@ -688,7 +850,7 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
             break
     if it:
         log.debug("load distribution: converged in %d Newton iterations", it)
-    return u[None], np.array([it]), st
+    return np.array(u)[None], np.array([it]), st
 
 
 # =========================================================================== results
@@ -903,7 +1065,16 @@ def _fold_unloaded(beta, Q):
     return np.where(unl & (beta <= -0.5 * np.pi), beta + np.pi, beta)
 
 
+def _plain(v) -> bool:
+    """A plain finite float (or moderate int, not bool) within the load bound 1e30."""
+    t = type(v)
+    return (t is float or t is np.float64 or (t is int and -(2**53) <= v <= 2**53)) and \
+        -MAX_MAGNITUDE <= v <= MAX_MAGNITUDE
+
+
 def _loads_array(Fa, Fy, Fz, My, Mz):
+    if _plain(Fa) and _plain(Fy) and _plain(Fz) and _plain(My) and _plain(Mz):
+        return np.array([Fa, Fy, Fz, My, Mz], dtype=float)    # what the checks would give
     arrs = [as_array(v, n, bounded=True, tiny_ok=True)
             for v, n in ((Fa, "Fa"), (Fy, "Fy"), (Fz, "Fz"), (My, "My"), (Mz, "Mz"))]
     b = np.broadcast_arrays(*arrs)
@@ -971,7 +1142,7 @@ def _result(bearing, model, psi, x0, z0, Pd, u, applied, imposed, arm, iters, sh
 def solve(bearing: BallBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *, displacements=None,
           clearance=None, azimuth_offset: float = 0.0, moment_arm: str = "groove",
           rtol: float = 1e-12, max_iter: int = 200, initial=None,
-          _centered: bool = False) -> LoadDistribution:
+          _centered: bool = False, _contact_direct: bool = False) -> LoadDistribution:
     r"""General five-degree-of-freedom static load distribution (rigid rings, exact Hertz).
 
     Solves, for the inner-ring displacement u = (dx, dy, dz, theta_y, theta_z), the
@@ -1057,7 +1228,10 @@ def solve(bearing: BallBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *, displ
     model = _Model.of(bearing)
     L = _loads_array(Fa, Fy, Fz, My, Mz)
     if displacements is None:
-        D = np.full(L.shape, np.nan)
+        shape = L.shape[:-1]
+        L = L.reshape(-1, 5)
+        D = None
+        imposed = np.zeros(L.shape, dtype=bool)
     else:
         D = np.asarray(displacements, dtype=float)
         if D.shape[-1:] != (5,):
@@ -1065,19 +1239,20 @@ def solve(bearing: BallBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *, displ
                              f"theta_z) with None/NaN for free DOFs; got shape {D.shape}")
         if np.any(np.isinf(D)):
             raise ValueError("displacements must be finite or None/NaN (free) [m, rad]")
-    L, D = np.broadcast_arrays(L, D)
-    shape = L.shape[:-1]
-    L = L.reshape(-1, 5).astype(float)
-    D = D.reshape(-1, 5)
-    imposed = ~np.isnan(D)
-    if np.any(imposed & (L != 0)):
-        k = int(np.argwhere(imposed & (L != 0))[0][1])
-        raise ValueError(f"the load on DOF {DOF[k]!r} must be 0 when its displacement is "
-                         "imposed (the reaction is returned in result.loads)")
+        L, D = np.broadcast_arrays(L, D)
+        shape = L.shape[:-1]
+        L = L.reshape(-1, 5).astype(float)
+        D = D.reshape(-1, 5)
+        imposed = ~np.isnan(D)
+        if np.any(imposed & (L != 0)):
+            k = int(np.argwhere(imposed & (L != 0))[0][1])
+            raise ValueError(f"the load on DOF {DOF[k]!r} must be 0 when its displacement is "
+                             "imposed (the reaction is returned in result.loads)")
     Pd, x0, z0 = _reference(model, clearance, _centered)
-    psi = bearing.azimuths(azimuth_offset)
+    geo = _geo(model, bearing, azimuth_offset, x0, z0)
+    psi = geo.psi.copy()
     lim = np.array([1.0, 1.0, 1.0, 1.0 / model.Ri, 1.0 / model.Ri]) * model.D
-    if np.any(np.abs(np.nan_to_num(D)) > lim):
+    if D is not None and np.any(np.abs(np.nan_to_num(D)) > lim):
         raise ValueError("imposed displacements must be within +-D = "
                          f"{model.D:g} m (translations) and +-D/R_i = {lim[3]:g} rad (tilts)")
     _check_loads(model, L)
@@ -1088,20 +1263,46 @@ def solve(bearing: BallBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *, displ
             raise ValueError("initial must be within +-D = "
                              f"{model.D:g} m (translations) and +-D/R_i = {lim[3]:g} rad "
                              "(tilts)")
-    u0 = np.where(imposed, np.nan_to_num(D), u0)
-    rtol = float(check_range(rtol, "rtol", 0.0, 1e-3, high_inclusive=True, unit="-"))
-    geo = _Geo(model, psi, x0, z0)
+    if D is not None:
+        u0 = np.where(imposed, np.nan_to_num(D), u0)
+    if not (type(rtol) is float and 0.0 < rtol <= 1e-3):
+        rtol = float(check_range(rtol, "rtol", 0.0, 1e-3, high_inclusive=True, unit="-"))
     st = None
+    direct = moment_arm == "contact" and _contact_direct
     if L.shape[0] == 1:
         try:
-            u, iters, st = _newton_one(model, geo, L, u0, imposed, "groove", rtol, max_iter)
-            if moment_arm == "contact":
-                u, it2, st = _newton_one(model, geo, L, u, imposed, "contact", rtol, max_iter)
-                iters = iters + it2
+            st = None
+            if direct:                  # straight from a close start (eccentric_thrust)
+                try:
+                    u, iters, st = _newton_one(model, geo, L, u0, imposed, "contact", rtol,
+                                               max_iter)
+                except ConvergenceError:
+                    st = None
+            if st is None:
+                u, iters, st = _newton_one(model, geo, L, u0, imposed, "groove", rtol, max_iter)
+                if moment_arm == "contact":
+                    u, it2, st = _newton_one(model, geo, L, u, imposed, "contact", rtol,
+                                             max_iter)
+                    iters = iters + it2
         except ConvergenceError:
             u, iters = _retry(model, geo, L, u0, imposed, moment_arm, rtol, max_iter,
                               np.zeros(1, bool), u0.copy(), np.zeros(1, int))
             st = None
+    elif direct:                        # straight from a close start (eccentric_thrust)
+        u, iters, ok = _newton(model, geo, L, u0, imposed, "contact", rtol, max_iter,
+                               strict=False)
+        if not np.all(ok):
+            b = ~ok
+            ub, ib, okb = _newton(model, geo, L[b], u0[b], imposed[b], "groove", rtol,
+                                  max_iter, strict=False)
+            u2, it2, ok2 = _newton(model, geo, L[b][okb], ub[okb], imposed[b][okb], "contact",
+                                   rtol, max_iter, strict=False)
+            ub[okb], ib[okb] = u2, ib[okb] + it2
+            okb[okb] = ok2
+            u[b], iters[b], ok[b] = ub, iters[b] + ib, okb
+        if not np.all(ok):
+            u, iters = _retry(model, geo, L, u0, imposed, moment_arm, rtol, max_iter, ok, u,
+                              iters)
     else:
         u, iters, ok = _newton(model, geo, L, u0, imposed, "groove", rtol, max_iter,
                                strict=False)
@@ -1115,6 +1316,73 @@ def solve(bearing: BallBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *, displ
                               iters)
     return _result(bearing, model, psi, x0, z0, Pd, u, L, imposed, moment_arm, iters, shape,
                    "exact", state=st, rtol=rtol)
+
+
+def ring_forces(bearing: BallBearing, displacements, *, moment_arm: str = "groove",
+                clearance=None, azimuth_offset: float = 0.0):
+    r"""Resultant of the ball forces on the inner ring and its tangent stiffness at given
+    ring displacements (no equilibrium solve): the inner loop of a shaft-system Newton.
+
+    .. math:: F(u) = \sum_j Q_j(u)\,\frac{\partial \delta_{n,j}}{\partial u}, \qquad
+              K(u) = \frac{\partial F}{\partial u}
+
+    with the model of :func:`solve` (same reference configuration, K_n table, moment arm);
+    K is analytic (chain rule through each ball's approach and contact angle, including
+    dK_n/dbeta), not a finite difference.  ``solve(...).loads`` and ``.stiffness`` are
+    these at the equilibrium displacements.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        Single-row bearing.
+    displacements : array_like
+        Shape (..., 5): inner-ring (dx, dy, dz [m], theta_y, theta_z [rad]) from the
+        reference configuration, within +-D (translations) and +-D/R_i (tilts).
+    moment_arm : {"groove", "contact"}
+        As in :func:`solve`.
+    clearance : float, optional
+        Diametral clearance P_d [m], < 2A; default the bearing's.
+    azimuth_offset : float, optional
+        Azimuth of ball 1 from +y [rad].
+
+    Returns
+    -------
+    F : ndarray, shape (..., 5)
+        (Fa, Fy, Fz [N], My, Mz [N m]) carried by the balls.
+    K : ndarray, shape (..., 5, 5)
+        dF/du [N/m, N/rad, N m/m, N m/rad].
+
+    References
+    ----------
+    Jones (1960); Harris (2001) §7.4; Hamrock & Dowson (1981) eqs. (3.61)–(3.74).
+
+    Examples
+    --------
+    >>> import ballrace
+    >>> brg = ballrace.BallBearing(22.225e-3, 16, 125.26e-3, 0.5232, 0.5232,
+    ...                            free_contact_angle=np.radians(40))
+    >>> r = solve(brg, Fa=17800.0, Fy=8900.0, Mz=-200.0)
+    >>> F, K = ring_forces(brg, r.displacements)
+    >>> bool(np.allclose(F, r.loads, rtol=1e-12) and np.allclose(K, r.stiffness, rtol=1e-12))
+    True
+    """
+    if not isinstance(bearing, BallBearing):
+        raise TypeError(f"bearing must be a ballrace.BallBearing; got {type(bearing).__name__}")
+    check_choice(moment_arm, "moment_arm", MOMENT_ARMS)
+    model = _Model.of(bearing)
+    u = as_array(displacements, "displacements", bounded=True, tiny_ok=True)
+    if u.shape[-1:] != (5,):
+        raise ValueError("displacements must have shape (..., 5): (dx, dy, dz, theta_y, "
+                         f"theta_z); got shape {u.shape}")
+    lim = np.array([1.0, 1.0, 1.0, 1.0 / model.Ri, 1.0 / model.Ri]) * model.D
+    if np.any(np.abs(u) > lim):
+        raise ValueError("displacements must be within +-D = "
+                         f"{model.D:g} m (translations) and +-D/R_i = {lim[3]:g} rad (tilts)")
+    Pd, x0, z0 = _reference(model, clearance, False)
+    geo = _geo(model, bearing, azimuth_offset, x0, z0)
+    shape = u.shape[:-1]
+    st = _State(model, geo, u.reshape(-1, 5), moment_arm)
+    return st.F.reshape(shape + (5,)), st.J.reshape(shape + (5, 5))
 
 
 def _retry(model, geo, L, u0, imposed, arm, rtol, max_iter, ok, u, iters):
@@ -1330,7 +1598,8 @@ def thrust(bearing: BallBearing, Fa, *, rtol: float = 1e-13, max_iter: int = 100
     u = np.zeros((Fv.size, 5))
     u[:, 0] = dt
     Pd, x0, z0 = _reference(model, None, False)
-    psi = bearing.azimuths(0.0)
+    geo = _geo(model, bearing, 0.0, x0, z0)
+    psi = geo.psi.copy()
     L = np.zeros_like(u)
     L[:, 0] = Fv
     imposed = np.zeros(u.shape, dtype=bool)
@@ -1339,7 +1608,6 @@ def thrust(bearing: BallBearing, Fa, *, rtol: float = 1e-13, max_iter: int = 100
     # tolerance on beta is not one on the thrust
     fixed = np.zeros(u.shape, dtype=bool)
     fixed[:, 1:] = True
-    geo = _Geo(model, psi, x0, z0)
     u, iters, _ = _newton(model, geo, L, u, fixed, "groove", max(rtol, 1e-13), max_iter)
     return _result(bearing, model, psi, x0, z0, Pd, u, L, imposed, "groove",
                    iters, shape, "exact", rtol=rtol, what="thrust")
@@ -1487,7 +1755,7 @@ def eccentric_thrust(bearing: BallBearing, Fa, e, *, rtol: float = 1e-12,
     u0[..., 0] = (model.A * np.sin(bt - model.beta_f) / np.cos(bt)).reshape(F.shape)
     d = np.array([np.nan, 0.0, 0.0, 0.0, np.nan])
     res = solve(bearing, Fa=F, Mz=-e_ * F, displacements=d, moment_arm="contact", rtol=rtol,
-                max_iter=max_iter, initial=u0)
+                max_iter=max_iter, initial=u0, _contact_direct=True)
     log.debug("eccentric thrust: converged in %d Newton iterations", res.iterations)
     return res
 

@@ -51,7 +51,9 @@ def test_seed002_tata_radial_8_balls():
     # published, rounded to the pound: 310 and 184 lb (ours 309.63 / 184.11 lb)
     assert q[0] == pytest.approx(310, abs=0.5)
     assert q[1] == pytest.approx(184, abs=0.5)
-    assert np.all(q[2:7] == 0.0)                 # balls at 90..270 deg unloaded
+    # balls at 90..270 deg unloaded: up to rounding, the ring's free dz ~ +-1e-21 m may
+    # press the ball at 90 deg by ~1e-21 m (Q ~ 1e-21 N)
+    assert np.all(q[2:7] < 1e-15 * q[0])
     assert np.all(np.abs(r.contact_angles) < 1e-12)
 
 

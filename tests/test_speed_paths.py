@@ -1,0 +1,165 @@
+"""Fast paths give the same answers as the general ones.
+
+* One contact of plain numbers (``hertz.point_contact`` / ``elliptical_contact`` with
+  floats) runs a scalar path: bit-for-bit the 1-element-array result (same operations
+  in the same order; IEEE double arithmetic is the same in Python and NumPy).
+* The piecewise-polynomial ellipticity (``hertz._solve_k``) against the Newton solution
+  it was built from, and against the 30-digit mpmath reference (tests/mpref.py).
+* The single-case load-distribution driver against the vectorized one, and the
+  analytic ring stiffness against central differences of the ring forces.
+"""
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+import ballrace
+from ballrace.analytic import hertz
+from mpref import k_exact
+
+STEEL = ballrace.Material(E=200e9, nu=0.3)
+FIELDS = ("load", "Rx", "Ry", "E_prime", "k", "a", "b", "approach", "p_max", "stiffness",
+          "ellipk", "ellipe")
+
+radius = st.floats(1e-4, 1.0)
+signed_ratio = st.one_of(st.floats(-0.999, -1e-3), st.floats(1e-3, 0.999))
+load = st.one_of(st.just(0.0), st.floats(1e-3, 1e6))
+
+
+def _same(c_scalar, c_array):
+    for f in FIELDS:
+        s, a = getattr(c_scalar, f), getattr(c_array, f)
+        assert np.shape(s) == () and type(s) is np.float64, f
+        assert a.shape == (1,)
+        assert s == a[0], (f, s, a[0])          # bit for bit
+
+
+@settings(max_examples=300, deadline=None)
+@given(Q=load, Rx=st.floats(1e-5, 10.0), ratio=st.floats(-7.99, 7.99),
+       Ep=st.floats(1e9, 1e12))
+def test_elliptical_contact_scalar_equals_array(Q, Rx, ratio, Ep):
+    Ry = Rx * 10.0**ratio
+    _same(hertz.elliptical_contact(Q, Rx, Ry, Ep),
+          hertz.elliptical_contact(np.array([Q]), np.array([Rx]), np.array([Ry]), Ep))
+
+
+@settings(max_examples=300, deadline=None)
+@given(Q=load, r1=radius, r2=radius, g1=signed_ratio, g2=signed_ratio,
+       flat=st.booleans())
+def test_point_contact_scalar_equals_array(Q, r1, r2, g1, g2, flat):
+    # body 1 convex (r1, r2); body 2 concave or convex, less curved (|g| < 1), or flat
+    rx2 = np.inf if flat else r1 / g1
+    ry2 = r2 / g2
+    c_s = hertz.point_contact(Q, r1, r2, rx2, ry2, STEEL)
+    c_a = hertz.point_contact(np.array([Q]), r1, r2, rx2, ry2, STEEL)
+    _same(c_s, c_a)
+
+
+def test_scalar_path_keeps_the_checks():
+    # the fast path hands odd or out-of-range input to the array path and its errors
+    with pytest.raises(ValueError, match="load must be >= 0"):
+        hertz.point_contact(-1.0, 0.01, 0.01, 0.01, 0.01, STEEL)
+    with pytest.raises(ValueError, match="rx1 must be non-zero"):
+        hertz.point_contact(1.0, 0.0, 0.01, 0.01, 0.01, STEEL)
+    with pytest.raises(ValueError, match="curvature sum in the y plane"):
+        hertz.point_contact(1.0, 0.01, 0.01, 0.02, -0.01, STEEL)
+    with pytest.raises(ValueError, match="radius ratio"):
+        hertz.elliptical_contact(1.0, 1e-5, 1e4, 2e11)
+    with pytest.raises(ValueError, match="E_prime must be finite; got nan"):
+        hertz.elliptical_contact(1.0, 0.01, 0.02, float("nan"))
+    with pytest.raises(TypeError):
+        hertz.elliptical_contact(True, 0.01, 0.02, 2e11)
+
+
+@settings(max_examples=200, deadline=None)
+@given(v=st.floats(0.0, np.log(1e8)))
+def test_tabulated_ellipticity_equals_newton(v):
+    alpha = np.array([np.exp(v)])
+    k, K, E = hertz._solve_k(alpha)
+    kn, Kn, En = hertz._solve_k_newton(alpha)
+    assert k[0] == pytest.approx(kn[0], rel=5e-15)
+    assert K[0] == pytest.approx(Kn[0], rel=5e-15) and E[0] == pytest.approx(En[0], rel=5e-15)
+    assert hertz._solve_k_scalar(float(alpha[0])) == (k[0], K[0], E[0])
+
+
+@pytest.mark.parametrize("alpha", [1.0, 1.0 + 2**-40, 1.04, 1.3, 2.0 - 2**-45, 7.5, 1e3, 99999.9,
+                                   1e8])
+def test_tabulated_ellipticity_at_interval_edges_matches_mpmath(alpha):
+    # 30-digit mpmath reference; near m = 0.05 the direct K - E lost 1e-14 before the
+    # series range was widened to m < 0.3
+    k, _, _ = hertz._solve_k(np.array([alpha]))
+    assert k[0] == pytest.approx(k_exact(alpha), rel=5e-15, abs=0)
+
+
+# --------------------------------------------------------------------------- load distribution
+def _ricci218():
+    return ballrace.BallBearing(22.225e-3, 16, 125.26e-3, 0.5232, 0.5232,
+                                free_contact_angle=np.radians(40), material=STEEL)
+
+
+@pytest.mark.parametrize("arm", ["groove", "contact"])
+def test_ring_forces_stiffness_is_the_derivative(arm):
+    # central differences of F(u) (step 1e-9 m / 1e-8 rad; truncation ~1e-10 relative)
+    from ballrace.analytic import loaddist
+    brg = _ricci218()
+    r = loaddist.solve(brg, Fa=17800.0, Fy=8900.0, Mz=-200.0, moment_arm=arm)
+    F, K = loaddist.ring_forces(brg, r.displacements, moment_arm=arm)
+    assert np.array_equal(F, r.loads) and np.array_equal(K, r.stiffness)
+    u = r.displacements
+    h = np.array([1e-9, 1e-9, 1e-9, 1e-8, 1e-8])
+    fd = np.empty((5, 5))
+    for j in range(5):
+        up, um = u.copy(), u.copy()
+        up[j] += h[j]
+        um[j] -= h[j]
+        fd[:, j] = (loaddist.ring_forces(brg, up, moment_arm=arm)[0]
+                    - loaddist.ring_forces(brg, um, moment_arm=arm)[0]) / (2 * h[j])
+    sc = np.array([1, 1, 1, brg.inner_groove_center_radius, brg.inner_groove_center_radius])
+    Ks, fds = K / sc[:, None] / sc[None, :], fd / sc[:, None] / sc[None, :]
+    assert np.max(np.abs(Ks - fds)) < 1e-8 * np.max(np.abs(Ks))
+
+
+@settings(max_examples=60, deadline=None)
+@given(u=st.tuples(st.floats(-3e-5, 8e-5), st.floats(-5e-5, 5e-5), st.floats(-5e-5, 5e-5),
+                   st.floats(-1e-3, 1e-3), st.floats(-1e-3, 1e-3)),
+       arm=st.sampled_from(["groove", "contact"]))
+def test_ring_forces_one_case_equals_batch(u, arm):
+    # one displacement runs the one-case kernel (_State._one), several the batch kernel
+    from ballrace.analytic import loaddist
+    brg = _ricci218()
+    u = np.array(u)
+    F1, K1 = loaddist.ring_forces(brg, u, moment_arm=arm)
+    Fb, Kb = loaddist.ring_forces(brg, np.stack([u, 0.5 * u]), moment_arm=arm)
+    scale = max(np.abs(F1).max(), 1.0)
+    assert np.allclose(F1, Fb[0], rtol=1e-12, atol=1e-12 * scale)
+    assert np.allclose(K1, Kb[0], rtol=1e-11, atol=1e-12 * max(np.abs(K1).max(), 1.0))
+
+
+def test_small_solver_matches_numpy():
+    from ballrace.analytic.loaddist import _solve_small
+    rng = np.random.default_rng(4)
+    for _ in range(50):
+        A = rng.normal(size=(5, 5)) + 5 * np.eye(5) * rng.uniform(0, 1)
+        b = rng.normal(size=5)
+        x = _solve_small(A.tolist(), b.tolist())
+        assert np.allclose(x, np.linalg.solve(A, b), rtol=1e-10, atol=1e-12)
+    with pytest.raises(np.linalg.LinAlgError):
+        _solve_small([[1.0, 2.0], [2.0, 4.0]], [1.0, 1.0])
+
+
+def test_blocked_vectorised_contact_equals_small_arrays():
+    # arrays above two blocks run the in-place block kernel (_exact_block), small ones the
+    # plain array path: the same operations, so the same bits (zero loads and a circle too)
+    rng = np.random.default_rng(11)
+    n = 3 * hertz._BLOCK + 123
+    Rx = 10 ** rng.uniform(-3, -1, n)
+    Ry = Rx * 10 ** rng.uniform(-4, 4, n)
+    Q = 10 ** rng.uniform(0, 5, n)
+    Q[::9] = 0.0
+    Ry[5] = Rx[5]
+    big = hertz.elliptical_contact(Q, Rx, Ry, 2.1e11)
+    for i in range(0, n, 5000):
+        sl = slice(i, i + 5000)
+        small = hertz.elliptical_contact(Q[sl], Rx[sl], Ry[sl], 2.1e11)
+        for f in FIELDS:
+            assert np.array_equal(getattr(big, f)[sl], getattr(small, f)), f
