@@ -121,7 +121,7 @@ def check_units(units: str) -> str:
 #: The keys of ``ballrace contact --json`` ("values", "units" and "labels"), in SI:
 #: stable identifiers, the attribute names of HertzContact and the subsurface results.
 CONTACT_JSON_KEYS = ("load", "Rx", "Ry", "E_prime", "k", "a", "b", "approach", "p_max",
-                     "p_mean", "stiffness", "tau0", "z0", "x0", "max_shear", "max_shear_depth",
+                     "p_mean", "stiffness", "size_ratio", "tau0", "z0", "x0", "max_shear", "max_shear_depth",
                      "von_mises", "von_mises_depth")
 
 
@@ -152,9 +152,14 @@ def contact(
         m1 = Material(E=parse_quantity(e1, "[pressure]", "E1"), nu=nu1)
         m2 = Material(E=parse_quantity(e2, "[pressure]", "E2") if e2 else m1.E,
                       nu=nu1 if nu2 is None else nu2)
-        c = hertz.point_contact(q, *radii, m1, m2, method=method)
+        import warnings
+
+        with warnings.catch_warnings():       # a/R beyond Hertz: said in the table instead
+            warnings.simplefilter("ignore", UserWarning)
+            c = hertz.point_contact(q, *radii, m1, m2, method=method)
     except (ValueError, TypeError) as exc:
         fail(str(exc))
+    size = hertz._size_ratio(c.a, radii)
     # (JSON key, table label, SI value, kind of quantity for the display units; None:
     # dimensionless).  The keys are stable identifiers (the HertzContact / subsurface
     # attribute names, CONTACT_JSON_KEYS); the labels are for people and may change.
@@ -167,18 +172,22 @@ def contact(
             ("approach", "approach delta", float(c.approach), "small"),
             ("p_max", "p_max", float(c.p_max), "stress"),
             ("p_mean", "p_mean", float(c.p_mean), "stress"),
-            ("stiffness", "stiffness K", float(c.stiffness), "stiffness")]
+            ("stiffness", "stiffness K", float(c.stiffness), "stiffness"),
+            ("size_ratio", "a / smallest radius", size, None)]
     from ballrace.analytic import subsurface
 
     nu = m1.nu if m1.nu == m2.nu else None
     note = None
+    if size > hertz.SIZE_LIMIT:
+        note = (f"a / R = {size:.3g} > {hertz.SIZE_LIMIT:g}: beyond Hertz's small-contact "
+                "assumption (a << R); these numbers are extrapolations, not a contact")
     try:
         o = subsurface.orthogonal_shear(c)
         rows += [("tau0", "LP tau0 (orthogonal shear)", float(o.tau0), "stress"),
                  ("z0", "LP z0", float(o.z0), "length"),
                  ("x0", "LP x0 (rolling offset)", float(o.x0), "length")]
     except ValueError as exc:  # major axis along the rolling direction: LP does not apply
-        note = f"Lundberg-Palmgren shear not reported: {exc}"
+        note = (note + "; " if note else "") + f"Lundberg-Palmgren shear not reported: {exc}"
     if nu is not None:
         mx = subsurface.max_shear(c, nu=nu)
         vm = subsurface.von_mises(c, nu=nu)

@@ -914,6 +914,32 @@ def _radius_ok(r: float) -> bool:
     return a == math.inf or MIN_MAGNITUDE <= a <= MAX_MAGNITUDE
 
 
+#: Largest contact size a / R (semi-major axis over the smallest radius of either body)
+#: for which :func:`point_contact` answers without a warning.  Hertz's theory assumes
+#: a << R; for a ball in a conformal groove the half-space solution departs from the real
+#: bodies by about 1 % near a/(f D) = 0.17 and a few percent at 0.4 (docs/fem-sweep.md).
+#: Beyond 0.5 the numbers are extrapolations of the theory, not a contact.
+SIZE_LIMIT = 0.5
+
+
+def _size_ratio(a, radii) -> float:
+    """max(a) / min |R| over the finite radii [-] (0 when every surface is flat)."""
+    rmin = min(float(np.min(np.where(np.isfinite(x), np.abs(x), np.inf))) for x in radii)
+    return float(np.max(a)) / rmin if math.isfinite(rmin) and rmin > 0 else 0.0
+
+
+def _warn_size(c, radii):
+    ratio = _size_ratio(c.a, radii)
+    if ratio > SIZE_LIMIT:
+        import warnings
+
+        warnings.warn(f"point_contact: a / R = {ratio:.3g} > {SIZE_LIMIT:g} (semi-axis a = "
+                      f"{float(np.max(c.a)):.4g} m against the smallest radius): beyond "
+                      "Hertz's small-contact assumption a << R; the results are "
+                      "extrapolations, not a contact", UserWarning, stacklevel=3)
+    return c
+
+
 def point_contact(load, rx1, ry1, rx2, ry2, material1: Material,
                   material2: Material | None = None, method: str = "exact") -> HertzContact:
     r"""Hertz contact of two bodies given their principal radii and materials.
@@ -940,6 +966,12 @@ def point_contact(load, rx1, ry1, rx2, ry2, material1: Material,
         ``a >= b`` [m], ``k``, ``approach`` [m], ``p_max`` [Pa], ``stiffness`` [N/m^1.5],
         ``Rx``, ``Ry`` [m], ``E_prime`` [Pa], ``load`` [N].
 
+    Warns
+    -----
+    UserWarning
+        When a exceeds :data:`SIZE_LIMIT` times the smallest radius of either body: the
+        theory assumes a << R, and such a result is an extrapolation.
+
     References
     ----------
     Hamrock & Dowson (1981) ch. 3, eqs. (3.1)–(3.16); Ricci (2009) eqs. (8)–(16).
@@ -963,7 +995,11 @@ def point_contact(load, rx1, ry1, rx2, ry2, material1: Material,
             cy = 1.0 / y1 + 1.0 / y2
             if cx > 0.0 and cy > 0.0:
                 Ep = effective_modulus(material1, material2)
-                return _contact_scalar(q, 1.0 / cx, 1.0 / cy, Ep)
+                c = _contact_scalar(q, 1.0 / cx, 1.0 / cy, Ep)
+                rmin = min(abs(x1), abs(y1), abs(x2), abs(y2))
+                if c.a > SIZE_LIMIT * rmin:          # a << R no longer holds
+                    _warn_size(c, (x1, y1, x2, y2))
+                return c
     check_choice(method, "method", METHODS)
     Ep = effective_modulus(material1, material2)
     Q = check_nonnegative(load, "load", "N", bounded=True)
@@ -974,7 +1010,7 @@ def point_contact(load, rx1, ry1, rx2, ry2, material1: Material,
     # derived radii and modulus may pass 1e30 a little (cancelling curvatures, nu near -1):
     # the formulas stay finite, so they are not checked against the input limits again
     Q, Rx, Ry, Ep = np.broadcast_arrays(Q, geo.Rx, geo.Ry, Ep)
-    return _contact_from_parts(Q, Rx, Ry, Ep, method)
+    return _warn_size(_contact_from_parts(Q, Rx, Ry, Ep, method), radii_b)
 
 
 def contact_stiffness(Rx, Ry, E_prime, method: str = "exact"):

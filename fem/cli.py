@@ -285,6 +285,18 @@ def _check_choice(value, option: str, allowed) -> None:
         fail(f"{option} must be one of {', '.join(allowed)}; got {value!r}")
 
 
+def _size_ratio(r) -> float:
+    """The analytic contact's a over the smallest radius of ball and lower body [-]."""
+    import math
+
+    case = getattr(r, "case", None)
+    if case is None:
+        return 0.0
+    radii = [case.ball_radius, *(abs(x) for x in getattr(case, "lower_radii", ()))]
+    rmin = min((x for x in radii if math.isfinite(x) and x > 0), default=math.inf)
+    return float(case.analytic.a) / rmin if math.isfinite(rmin) else 0.0
+
+
 def _check_cell(err, tol, ok):
     """The error, its tolerance and the verdict in one cell: ``+0.21% / 5% ok``.
 
@@ -329,6 +341,13 @@ def _table(r, units: str, heading: str = "") -> None:
         con.print(literal(heading), style="bold")
     print_columns(con, title, ["quantity", "FE", "analytic", "unit", "error / tolerance"],
                   rows, justify=["left", "right", "right", "left", "left"])
+    size = _size_ratio(r)
+    from ballrace.analytic import hertz
+
+    if size > hertz.SIZE_LIMIT:
+        con.print(literal(f"note: a / R = {size:.3g} > {hertz.SIZE_LIMIT:g}: beyond Hertz's "
+                          "small-contact assumption (a << R); the rows compare the FE with an "
+                          "extrapolation of Hertz, not with a valid solution"))
     if d.get("gap") == "exact":
         con.print("exact sphere-torus gap: differences from Hertz are 'beyond Hertz' "
                   "results, not errors (no tolerances applied).")

@@ -165,3 +165,51 @@ def test_us_units_reach_every_number_of_the_bearing_output():
     assert temp and temp[0][-2:] == ["158", "°F"]                  # 70 degC
     notes = " ".join(ln for ln in out.splitlines() if ln.startswith("note"))
     assert not re.search(r"\d\s*(N|um|mm|MPa)\b", notes), notes
+
+
+def test_hertz_beyond_its_validity_is_said_not_silent(capsys):
+    """1e9 N on a 6.35 mm ball: a = 35 mm = 5.5 R.  The library warns, the CLI marks the
+    result in a row and a note (a = (3 Q R / 4 E*)^(1/3) for a ball on a flat)."""
+    import warnings
+
+    from typer.testing import CliRunner
+
+    import ballrace
+    from ballrace.analytic import hertz
+    from ballrace.cli import app
+
+    steel = ballrace.Material(200e9, 0.3)
+    with pytest.warns(UserWarning, match=r"a / R = 5.53 > 0.5"):
+        hertz.point_contact(1e9, 6.35e-3, 6.35e-3, float("inf"), float("inf"), steel)
+    with warnings.catch_warnings():                       # a bearing contact: no warning
+        warnings.simplefilter("error")
+        hertz.point_contact(4450.0, 6.35e-3, 6.35e-3, 26e-3, -6.604e-3, steel)
+    a = (3 * 1e9 * 6.35e-3 / (4 * 200e9 / (2 * (1 - 0.09)))) ** (1 / 3)
+    res = CliRunner().invoke(app, ["contact", "--load", "1e9 N", "--rx1", "6.35 mm",
+                                   "--ry1", "6.35 mm", "--json"])
+    import json
+
+    v = json.loads(res.stdout)["values"]
+    assert v["size_ratio"] == pytest.approx(a / 6.35e-3, rel=1e-9)
+    assert "beyond Hertz's small-contact assumption" in v["note"]
+    assert "Warning" not in res.stderr
+
+
+def test_fe_table_says_when_hertz_is_extrapolated(monkeypatch, capsys):
+    from types import SimpleNamespace as NS
+
+    from ballrace.fem.cli import _table
+
+    pytest.importorskip("skfem")
+    monkeypatch.setenv("COLUMNS", "80")
+
+    class R:
+        case = NS(ball_radius=6.35e-3, lower_radii=(float("inf"), float("inf")),
+                  analytic=NS(a=35e-3))
+
+        def to_dict(self):
+            return {"comparison": [], "case": "ball on plane", "load": 1e9, "mode": "half-space",
+                    "gap": "hertz", "level": "quick", "n_dofs": 1, "solver": "x"}
+
+    _table(R(), "eng")
+    assert "a / R = 5.51 > 0.5: beyond Hertz" in capsys.readouterr().out
