@@ -63,8 +63,22 @@ def _type_error(value, name: str) -> TypeError:
     text = repr(value)
     if len(text) > 60:
         text = text[:57] + "..."
+    hint = ""
+    if isinstance(value, str) and any(ch.isdigit() for ch in value):
+        try:                                  # "6.35 mm": the API takes SI floats
+            from ballrace.units import ureg
+
+            q = ureg().Quantity(value.strip())
+            si = q.to_base_units()
+            if not q.dimensionless:
+                hint = (f" (the Python API takes SI floats: {value!r} is "
+                        f"{float(si.magnitude):.6g} in {si.units:~}; unit strings are for "
+                        "the command line and case files)")
+        except Exception:                     # noqa: BLE001 - no hint is better than a wrong one
+            hint = (" (the Python API takes SI floats; unit strings are for the command line "
+                    "and case files)")
     return TypeError(f"{name} must be a real number or an array of real numbers; "
-                     f"got {type(value).__name__} {text}")
+                     f"got {type(value).__name__} {text}{hint}")
 
 
 def _has_non_number(value) -> bool:

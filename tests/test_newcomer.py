@@ -213,3 +213,12 @@ def test_fe_table_says_when_hertz_is_extrapolated(monkeypatch, capsys):
 
     _table(R(), "eng")
     assert "a / R = 5.51 > 0.5: beyond Hertz" in capsys.readouterr().out
+
+
+def test_unit_string_in_the_python_api_gets_a_hint():
+    import ballrace
+    from ballrace.analytic import hertz
+
+    with pytest.raises(TypeError, match=r"rx1 must be a real number .* got str '6.35 mm' \(the "
+                                        r"Python API takes SI floats: '6.35 mm' is 0.00635 in m"):
+        hertz.point_contact(100.0, "6.35 mm", 6.35e-3, 1.0, 1.0, ballrace.BEARING_STEEL)
