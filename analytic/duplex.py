@@ -14,7 +14,8 @@ K_n at each ball's contact angle, no misalignment; Hamrock & Dowson 1981 eqs.
     Q_j = K_n(\beta_j)\langle s_j - A\rangle^{3/2},\quad
     s_j = \sqrt{(A\sin\beta_f + \delta_a)^2 + (A\cos\beta_f + \delta_r\cos\psi_j)^2}.
 
-Compatibility (Harris 2001 §7.5 "preloading"; Tata 2012, seed 000):
+Compatibility (Harris 2001 §7.5 "preloading"; Tata 2012, *Factors Influencing the
+Performance of Ball and Roller Bearings*):
 
 * **DB / DF** — the preload P presses each bearing axially to delta_0 with
   F_a(delta_0, 0) = P.  An external load moves the shaft axially by x: the bearing in
@@ -372,7 +373,7 @@ class DuplexPair:
     References
     ----------
     Harris (2001) §7.5; Tata (2012) *Factors influencing the performance of ball and
-    roller bearings* (seed 000), "Preloading"; Hamrock & Dowson (1981) eqs. (3.61)–(3.74).
+    roller bearings*, "Preloading"; Hamrock & Dowson (1981) eqs. (3.61)–(3.74).
 
     Examples
     --------

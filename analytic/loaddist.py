@@ -1472,8 +1472,8 @@ def radial(bearing: BallBearing, Fr, clearance=None, azimuth_offset: float = 0.0
 
     Examples
     --------
-    Seed 002 (Tata): 8 balls, 570 lb radial, zero clearance: ball 1 carries 310 lb,
-    balls 2 and 3 carry 184 lb each.
+    Tata (2012), *Principles and Use of Ball Bearings*: 8 balls, 570 lb radial, zero
+    clearance: ball 1 carries 310 lb, balls 2 and 3 carry 184 lb each.
 
     >>> import ballrace
     >>> brg = ballrace.BallBearing(12.7e-3, 8, 50e-3, 0.52, 0.52, diametral_clearance=0.0)

@@ -1,6 +1,7 @@
 """Duplex (DB / DF / DT) preloaded pairs: load sharing, unloading, stiffness.
 
-Sources: Tata (2012), seed 000 ("Preloading": 3000 lb preload + 2500 lb work load ->
+Sources: Tata (2012), Factors Influencing the Performance of Ball and Roller Bearings
+("Preloading": 3000 lb preload + 2500 lb work load ->
 front 4500 lb, rear 2000 lb; deflection 0.003 in without preload, 0.001 in with it);
 Harris (2001) §7.5 (preloaded pairs, unloading at 2^(3/2) P for point contact);
 Hamrock & Dowson (1981) eqs. 3.50-3.74 (each bearing's load-deflection relation).
@@ -15,7 +16,7 @@ from ballrace.analytic import duplex as dx
 from ballrace.analytic import loaddist as ld
 
 LBF = 4.4482216152605
-#: A 55 mm bore, 40 deg angular-contact bearing of 7311 proportions (the seed's bearing has
+#: A 55 mm bore, 40 deg angular-contact bearing of 7311 proportions (Tata's bearing has
 #: a 2.1654 in = 55 mm bore and a 4650 lb rating; its internal geometry is not given, so
 #: this geometry is an assumption: 13 balls of 13/16 in on a 87.5 mm pitch circle,
 #: f_i = f_o = 0.52).
@@ -35,12 +36,12 @@ def test_single_bearing_load_deflection_matches_static_solver():
 
 
 def test_seed_000_spindle_example_shape():
-    """Seed 000: 3000 lb preload, 2500 lb work load -> front ~4500 lb, rear ~2000 lb,
+    """Tata (2012): 3000 lb preload, 2500 lb work load -> front ~4500 lb, rear ~2000 lb,
     i.e. front - rear = 2500 lb exactly (equilibrium) and the front bearing picks up
     ~60 % of the work load.  With the assumed 7311 geometry this model gives
-    4350 / 1850 lb (front picks up 54 %): -3.3 % / -7.5 % from the seed's rounded
-    figures.  The seed's deflection ratio without / with preload (0.003 / 0.001 in = 3)
-    comes out 3.3 (1.20e-3 / 0.36e-3 in here; the seed's absolute values presumably
+    4350 / 1850 lb (front picks up 54 %): -3.3 % / -7.5 % from Tata's rounded
+    figures.  Tata's deflection ratio without / with preload (0.003 / 0.001 in = 3)
+    comes out 3.3 (1.20e-3 / 0.36e-3 in here; Tata's absolute values presumably
     include shaft and housing compliance)."""
     pair = dx.DuplexPair(B7311, "DB", preload=3000 * LBF)
     r = pair.solve(Fa=2500 * LBF)

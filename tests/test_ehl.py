@@ -1,7 +1,7 @@
 """EHL film thickness (Hamrock & Dowson 1977), film parameter and entrainment speed.
 
-No published worked example with all inputs and the printed result could be verified
-(the seed's lubrication chapter lost its formulas and figures), so these tests check the
+No published worked example with all inputs and the printed result was checked against
+its source, so these tests check the
 published fits term by term (exponents, ellipticity factors), the ellipticity
 approximation against exact Hertz, and the kinematics against an independent derivation.
 """

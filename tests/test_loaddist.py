@@ -1,8 +1,8 @@
 """Static load distribution: published values, closed forms, invariants, robustness.
 
 Verification values (published, cited, tolerance justified):
-* Tata (seed 002): 8 balls, 570 lb radial -> ball 1 = 310 lb, balls 2 & 3 = 184 lb, from
-  F_r = F_1 (1 + 2 cos^(5/2) 45 deg); rounded to the pound, so +-0.5 lb.
+* Tata (2012, Principles and Use of Ball Bearings): 8 balls, 570 lb radial -> ball 1 =
+  310 lb, balls 2 & 3 = 184 lb, from F_r = F_1 (1 + 2 cos^(5/2) 45 deg); rounded to the pound, so +-0.5 lb.
 * Ricci (2009): 218 bearing, F_a = 17,800 N at e = 50.8 mm: Q_max = 9,445 N, beta from
   44.317 to 16.169 deg, psi_l = 53.66 deg.  A faithful implementation of his eqs. (26),
   (30), (31) lands within 1 % / 0.5 deg (docs/sources.md); ours: -0.50 %, +0.15 deg,
@@ -39,11 +39,11 @@ def deep_groove(clearance=0.0, Z=9, **kw):
 
 
 # --------------------------------------------------------------------------- published values
-def test_seed002_tata_radial_8_balls():
+def test_tata_2012_radial_8_balls():
     brg = deep_groove(0.0, Z=8)
     r = brg.radial(570 * LBF)
     q = r.ball_loads / LBF
-    # the seed's simplified relation F_r = F_1 (1 + 2 cos^(5/2) 45deg), balls 2&3 = F_1 cos^(3/2) 45deg
+    # Tata's simplified relation F_r = F_1 (1 + 2 cos^(5/2) 45deg), balls 2&3 = F_1 cos^(3/2) 45deg
     F1 = 570 / (1 + 2 * np.cos(np.pi / 4) ** 2.5)
     assert q[0] == pytest.approx(F1, rel=1e-10)
     assert q[1] == pytest.approx(F1 * np.cos(np.pi / 4) ** 1.5, rel=1e-10)
