@@ -453,7 +453,7 @@ def render_3d(r, path: str = "out-3d.png", *, field: str = "von_mises",
         pl.add_text(f"{title}: {_label(r)}\nlower body, three quadrants of the mirrored "
                     "quarter model (sections y = 0 and x = 0), coordinates in mm",
                     position="upper_left", font_size=10, color="black")
-        pl.show_bounds(location="outer", color="black", font_size=9, xtitle="x rolling [mm]",
+        pl.show_bounds(location="outer", color="black", font_size=16, xtitle="x rolling [mm]",
                        ytitle="y transverse [mm]", ztitle="z [mm]", n_xlabels=3, n_ylabels=3,
                        n_zlabels=3, fmt="%.2f")
         view = (1.6, 1.25, 1.0) if Y <= 2 * X else (1.6, 0.6, 0.8)   # long side in view
