@@ -33,8 +33,10 @@ import logging
 import math
 import threading
 from pathlib import Path
+from typing import Annotated
 
 import numpy as np
+import typer
 
 __all__ = ["FIELDS", "DEFAULTS", "compute", "case_inputs", "export_html", "export_grid",
            "make_server", "serve", "page", "EXPORT_GRID"]
@@ -414,7 +416,7 @@ def export_grid(grid: dict | None = None, progress=None) -> dict:
     """The export's data: every grid point computed by :func:`compute`.
 
     Returns ``{"grid", "geometry", "tables": {"i,j,l,m": table}, "dimless":
-    {"i,l,m": dimless}}`` with i over ratios, j loads, l nu, m traction.
+    {"i,l,m": {"fields", "maxima"}}}`` with i over ratios, j loads, l nu, m traction.
     """
     g = {k: tuple(float(v) for v in (grid or EXPORT_GRID)[k]) for k in EXPORT_GRID}
     tables, dimless = {}, {}
@@ -426,7 +428,7 @@ def export_grid(grid: dict | None = None, progress=None) -> dict:
                 for j, Q in enumerate(g["load"]):
                     r = compute(export_params(alpha, Q, nu, mu))
                     tables[f"{i},{j},{l},{m}"] = r["table"]
-                    dimless.setdefault(f"{i},{l},{m}", r["dimless"])
+                    dimless.setdefault(f"{i},{l},{m}", {"fields": r["dimless"], "maxima": r["maxima"]})
                     done += 1
                     if progress:
                         progress(done, n)
@@ -540,3 +542,68 @@ def serve(port: int = 0, echo=print) -> None:
     finally:
         server.server_close()
     echo("ballrace explorer: stopped")
+
+
+# ------------------------------------------------------------------ the commands
+def register_commands(teach_app) -> None:
+    """Add ``serve`` and ``export`` to the ``ballrace teach`` typer group."""
+    @teach_app.command("serve")
+    def teach_serve(
+        port: Annotated[int, typer.Option(
+            "--port", help="Port on 127.0.0.1 (default 0: a free one, printed).")] = 0,
+    ):
+        """Serve the interactive subsurface-stress explorer on 127.0.0.1 (Ctrl-C stops it)."""
+        if not 0 <= port <= 65535:
+            typer.echo(f"error: --port must be in [0, 65535]; got {port}", err=True)
+            raise typer.Exit(code=2)
+        try:
+            compute(DEFAULTS)                     # imports and the first state, before the address
+            try:
+                server = make_server(port)
+            except OSError as exc:
+                typer.echo(f"error: cannot listen on 127.0.0.1:{port} ({_one_line(exc)})",
+                           err=True)
+                raise typer.Exit(code=2) from None
+            host, port = server.server_address[:2]
+            typer.echo(f"ballrace explorer: http://{host}:{port}/  (Ctrl-C stops it)")
+            try:
+                server.serve_forever(poll_interval=0.2)
+            finally:
+                server.server_close()
+        except KeyboardInterrupt:
+            pass
+        typer.echo("ballrace explorer: stopped")
+
+    @teach_app.command("export")
+    def teach_export(
+        out: Annotated[Path, typer.Argument(help="HTML file to write.")] = Path("explorer.html"),
+        small: Annotated[bool, typer.Option(
+            "--small", help="A 2 x 3 x 1 x 2 grid (ratio, load, nu, traction), for a quick look.")]
+            = False,
+    ):
+        """Write the explorer as one self-contained HTML file (a precomputed grid, sliders)."""
+        from rich.progress import BarColumn, MofNCompleteColumn, Progress, TimeElapsedColumn
+
+        if out.is_dir():
+            out = out / "explorer.html"
+        grid = SMALL_GRID if small else None
+        try:
+            with Progress(BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
+                          transient=True) as prog:
+                task = prog.add_task("export", total=None)
+                path = export_html(out, grid, lambda i, n: prog.update(task, completed=i,
+                                                                       total=n))
+        except KeyboardInterrupt:
+            typer.echo("ballrace explorer: export interrupted, nothing written", err=True)
+            raise typer.Exit(code=130) from None
+        except (OSError, ValueError) as exc:
+            typer.echo(f"error: {_one_line(exc)}", err=True)
+            raise typer.Exit(code=2) from None
+        size = path.stat().st_size
+        typer.echo(f"wrote {path} ({size / 1e6:.2f} MB)")
+
+
+
+#: The ``--small`` export grid.
+SMALL_GRID = {"ratio": (1.0, 8.0), "load": (500.0, 2000.0, 8000.0), "nu": (0.3,),
+              "mu": (0.0, 0.3)}
