@@ -155,6 +155,10 @@
     ctx.fillStyle = "#333"; ctx.textAlign = "left"; ctx.textBaseline = "middle";
     ctx.fillText(hi.toFixed(3), cb[0] + 14, cb[1] + 4); ctx.fillText(lo.toFixed(3), cb[0] + 14, cb[1] + cb[3] - 4);
     ctx.fillText("/ p0", cb[0] + 14, cb[1] + cb[3] / 2);
+    if (Math.max(Math.abs(lo), Math.abs(hi)) < 1e-9) {
+      ctx.fillStyle = "#fff"; ctx.textAlign = "center"; ctx.textBaseline = "middle";
+      ctx.fillText(`${name} = 0 in this plane (symmetry)`, box[0] + box[2] / 2, box[1] + box[3] / 2);
+    }
     // marks
     const mk = marksFor(cur, name, which);
     ctx.lineWidth = 1;
@@ -384,6 +388,19 @@
   function setupLive() {
     for (const [k, v] of Object.entries(DEFAULTS)) { const el = $(`[data-param="${k}"]`); if (el) el.value = v; }
     $("#case").value = DEFAULTS.case || "";
+    // inputs from the address: ?mode=bearing&load=4000%20N&traction=0.2&field=von_mises
+    for (const [k, v] of new URLSearchParams(location.search)) {
+      const el = $(`[data-param="${k}"]`); if (el) el.value = v;
+      if (k === "case") $("#case").value = v;
+    }
+    const syncSliders = () => {           // slider positions from the typed values
+      const m = /^\s*([0-9.eE+-]+)\s*(k?N)\s*$/.exec($('[data-param="load"]').value);
+      if (m) $("#load-slider").value = Math.log10(parseFloat(m[1]) * (m[2] === "kN" ? 1e3 : 1));
+      const t = parseFloat($('[data-param="traction"]').value);
+      if (isFinite(t)) $("#traction-slider").value = t;
+    };
+    syncSliders();
+    for (const k of ["load", "traction"]) $(`[data-param="${k}"]`).addEventListener("change", syncSliders);
     const modeView = () => { const b = $("#mode").value === "bearing"; $("#bearing").hidden = !b; $("#bodies").hidden = b; };
     modeView();
     $("#mode").addEventListener("change", () => { modeView(); update(); });
@@ -438,7 +455,9 @@
     }
     const sel = $("#field");
     for (const [k, v] of Object.entries(FIELDS)) { const o = document.createElement("option"); o.value = k; o.textContent = v; sel.appendChild(o); }
-    sel.value = "tau_xz";
+    const q = new URLSearchParams(location.search);
+    sel.value = FIELDS[q.get("field")] ? q.get("field") : "tau_xz";
+    if (q.get("iso")) { $("#iso").value = q.get("iso"); $("#iso-out").textContent = (+$("#iso").value).toFixed(2); }
     sel.addEventListener("change", () => render(false));
     $("#iso").addEventListener("input", (e) => { $("#iso-out").textContent = (+e.target.value).toFixed(2); if (cur) draw3d(); });
     $("#compare").addEventListener("change", (e) => {
