@@ -62,7 +62,7 @@ _ZMAX = 2.0                  # sections and profiles: 0 <= z <= 2 b
 _SEC_X = 2.0                 # section y = 0: |x| <= 2 a_x
 _SEC_Y = 1.5                 # section x = 0: |y| <= 1.5 a_y
 _NAX = 81                    # depth profile on the axis
-_VOL = (20, 20, 14)          # von Mises volume: x, y, z points
+_VOL = (18, 18, 13)          # von Mises volume: x, y, z points
 _VOL_X, _VOL_Y, _VOL_Z = 1.3, 1.3, 1.6   # its extent: a_x, a_y, b units
 
 #: The export's parameter grid: radius ratio Ry/Rx of body 1 on a flat (rx1 = 6.35 mm),
@@ -463,7 +463,9 @@ def make_server(port: int = 0, host: str = "127.0.0.1"):
     from urllib.parse import parse_qs, urlparse
 
     html = page(None).encode("utf-8")
-    lock = threading.Lock()       # one computation at a time: the machine is small
+    # one view computation at a time, and one maxima search at a time: the slow searches
+    # with traction (second request) never hold up the views of the next change
+    locks = {False: threading.Lock(), True: threading.Lock()}
 
     class Handler(BaseHTTPRequestHandler):
         server_version = "ballrace-explorer"
@@ -518,7 +520,7 @@ def make_server(port: int = 0, host: str = "127.0.0.1"):
             except (ValueError, UnicodeDecodeError) as exc:
                 self._json({"ok": False, "field": "general", "error": _one_line(exc)})
                 return
-            with lock:
+            with locks[maxima]:
                 self._json(compute_safe(params, maxima))
 
     class Server(ThreadingHTTPServer):

@@ -378,6 +378,8 @@
     document.body.dataset.state = String(my);
     if (r.pending) {
       delete p.set_ratio;
+      await new Promise((ok) => setTimeout(ok, 250));      // only once the control rests
+      if (my !== seq) return;
       const r2 = await post(Object.assign({ _maxima: true }, p));
       if (my !== seq || !r2.ok) return;
       cur = r2; render(false);
