@@ -307,6 +307,13 @@ def test_export_command_small(tmp_path, monkeypatch):
     res = CliRunner().invoke(app, ["teach", "export", str(out), "--small"])
     assert res.exit_code == 0, res.output
     assert out.stat().st_size > 10_000 and "wrote" in res.output
+    # default: under the ignored output folder; a file in the way is a one-line error
+    monkeypatch.chdir(tmp_path)
+    res = CliRunner().invoke(app, ["teach", "export", "--small"])
+    assert res.exit_code == 0 and (tmp_path / "ballrace-out" / "teach" / "explorer.html").exists()
+    (tmp_path / "f").write_text("x")
+    res = CliRunner().invoke(app, ["teach", "export", str(tmp_path / "f" / "x.html")])
+    assert res.exit_code == 2 and "exists and is not a folder" in res.output
 
 
 # ------------------------------------------------------------------ in a real browser

@@ -578,7 +578,9 @@ def register_commands(teach_app) -> None:
 
     @teach_app.command("export")
     def teach_export(
-        out: Annotated[Path, typer.Argument(help="HTML file to write.")] = Path("explorer.html"),
+        out: Annotated[Path, typer.Argument(
+            help="HTML file to write (default ballrace-out/teach/explorer.html).")]
+            = Path("ballrace-out") / "teach" / "explorer.html",
         small: Annotated[bool, typer.Option(
             "--small", help="A 2 x 3 x 1 x 2 grid (ratio, load, nu, traction), for a quick look.")]
             = False,
@@ -586,8 +588,17 @@ def register_commands(teach_app) -> None:
         """Write the explorer as one self-contained HTML file (a precomputed grid, sliders)."""
         from rich.progress import BarColumn, MofNCompleteColumn, Progress, TimeElapsedColumn
 
+        from ballrace.console import output_folder
+
         if out.is_dir():
             out = out / "explorer.html"
+        elif not out.suffix:
+            out = out.with_suffix(".html")
+        try:
+            output_folder(out.parent, "OUT")
+        except ValueError as exc:
+            typer.echo(f"error: {_one_line(exc)}", err=True)
+            raise typer.Exit(code=2) from None
         grid = SMALL_GRID if small else None
         try:
             with Progress(BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
