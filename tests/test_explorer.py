@@ -26,6 +26,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from typer.testing import CliRunner
 
 from ballrace import Material
@@ -72,6 +74,20 @@ def test_load_scaling_reuses_the_shape():
     assert r1["dimless"] == r8["dimless"]
     c8 = _contact(8000.0)
     assert t8["tau_max"] == pytest.approx(float(subsurface.max_shear(c8).tau_max), rel=1e-12)
+
+
+@settings(max_examples=25, deadline=None)
+@given(Q=st.floats(10.0, 1e5), ratio=st.sampled_from(["6.35 mm", "25.4 mm", "100 mm"]))
+def test_scaling_invariants(Q, ratio):
+    """Hertz: a, b, z0 and tau_max's depth scale as Q^(1/3), p0 and the stresses as
+    Q^(1/3), delta as Q^(2/3) (Johnson 1985 eqs. 4.22-4.23) against a 1000 N reference."""
+    base = {**ex.DEFAULTS, "ry1": ratio, "load": "1000 N"}
+    t0 = ex.compute(base)["table"]
+    t = ex.compute({**base, "load": f"{Q!r} N"})["table"]
+    s = (Q / 1000.0) ** (1 / 3)
+    for k, e in (("a", 1), ("b", 1), ("z0", 1), ("tau_max_depth", 1), ("p0", 1), ("tau0", 1),
+                 ("tau_max", 1), ("vm_max", 1), ("delta", 2)):
+        assert t[k] == pytest.approx(t0[k] * s**e, rel=1e-9), k
 
 
 @pytest.mark.parametrize("mu", [0.0, 0.25])
@@ -251,10 +267,19 @@ def test_serve_command_prints_port_and_stops_on_ctrl_c(tmp_path):
 
 
 def test_serve_bad_port():
+    import socket
+
     from ballrace.cli import app
 
     res = CliRunner().invoke(app, ["teach", "serve", "--port", "70000"])
     assert res.exit_code == 2 and "--port must be in [0, 65535]" in res.output
+    with socket.socket() as busy:
+        busy.bind(("127.0.0.1", 0))
+        busy.listen(1)
+        port = busy.getsockname()[1]
+        res = CliRunner().invoke(app, ["teach", "serve", "--port", str(port)])
+    assert res.exit_code == 2 and f"cannot listen on 127.0.0.1:{port}" in res.output
+    assert "Traceback" not in res.output
 
 
 # ------------------------------------------------------------------ the export
