@@ -169,6 +169,7 @@ BAD = [
     ({"rx1": "0 mm"}, "rx1", "non-zero"),
     ({"ry1": "-2 mm"}, "ry2", "curvature sum in the y plane"),
     ({"ry2": "-5 mm"}, "ry2", "concave body is more curved"),
+    ({"ry1": "inf"}, "ry2", "line"),
     ({"load": "0 N"}, "load", "load must be > 0"),
     ({"load": "-3 N"}, "load", "load must be > 0"),
     ({"nu": "0.7"}, "nu", "nu must be in (-1, 0.5)"),
@@ -243,6 +244,35 @@ def test_case_file_endpoint(server):
     with urllib.request.urlopen(server + "/api/case?path=/nonexistent.toml", timeout=30) as f:
         r = json.loads(f.read())
     assert r["ok"] is False and "no such file" in r["error"]
+
+
+def test_serve_with_a_case_file():
+    from ballrace.cli import app
+
+    res = CliRunner().invoke(app, ["teach", "serve", "--case", "/nonexistent.toml"])
+    assert res.exit_code == 2 and "no such file" in res.output and "Traceback" not in res.output
+    path = Path(__file__).resolve().parents[1] / "examples" / "bearing_218.toml"
+    initial = ex.case_inputs(str(path), "outer")
+    srv = ex.make_server(0, initial=initial)
+    try:
+        th = threading.Thread(target=srv.serve_forever, kwargs={"poll_interval": 0.05},
+                              daemon=True)
+        th.start()
+        with urllib.request.urlopen(f"http://127.0.0.1:{srv.server_address[1]}/",
+                                    timeout=30) as f:
+            html = f.read().decode()
+    finally:
+        srv.shutdown()
+        srv.server_close()
+    init = json.loads(re.search(r"const DEFAULTS = (\{.*?\});", html).group(1))
+    assert init["mode"] == "bearing" and init["race"] == "outer" and init["angle"] == "40 deg"
+    r = ex.compute(init)
+    # the 218 bearing of Ricci (2009): D = 22.225 mm, d_e = 125.26 mm, f = 0.5232, 40 deg
+    D, dm, f, beta = 22.225e-3, 125.26e-3, 0.5232, math.radians(40)
+    g = D * math.cos(beta) / dm
+    c = hertz.elliptical_contact(2000.0, 0.5 * D * (1 + g), f * D / (2 * f - 1),
+                                 STEEL.reduced_modulus)
+    assert r["table"]["a"] == pytest.approx(float(c.a), rel=1e-9)
 
 
 def test_serve_command_prints_port_and_stops_on_ctrl_c(tmp_path):

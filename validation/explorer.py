@@ -395,8 +395,9 @@ def case_inputs(path: str, race: str = "inner") -> dict:
 
 
 # ------------------------------------------------------------------ the page
-def page(data: dict | None = None) -> str:
-    """The explorer's HTML page: CSS and JavaScript inline; ``data`` embedded (export)."""
+def page(data: dict | None = None, initial: dict | None = None) -> str:
+    """The explorer's HTML page: CSS and JavaScript inline; ``data`` embedded (export);
+    ``initial`` inputs replace those of :data:`DEFAULTS`."""
     html = (_STATIC / "explorer.html").read_text(encoding="utf-8")
     css = (_STATIC / "explorer.css").read_text(encoding="utf-8")
     js = (_STATIC / "explorer.js").read_text(encoding="utf-8")
@@ -404,7 +405,7 @@ def page(data: dict | None = None) -> str:
     if data is not None:
         raw = json.dumps(data, separators=(",", ":")).encode("utf-8")
         blob = base64.b64encode(gzip.compress(raw, 9, mtime=0)).decode("ascii")
-    init = json.dumps({k: v for k, v in DEFAULTS.items()})
+    init = json.dumps({**DEFAULTS, **(initial or {})}).replace("</", "<\\/")
     fields = json.dumps(FIELDS)
     return (html.replace("/*CSS*/", css)
             .replace("/*JS*/", js.replace("</", "<\\/"))
@@ -457,12 +458,13 @@ def export_html(path, grid: dict | None = None, progress=None) -> Path:
 
 
 # ------------------------------------------------------------------ the server
-def make_server(port: int = 0, host: str = "127.0.0.1"):
-    """A ThreadingHTTPServer serving the explorer (not started); port 0 picks a free port."""
+def make_server(port: int = 0, host: str = "127.0.0.1", initial: dict | None = None):
+    """A ThreadingHTTPServer serving the explorer (not started); port 0 picks a free port;
+    ``initial`` inputs (strings, as :data:`DEFAULTS`) are the page's first state."""
     from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
     from urllib.parse import parse_qs, urlparse
 
-    html = page(None).encode("utf-8")
+    html = page(None, initial).encode("utf-8")
     # one view computation at a time, and one maxima search at a time: the slow searches
     # with traction (second request) never hold up the views of the next change
     locks = {False: threading.Lock(), True: threading.Lock()}
@@ -553,15 +555,34 @@ def register_commands(teach_app) -> None:
     def teach_serve(
         port: Annotated[int, typer.Option(
             "--port", help="Port on 127.0.0.1 (default 0: a free one, printed).")] = 0,
+        case: Annotated[Path | None, typer.Option(
+            "--case", help="Start with the ball in a groove of this bearing case file.")] = None,
+        race: Annotated[str, typer.Option(
+            "--race", help="With --case: inner | outer.")] = "inner",
     ):
         """Serve the interactive subsurface-stress explorer on 127.0.0.1 (Ctrl-C stops it)."""
         if not 0 <= port <= 65535:
             typer.echo(f"error: --port must be in [0, 65535]; got {port}", err=True)
             raise typer.Exit(code=2)
+        initial = {}
+        if race not in ("inner", "outer"):
+            typer.echo(f"error: --race must be inner or outer; got {race!r}", err=True)
+            raise typer.Exit(code=2)
         try:
-            compute(DEFAULTS)                     # imports and the first state, before the address
+            if case is not None:
+                try:
+                    initial = case_inputs(str(case), race)
+                except InputError as exc:
+                    typer.echo(f"error: --case {exc}", err=True)
+                    raise typer.Exit(code=2) from None
+                initial["case"] = str(case)
+                initial.pop("title", None)
+            first = compute_safe({**DEFAULTS, **initial})   # imports and the first state
+            if not first["ok"]:
+                typer.echo(f"error: {first['error']}", err=True)
+                raise typer.Exit(code=2)
             try:
-                server = make_server(port)
+                server = make_server(port, initial=initial)
             except OSError as exc:
                 typer.echo(f"error: cannot listen on 127.0.0.1:{port} ({_one_line(exc)})",
                            err=True)
