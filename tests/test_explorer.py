@@ -411,7 +411,8 @@ def test_in_browser(tmp_path, server, export_data):
         def settle(action):
             before = page.get_attribute("body", "data-ready")
             action()
-            page.wait_for_function(f'document.body.dataset.ready && document.body.dataset.ready !== "{before}"')
+            page.wait_for_function("document.body.dataset.ready && "
+                                   f'document.body.dataset.ready !== "{before}"')
 
         # load slider -> 10^3.9 N (the page writes 3 significant digits: 7940 N)
         settle(lambda: page.locator("#load-slider").fill("3.9"))
@@ -430,11 +431,13 @@ def test_in_browser(tmp_path, server, export_data):
         assert int(page.get_attribute("#c-3d", "data-triangles")) > 100
         assert page.evaluate("""() => { const c = document.querySelector('#c-3d');
             const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
-            let n = 0; for (let i = 0; i < d.length; i += 4) if (d[i] < 200) n++; return n; }""") > 2000
+            let n = 0; for (let i = 0; i < d.length; i += 4) if (d[i] < 200) n++;
+            return n; }""") > 2000
         # bad input: the error in place, the last valid state kept, the server alive
         page.fill('[data-param="ry2"]', "-3 mm")
         page.locator('[data-param="ry2"]').dispatch_event("change")
-        page.wait_for_function("document.querySelector('.err[data-for=\"ry2\"]').textContent.length > 0")
+        page.wait_for_function(
+            "document.querySelector('.err[data-for=\"ry2\"]').textContent.length > 0")
         err = page.inner_text('.err[data-for="ry2"]')
         assert "curvature sum" in err and "\n" not in err
         assert table() == shown

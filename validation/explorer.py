@@ -98,7 +98,7 @@ def _guard(field: str, fun, *args, **kwargs):
         raise InputError(field, _one_line(exc)) from None
 
 
-def _number(text, field: str, low=None, high=None) -> float:
+def _number(text, field: str) -> float:
     """A plain number from a text field (dimensionless inputs such as nu, f, traction)."""
     from ballrace.units import parse_quantity
 
@@ -135,8 +135,6 @@ def _contact(params: dict):
         for n in names:
             if r[n] == 0:
                 raise InputError(n, f"{n} must be non-zero [m] (inf for a flat); got 0")
-            if r[n] < 0 and n.endswith("1"):
-                pass            # a concave body 1 is allowed when body 2 is more curved
         ratio = p.get("set_ratio")
         if ratio not in (None, ""):
             alpha = _number(ratio, "ratio")
@@ -248,7 +246,6 @@ def _sample(c, nu: float, mu: float) -> dict:
     from ballrace.analytic import subsurface
 
     k = float(c.k)
-    along_y = bool(c.major_axis_along_y)
     b, p0 = float(c.b), float(c.p_max)
     sx, sy = float(c.semi_axis_x) / b, float(c.semi_axis_y) / b
     z = np.linspace(0.0, _ZMAX, _NZ)
@@ -429,7 +426,8 @@ def export_grid(grid: dict | None = None, progress=None) -> dict:
                 for j, Q in enumerate(g["load"]):
                     r = compute(export_params(alpha, Q, nu, mu))
                     tables[f"{i},{j},{l},{m}"] = r["table"]
-                    dimless.setdefault(f"{i},{l},{m}", {"fields": r["dimless"], "maxima": r["maxima"]})
+                    dimless.setdefault(f"{i},{l},{m}", {"fields": r["dimless"],
+                                                        "maxima": r["maxima"]})
                     done += 1
                     if progress:
                         progress(done, n)
