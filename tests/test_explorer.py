@@ -389,15 +389,21 @@ def _digits(v: float) -> float:
     return float(f"{v:.4g}")
 
 
-@pytest.mark.slow
-def test_in_browser(tmp_path, server, export_data):
-    """Move the load and ellipticity controls of the live app, check a, b, p0, z0 against
-    the library to the printed digits, a drawn 3-D view, bad input kept in place; open the
-    export from file:// with no request and check its numbers."""
+@pytest.fixture(scope="module")
+def browser_exe():
+    """Playwright's sync API and a Chromium executable, or a skip (before any other work)."""
     sync_api = pytest.importorskip("playwright.sync_api", reason="pip install playwright")
     exe = _chromium()
     if exe is None:
         pytest.skip("no chromium (apt-get install chromium; see .ci/browser)")
+    return sync_api, exe
+
+
+def test_in_browser(browser_exe, tmp_path, server, export_data):
+    """(7–17 s here, not marked slow.)  Move the load and ellipticity controls of the live app, check a, b, p0, z0 against
+    the library to the printed digits, a drawn 3-D view, bad input kept in place; open the
+    export from file:// with no request and check its numbers."""
+    sync_api, exe = browser_exe
     with sync_api.sync_playwright() as p:
         browser = p.chromium.launch(executable_path=exe, args=["--no-sandbox"])
         page = browser.new_page(viewport={"width": 1280, "height": 900})
