@@ -400,9 +400,10 @@ def browser_exe():
 
 
 def test_in_browser(browser_exe, tmp_path, server, export_data):
-    """(7–17 s here, not marked slow.)  Move the load and ellipticity controls of the live app, check a, b, p0, z0 against
+    """Move the load and ellipticity controls of the live app, check a, b, p0, z0 against
     the library to the printed digits, a drawn 3-D view, bad input kept in place; open the
-    export from file:// with no request and check its numbers."""
+    export from file:// with no request and check its numbers.  (7–17 s on a 2-core
+    machine: not marked slow.)"""
     sync_api, exe = browser_exe
     with sync_api.sync_playwright() as p:
         browser = p.chromium.launch(executable_path=exe, args=["--no-sandbox"])
