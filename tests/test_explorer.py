@@ -408,6 +408,8 @@ def test_in_browser(browser_exe, tmp_path, server, export_data):
     with sync_api.sync_playwright() as p:
         browser = p.chromium.launch(executable_path=exe, args=["--no-sandbox"])
         page = browser.new_page(viewport={"width": 1280, "height": 900})
+        live_requests = []
+        page.on("request", lambda r: live_requests.append(r.url))
         page.goto(server + "/")
         page.wait_for_selector("body[data-ready]")
 
@@ -455,6 +457,7 @@ def test_in_browser(browser_exe, tmp_path, server, export_data):
         page.check("#compare")
         assert _num(page.inner_text('td[data-pin="a"]')) == shown["a"]
 
+        assert live_requests and all(u.startswith(server) for u in live_requests), live_requests
         # the export from file://, no request to anything but the file itself
         out = tmp_path / "explorer.html"
         out.write_text(ex.page(export_data), encoding="utf-8")
