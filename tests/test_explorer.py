@@ -275,7 +275,8 @@ def test_serve_with_a_case_file():
     assert r["table"]["a"] == pytest.approx(float(c.a), rel=1e-9)
 
 
-def test_serve_command_prints_port_and_stops_on_ctrl_c(tmp_path):
+@pytest.mark.parametrize("sig", [signal.SIGINT, signal.SIGTERM])
+def test_serve_command_prints_port_and_stops_on_ctrl_c(tmp_path, sig):
     env = {**os.environ, "PYTHONPATH": os.pathsep.join(p for p in sys.path if p)}
     proc = subprocess.Popen([sys.executable, "-m", "ballrace.cli", "teach", "serve"],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env,
@@ -286,7 +287,7 @@ def test_serve_command_prints_port_and_stops_on_ctrl_c(tmp_path):
         assert m, line
         with urllib.request.urlopen(m.group(0), timeout=30) as f:
             assert f.status == 200
-        proc.send_signal(signal.SIGINT)
+        proc.send_signal(sig)
         out, err = proc.communicate(timeout=30)
     finally:
         if proc.poll() is None:

@@ -586,6 +586,12 @@ def register_commands(teach_app) -> None:
                            err=True)
                 raise typer.Exit(code=2) from None
             host, port = server.server_address[:2]
+            import signal
+
+            def _stop(signum, frame):           # a SIGTERM stops it as Ctrl-C does
+                raise KeyboardInterrupt
+
+            signal.signal(signal.SIGTERM, _stop)
             typer.echo(f"ballrace explorer: http://{host}:{port}/  (Ctrl-C stops it)")
             try:
                 server.serve_forever(poll_interval=0.2)
