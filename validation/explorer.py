@@ -39,7 +39,7 @@ import numpy as np
 import typer
 
 __all__ = ["FIELDS", "DEFAULTS", "compute", "case_inputs", "export_html", "export_grid",
-           "make_server", "serve", "page", "EXPORT_GRID"]
+           "make_server", "page", "register_commands", "EXPORT_GRID"]
 
 log = logging.getLogger(__name__)
 
@@ -530,20 +530,6 @@ def make_server(port: int = 0, host: str = "127.0.0.1", initial: dict | None = N
             log.debug("explorer: request error", exc_info=True)
 
     return Server((host, port), Handler)
-
-
-def serve(port: int = 0, echo=print) -> None:
-    """Serve until Ctrl-C; prints the address (``echo``) and returns cleanly."""
-    server = make_server(port)
-    host, port = server.server_address[:2]
-    echo(f"ballrace explorer: http://{host}:{port}/  (Ctrl-C stops it)")
-    try:
-        server.serve_forever(poll_interval=0.2)
-    except KeyboardInterrupt:
-        pass
-    finally:
-        server.server_close()
-    echo("ballrace explorer: stopped")
 
 
 # ------------------------------------------------------------------ the commands
