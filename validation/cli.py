@@ -370,6 +370,16 @@ def _teach_rows(info: dict) -> list:
     return rows
 
 
+def _register_explorer() -> None:
+    """``teach serve`` and ``teach export``: the browser explorer (validation/explorer.py)."""
+    from .explorer import register_commands
+
+    register_commands(teach_app)
+
+
+_register_explorer()
+
+
 def register(app: typer.Typer) -> None:
     """Add ``validate`` and the ``teach`` group to the root app."""
     app.command("validate")(validate)
