@@ -353,7 +353,7 @@ class Seat:
         if b.n_rows != 1:
             raise ValueError(f"bearing must be single-row (n_rows=1); got n_rows={b.n_rows}")
         set_(self, "position", _scalar(self.position, "position", "m"))
-        if self.direction not in (1, -1):
+        if isinstance(self.direction, (bool, np.bool_)) or self.direction not in (1, -1):
             raise ValueError(f"direction must be +1 or -1; got {self.direction!r}")
         set_(self, "direction", int(self.direction))
         set_(self, "housing_stiffness", _housing(self.housing_stiffness, "housing_stiffness"))
@@ -1197,7 +1197,7 @@ def solve(shaft: Shaft, seats, loads=(), *, gravity=None, shaft_temperature_chan
         thermal_reference = loc[0] if loc else seats[0].position
     ref = _scalar(thermal_reference, "thermal_reference", "m")
     if gravity is not None:
-        gravity = as_array(gravity, "gravity")
+        gravity = as_array(gravity, "gravity", bounded=True, tiny_ok=True, unit="m/s^2")
         if gravity.shape != (3,):
             raise ValueError(f"gravity must be (g_x, g_y, g_z) [m/s^2]; got shape "
                              f"{gravity.shape}")

@@ -672,6 +672,25 @@ def test_shapes_2_and_3_are_named():
         subsurface.stress(CONTACT, np.zeros(2), np.zeros(3), 1e-4)
 
 
+def test_shaft_arguments_without_a_scalar_role():
+    """What the table's scalar roles cannot reach: direction, gravity, duty-cycle cases."""
+    with pytest.raises(ValueError, match="direction must be"):
+        shaft_mod.Seat(0.02, BEARING, direction=True)
+    with pytest.raises(ValueError, match="gravity must have a physical magnitude"):
+        shaft_mod.solve(_SHAFT, _SEATS, _LOADS, gravity=(0.0, -1e308, 0.0))
+    with pytest.raises(ValueError, match=r"cases\[0\] fraction must be finite"):
+        shaft_mod.duty_cycle(_SHAFT, _SEATS, [(_LOADS, math.nan, 1500.0)])
+    for t in (-0.5, 1.5):
+        with pytest.raises(ValueError, match=r"cases\[0\] fraction must be in \[0, 1\]"):
+            shaft_mod.duty_cycle(_SHAFT, _SEATS, [(_LOADS, t, 1500.0)])
+    with pytest.raises(TypeError, match=r"cases\[0\] must be \(loads, fraction"):
+        shaft_mod.duty_cycle(_SHAFT, _SEATS, [1.0])
+    with pytest.raises(ValueError, match=r"dynamic_rating must be a number or one per seat"):
+        shaft_mod.life(SHAFT_RESULT, dynamic_rating=[30e3, 30e3, 30e3])
+    with pytest.raises(ValueError, match=r"nodes must give one ROSS node per seat"):
+        shaft_mod.ross_bearings(SHAFT_RESULT, [1])
+
+
 @pytest.mark.parametrize("call", [
     lambda v: hertz.point_contact(v, 6.35e-3, 6.35e-3, 30e-3, -6.6e-3, STEEL),
     lambda v: hertz.point_contact(100.0, v, 6.35e-3, np.inf, -6.6e-3, STEEL),
