@@ -1511,14 +1511,24 @@ def life(result: ShaftResult, *, rotating: str = "inner", dynamic_rating=None,
 
 
 def _per_seat(v, name, ns):
-    """None, one number or one number per seat -> a list of ns (None or float).
+    """None, one number or one per seat (None: that seat's default) -> a list of ns.
 
-    TypeError for text, booleans and ragged lists; the values are checked where used."""
+    TypeError for text, booleans and nested lists; the values are checked where used."""
     if v is None:
         return [None] * ns
+    if isinstance(v, (list, tuple)) and any(x is None for x in v):
+        if len(v) != ns:
+            raise ValueError(f"{name} must be a number or one per seat ({ns}); got {len(v)}")
+        out = []
+        for k, x in enumerate(v):
+            a = None if x is None else as_array(x, f"{name}[{k}]", allow_inf=True)
+            if a is not None and a.ndim:
+                raise ValueError(f"{name}[{k}] must be one number; got shape {a.shape}")
+            out.append(None if a is None else float(a))
+        return out
     arr = as_array(v, name, allow_inf=True)
     if arr.ndim == 0:
-        return [v] * ns
+        return [float(arr)] * ns
     if arr.ndim != 1 or arr.size != ns:
         raise ValueError(f"{name} must be a number or one per seat ({ns}); got shape "
                          f"{arr.shape}")

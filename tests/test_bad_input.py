@@ -687,6 +687,13 @@ def test_shaft_arguments_without_a_scalar_role():
         shaft_mod.duty_cycle(_SHAFT, _SEATS, [1.0])
     with pytest.raises(ValueError, match=r"dynamic_rating must be a number or one per seat"):
         shaft_mod.life(SHAFT_RESULT, dynamic_rating=[30e3, 30e3, 30e3])
+    with pytest.raises(TypeError, match=r"dynamic_rating\[1\] must be a real number"):
+        shaft_mod.life(SHAFT_RESULT, dynamic_rating=[None, "30 kN"])
+    # None in a per-seat list: that seat's default rating (as the case-file reader passes)
+    mixed = shaft_mod.life(SHAFT_RESULT, dynamic_rating=[None, 30e3])
+    default = shaft_mod.life(SHAFT_RESULT)
+    assert mixed.ratings[0][0].C == default.ratings[0][0].C
+    assert mixed.ratings[1][0].C == 30e3
     with pytest.raises(ValueError, match=r"nodes must give one ROSS node per seat"):
         shaft_mod.ross_bearings(SHAFT_RESULT, [1])
 
