@@ -68,6 +68,7 @@ __all__ = [
     "ConvergenceError",
     "MOMENT_ARMS",
     "solve",
+    "ring_forces",
     "radial",
     "thrust",
     "combined",

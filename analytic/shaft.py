@@ -104,8 +104,8 @@ import numpy as np
 from scipy.linalg import cho_solve_banded, cholesky_banded
 
 from . import loaddist
-from ._checks import (as_array, check_choice, check_instance, check_nonnegative,
-                      check_positive)
+from ._checks import (as_array, broadcast, check_choice, check_instance, check_integer,
+                      check_nonnegative, check_positive, check_range)
 from .bearing import BallBearing
 from .clearance import OperatingClearance
 from .duplex import DuplexPair
@@ -130,6 +130,22 @@ DOF_NAMES = ("axial translation u", "lateral translation v (y)", "lateral transl
              "rotation about y", "rotation about z")
 
 
+def _count(value, name, low=1) -> int:
+    """A whole number >= low given as one number (TypeError for text, booleans, arrays)."""
+    n = check_integer(value, name, low)
+    if n.ndim:
+        raise TypeError(f"{name} must be one whole number >= {low}; got shape {n.shape}")
+    return int(n)
+
+
+def _scalar(value, name, unit) -> float:
+    """One finite number of physical magnitude (any sign, any small value) [unit]."""
+    v = as_array(value, name, bounded=True, tiny_ok=True, unit=unit)
+    if v.ndim:
+        raise TypeError(f"{name} must be one number [{unit}]; got shape {v.shape}")
+    return float(v)
+
+
 # =========================================================================== the shaft
 def shear_coefficient(nu, inner_ratio=0.0):
     r"""Timoshenko shear coefficient of a solid or hollow circular section [-].
@@ -142,7 +158,7 @@ def shear_coefficient(nu, inner_ratio=0.0):
     Parameters
     ----------
     nu : float or array_like
-        Poisson's ratio [-].
+        Poisson's ratio [-], in (-1, 0.5].
     inner_ratio : float or array_like
         Bore over outer diameter m [-], in [0, 1).
 
@@ -151,8 +167,10 @@ def shear_coefficient(nu, inner_ratio=0.0):
     >>> round(float(shear_coefficient(0.3)), 4)
     0.8864
     """
-    nu = as_array(nu, "nu")
-    m2 = as_array(inner_ratio, "inner_ratio") ** 2
+    nu = check_range(nu, "nu", -1.0, 0.5, high_inclusive=True, unit="-")
+    m = check_range(inner_ratio, "inner_ratio", 0.0, 1.0, low_inclusive=True, unit="-")
+    nu, m = broadcast(nu=nu, inner_ratio=m)
+    m2 = m**2
     return 6 * (1 + nu) * (1 + m2) ** 2 / ((7 + 6 * nu) * (1 + m2) ** 2 + (20 + 12 * nu) * m2)
 
 
@@ -189,6 +207,8 @@ class Shaft:
         check_instance(self.material, "material", Material)
         secs = []
         try:
+            if isinstance(self.sections, (str, bytes)):
+                raise TypeError
             items = list(self.sections)
         except TypeError:
             raise TypeError("sections must be a sequence of (length, outer_diameter, "
@@ -209,12 +229,9 @@ class Shaft:
                                  f"{D!r} m; got {d!r}")
             secs.append((L, D, d))
         object.__setattr__(self, "sections", tuple(secs))
-        n = int(self.n_elements)
-        if n != self.n_elements or n < 1:
-            raise ValueError(f"n_elements must be an integer >= 1; got {self.n_elements!r}")
-        object.__setattr__(self, "n_elements", n)
+        object.__setattr__(self, "n_elements", _count(self.n_elements, "n_elements"))
         a = float(check_nonnegative(self.thermal_expansion, "thermal_expansion", "1/K",
-                                    tiny_ok=True))
+                                    bounded=True, tiny_ok=True))
         object.__setattr__(self, "thermal_expansion", a)
 
     @property
@@ -335,15 +352,15 @@ class Seat:
         b = self.bearing if isinstance(self.bearing, BallBearing) else self.bearing.bearing
         if b.n_rows != 1:
             raise ValueError(f"bearing must be single-row (n_rows=1); got n_rows={b.n_rows}")
-        set_(self, "position", float(as_array(self.position, "position")))
-        if self.direction not in (1, -1):
+        set_(self, "position", _scalar(self.position, "position", "m"))
+        if isinstance(self.direction, (bool, np.bool_)) or self.direction not in (1, -1):
             raise ValueError(f"direction must be +1 or -1; got {self.direction!r}")
         set_(self, "direction", int(self.direction))
         set_(self, "housing_stiffness", _housing(self.housing_stiffness, "housing_stiffness"))
-        set_(self, "offset", float(as_array(self.offset, "offset")))
+        set_(self, "offset", _scalar(self.offset, "offset", "m"))
         set_(self, "spring_preload", float(check_nonnegative(self.spring_preload,
                                                              "spring_preload", "N",
-                                                             tiny_ok=True)))
+                                                             bounded=True, tiny_ok=True)))
         if self.spring_preload > 0 and not self.floating:
             raise ValueError("spring_preload needs floating=True (the spring pushes the "
                              "axially free outer ring)")
@@ -353,9 +370,9 @@ class Seat:
             if isinstance(self.bearing, DuplexPair):
                 raise ValueError("clearance is for a single bearing; a DuplexPair's rows "
                                  "keep their own preload")
-            set_(self, "clearance", float(as_array(self.clearance, "clearance")))
+            set_(self, "clearance", _scalar(self.clearance, "clearance", "m"))
         set_(self, "row_spacing", float(check_nonnegative(self.row_spacing, "row_spacing",
-                                                          "m", tiny_ok=True)))
+                                                          "m", bounded=True, tiny_ok=True)))
         set_(self, "floating", bool(self.floating))
 
     @property
@@ -415,8 +432,9 @@ class PointLoad:
     name: str = ""
 
     def __post_init__(self) -> None:
-        for k in ("position", "Fa", "Fy", "Fz", "My", "Mz"):
-            object.__setattr__(self, k, float(as_array(getattr(self, k), k)))
+        for k, unit in (("position", "m"), ("Fa", "N"), ("Fy", "N"), ("Fz", "N"),
+                        ("My", "N m"), ("Mz", "N m")):
+            object.__setattr__(self, k, _scalar(getattr(self, k), k, unit))
 
     @property
     def vector(self) -> np.ndarray:
@@ -465,8 +483,8 @@ def gear_mesh(position, tangential_force, pitch_diameter, *, pressure_angle=np.r
     >>> round(p.Fy, 1), round(p.Fz, 1), round(p.Fa, 1), round(p.Mz, 2)
     (-376.8, 1000.0, 267.9, -26.79)
     """
-    Ft = float(as_array(tangential_force, "tangential_force"))
-    r = 0.5 * float(check_positive(pitch_diameter, "pitch_diameter", "m"))
+    Ft = _scalar(tangential_force, "tangential_force", "N")
+    r = 0.5 * float(check_positive(pitch_diameter, "pitch_diameter", "m", bounded=True))
     an = float(as_array(pressure_angle, "pressure_angle"))
     b = float(as_array(helix_angle, "helix_angle"))
     if not 0.0 <= an < 0.5 * np.pi:
@@ -506,7 +524,7 @@ def belt_pull(position, force, azimuth=0.0, name="belt") -> PointLoad:
     >>> round(p.Fy, 9), p.Fz
     (0.0, 800.0)
     """
-    F = float(check_nonnegative(force, "force", "N", tiny_ok=True))
+    F = float(check_nonnegative(force, "force", "N", bounded=True, tiny_ok=True))
     phi = float(as_array(azimuth, "azimuth"))
     return PointLoad(position, Fy=F * np.cos(phi), Fz=F * np.sin(phi), name=name)
 
@@ -1028,6 +1046,17 @@ class _Problem:
 _PROBLEMS: dict = {}
 
 
+def _sequence(value, name, what) -> tuple:
+    """A tuple of the items of a sequence (TypeError naming ``name`` for anything else)."""
+    try:
+        if isinstance(value, (str, bytes)):
+            raise TypeError
+        return tuple(value)
+    except TypeError:
+        raise TypeError(f"{name} must be a sequence of {what}; got "
+                        f"{type(value).__name__} {value!r}"[:120]) from None
+
+
 def _check_setup(shaft, seats, loads):
     L = shaft.length
     if not seats:
@@ -1122,7 +1151,7 @@ def solve(shaft: Shaft, seats, loads=(), *, gravity=None, shaft_temperature_chan
         irrelevant unless two seats locate axially.
     rtol : float
         Equilibrium tolerance: largest residual force (moments over the largest bearing
-        pitch radius) relative to the largest applied or reaction load [-].
+        pitch radius) relative to the largest applied or reaction load [-], in (0, 1).
     max_iter : int
         Newton iterations per load step (and 10 max_iter over all load steps).
     initial : ShaftResult, optional
@@ -1152,20 +1181,23 @@ def solve(shaft: Shaft, seats, loads=(), *, gravity=None, shaft_temperature_chan
     [3500.0, 1500.0]
     """
     check_instance(shaft, "shaft", Shaft)
-    seats = tuple(seats)
-    loads = tuple(loads)
+    seats = _sequence(seats, "seats", "Seat")
+    loads = _sequence(loads, "loads", "PointLoad")
     _check_setup(shaft, seats, loads)
-    dTs = float(as_array(shaft_temperature_change, "shaft_temperature_change"))
-    dTh = float(as_array(housing_temperature_change, "housing_temperature_change"))
-    ah = float(check_nonnegative(housing_expansion, "housing_expansion", "1/K", tiny_ok=True))
+    dTs = _scalar(shaft_temperature_change, "shaft_temperature_change", "K")
+    dTh = _scalar(housing_temperature_change, "housing_temperature_change", "K")
+    ah = float(check_nonnegative(housing_expansion, "housing_expansion", "1/K", bounded=True,
+                                 tiny_ok=True))
+    rtol = float(check_range(rtol, "rtol", 0.0, 1.0, unit="-"))
+    max_iter = _count(max_iter, "max_iter")
     if dTs and shaft.thermal_expansion == 0.0:
         raise ValueError("shaft_temperature_change needs shaft.thermal_expansion [1/K] > 0")
     if thermal_reference is None:
         loc = [s.position for s in seats if not s.floating]
         thermal_reference = loc[0] if loc else seats[0].position
-    ref = float(as_array(thermal_reference, "thermal_reference"))
+    ref = _scalar(thermal_reference, "thermal_reference", "m")
     if gravity is not None:
-        gravity = as_array(gravity, "gravity")
+        gravity = as_array(gravity, "gravity", bounded=True, tiny_ok=True, unit="m/s^2")
         if gravity.shape != (3,):
             raise ValueError(f"gravity must be (g_x, g_y, g_z) [m/s^2]; got shape "
                              f"{gravity.shape}")
@@ -1457,17 +1489,8 @@ def life(result: ShaftResult, *, rotating: str = "inner", dynamic_rating=None,
     e = BALL_WEIBULL_SLOPE if weibull_slope is None else float(
         check_positive(weibull_slope, "weibull_slope", "-"))
     ns = len(result.seats)
-
-    def per_seat(v, name):
-        if v is None or np.ndim(v) == 0:
-            return [v] * ns
-        v = list(v)
-        if len(v) != ns:
-            raise ValueError(f"{name} must be a number or one per seat ({ns}); got {len(v)}")
-        return v
-
-    C = per_seat(dynamic_rating, "dynamic_rating")
-    alpha = per_seat(nominal_contact_angle, "nominal_contact_angle")
+    C = _per_seat(dynamic_rating, "dynamic_rating", ns)
+    alpha = _per_seat(nominal_contact_angle, "nominal_contact_angle", ns)
     rows, ratings, seat, cat = [], [], [], []
     for k, s in enumerate(result.seats):
         # the ball loads of the seat's rows (as in result.bearings, without building them)
@@ -1485,6 +1508,31 @@ def life(result: ShaftResult, *, rotating: str = "inner", dynamic_rating=None,
     return ShaftLife(seat_lives=np.array(seat), row_lives=tuple(rows), ratings=tuple(ratings),
                      system=float(system_life(allrows, e)), weibull_slope=e,
                      kind="Lnmr" if modified else "L10r", catalog_lives=tuple(cat))
+
+
+def _per_seat(v, name, ns):
+    """None, one number or one per seat (None: that seat's default) -> a list of ns.
+
+    TypeError for text, booleans and nested lists; the values are checked where used."""
+    if v is None:
+        return [None] * ns
+    if isinstance(v, (list, tuple)) and any(x is None for x in v):
+        if len(v) != ns:
+            raise ValueError(f"{name} must be a number or one per seat ({ns}); got {len(v)}")
+        out = []
+        for k, x in enumerate(v):
+            a = None if x is None else as_array(x, f"{name}[{k}]", allow_inf=True)
+            if a is not None and a.ndim:
+                raise ValueError(f"{name}[{k}] must be one number; got shape {a.shape}")
+            out.append(None if a is None else float(a))
+        return out
+    arr = as_array(v, name, allow_inf=True)
+    if arr.ndim == 0:
+        return [float(arr)] * ns
+    if arr.ndim != 1 or arr.size != ns:
+        raise ValueError(f"{name} must be a number or one per seat ({ns}); got shape "
+                         f"{arr.shape}")
+    return [float(x) for x in arr]
 
 
 def _catalog_life(seat, R, C, alpha, modified):
@@ -1565,7 +1613,7 @@ def duty_cycle(shaft: Shaft, seats, cases, *, rotating: str = "inner", dynamic_r
     """
     from .life import miner
 
-    cases = list(cases)
+    cases = list(_sequence(cases, "cases", "(loads, fraction, speed_rpm)"))
     if not cases:
         raise ValueError("cases must hold at least one (loads, fraction, speed_rpm)")
     from .iso16281 import reference_rating_life
@@ -1577,30 +1625,33 @@ def duty_cycle(shaft: Shaft, seats, cases, *, rotating: str = "inner", dynamic_r
     res, speeds, fr = [], [], []
     prev = None
     for i, c in enumerate(cases):
+        if isinstance(c, (str, bytes)) or not hasattr(c, "__len__"):
+            raise TypeError(f"cases[{i}] must be (loads, fraction, speed_rpm); got "
+                            f"{type(c).__name__} {c!r}")
         try:
             loads, t, n = c
         except (TypeError, ValueError):
             raise ValueError(f"cases[{i}] must be (loads, fraction, speed_rpm); got {c!r}") \
                 from None
-        speeds.append(float(check_positive(n, f"cases[{i}] speed_rpm", "rev/min")))
+        t = float(check_range(t, f"cases[{i}] fraction", 0.0, 1.0, low_inclusive=True,
+                              high_inclusive=True, unit="-"))
+        speeds.append(float(check_positive(n, f"cases[{i}] speed_rpm", "rev/min",
+                                           bounded=True)))
         r = solve(shaft, seats, loads, initial=prev, **solve_kwargs)
-        fr.append(float(t))
+        fr.append(t)
         res.append(r)
         prev = r
     # the lives of every row over all cases at once (the same rules as life())
     ns = len(res[0].seats)
-    C = dynamic_rating if dynamic_rating is None or np.ndim(dynamic_rating) == 0 \
-        else list(dynamic_rating)
-    A = nominal_contact_angle if nominal_contact_angle is None or \
-        np.ndim(nominal_contact_angle) == 0 else list(nominal_contact_angle)
+    C = _per_seat(dynamic_rating, "dynamic_rating", ns)
+    A = _per_seat(nominal_contact_angle, "nominal_contact_angle", ns)
     seat_L = np.zeros((len(res), ns))
     for i, (k, b, c, _) in enumerate(res[0]._rows):
         U = np.array([r._rows[i][3] for r in res])
         Q = _ring_forces(b, c, U, balls=True)[4]
         rr = reference_rating_life(res[0].seats[k].ball_bearing, _Balls(Q),
-                                   dynamic_rating=C[k] if isinstance(C, list) else C,
-                                   rotating=rotating,
-                                   nominal_contact_angle=A[k] if isinstance(A, list) else A)
+                                   dynamic_rating=C[k], rotating=rotating,
+                                   nominal_contact_angle=A[k])
         L = np.asarray(rr.modified(**modified) if modified else rr.L10r, float)
         with np.errstate(divide="ignore"):
             seat_L[:, k] += np.where(np.isinf(L), 0.0, L ** -e)
@@ -1682,22 +1733,23 @@ def ross_bearings(result: ShaftResult, nodes, *, tilt: str = "held", damping: fl
     tilt : {"held", "free"}
         See :func:`bearing_coefficients`.
     damping : float
-        Direct damping c_xx = c_yy [N s/m] (a rolling bearing's is small and not modelled).
+        Direct damping c_xx = c_yy [N s/m], >= 0 (a rolling bearing's is small and not modelled).
 
     Returns
     -------
     list of ross.BearingElement
     """
+    coeffs = bearing_coefficients(result, tilt)
+    nodes = check_integer(nodes, "nodes", 0)
+    if nodes.shape != (len(coeffs),):
+        raise ValueError(f"nodes must give one ROSS node per seat ({len(coeffs)}); got "
+                         f"shape {nodes.shape}")
+    c_d = float(check_nonnegative(damping, "damping", "N s/m", bounded=True, tiny_ok=True))
     try:
         import ross
     except ImportError:
         raise ImportError("ross_bearings needs ROSS: pip install 'ballrace[rotor]' "
                           "(ross-rotordynamics)") from None
-    nodes = list(nodes)
-    coeffs = bearing_coefficients(result, tilt)
-    if len(nodes) != len(coeffs):
-        raise ValueError(f"nodes must give one ROSS node per seat ({len(coeffs)}); got "
-                         f"{len(nodes)}")
     return [ross.BearingElement(n=int(n), kxx=c["kxx"], kyy=c["kyy"], kxy=c["kxy"],
-                                kyx=c["kyx"], cxx=float(damping), cyy=float(damping))
+                                kyx=c["kyx"], cxx=c_d, cyy=c_d)
             for n, c in zip(nodes, coeffs)]

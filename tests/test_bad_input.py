@@ -11,6 +11,7 @@ role      meaning                                                        refuses
 scale     positive dimensional quantity (length, modulus, density)        -1, 0, NaN,
                                                                          ±inf, 1e308
 pos       positive dimensionless number                                  -1, 0, NaN, ±inf
+life      positive, inf allowed (an unloaded bearing's life)             -1, 0, NaN
 load      non-negative dimensional quantity (load, approach, roughness)  -1, NaN, ±inf,
                                                                          1e308
 nonneg    non-negative dimensionless number                              -1, NaN, ±inf
@@ -46,6 +47,7 @@ from hypothesis import strategies as st
 import ballrace
 import ballrace.analytic
 from ballrace.analytic import hertz, loaddist
+from ballrace.analytic import shaft as shaft_mod
 from ballrace.analytic.bearing import BallBearing
 from ballrace.analytic.materials import Material
 
@@ -59,7 +61,10 @@ RADIAL = loaddist.radial(BEARING, 5000.0)
 #: Modules of ballrace.analytic that are not formula/solver APIs: the command line and the
 #: case-file reader (their input errors are CLI usage errors and CaseFileError, tested in
 #: tests/test_cli*.py and tests/test_bearing_cli.py).
-NOT_API = {"cli", "casefile", "isocase"}
+NOT_API = {"cli", "casefile", "isocase", "shaft_cli"}
+# shaft_cli is the ``ballrace shaft CASE.toml`` command and its case-file reader: its
+# errors are one-line case-file errors naming the key (tests/test_shaft_cli.py); the
+# numbers it passes on are checked by shaft.Shaft, Seat, PointLoad and solve (rows below).
 # isocase is not a formula API either: ``iso_life`` takes a validated case (BearingCase,
 # checked by the case-file reader) and its load distribution, and ``rows`` formats the
 # dict that ``iso_life`` returns for the report; the numbers they pass on are checked in
@@ -73,11 +78,13 @@ NOT_INPUTS = {"Curvature", "HertzContact", "LineContact", "OrthogonalShear", "Ma
               "DefectFrequencies", "StaticRatingPressure", "EquivalentLoad",
               "LundbergPalmgrenLife", "LoadDistribution", "ConvergenceError",
               "DuplexResult", "HighSpeedResult", "FatigueLoadLimit",
-              "ReferenceRatingLife", "OperatingClearance"}
+              "ReferenceRatingLife", "OperatingClearance", "SurfaceTension",
+              "ShaftResult", "ShaftLife", "DutyCycleLife"}
 
 BAD = {
     "scale": [-1.0, 0.0, math.nan, math.inf, -math.inf, 1e308],
     "pos": [-1.0, 0.0, math.nan, math.inf, -math.inf],
+    "life": [-1.0, 0.0, math.nan],
     "load": [-1.0, math.nan, math.inf, -math.inf, 1e308],
     "nonneg": [-1.0, math.nan, math.inf, -math.inf],
     "signed": [math.nan, math.inf, -math.inf, 1e308],
@@ -433,6 +440,89 @@ TABLE.update({
              housing_material="object"), ()),
 })
 
+# subsurface: surface tension and the traction at which the maximum reaches the surface
+TABLE.update({
+    "subsurface.surface_tension": (dict(c=CONTACT, nu=0.3, traction=0.2),
+                                   dict(c="object", nu="unit", traction="finite"),
+                                   ("nu", "traction")),   # traction in [-10, 10]
+    "subsurface.critical_traction": (dict(ratio=0.5, nu=0.3, criterion="tresca"),
+                                     dict(ratio="unit", nu="unit", criterion="choice"),
+                                     ("ratio", "nu")),    # ratio b/a in [0, 1]
+    # ring displacements (..., 5): a scalar is refused for its shape or its value
+    "loaddist.ring_forces": (dict(bearing=ANGULAR, displacements=[1e-5, 1e-5, 0.0, 0.0, 0.0],
+                                  moment_arm="groove", clearance=10e-6, azimuth_offset=0.1),
+                             dict(bearing="object", displacements="coord",
+                                  moment_arm="choice", clearance="signed",
+                                  azimuth_offset="finite"), ()),
+})
+
+# shaft: a short shaft on two deep-groove bearings (a solve takes milliseconds)
+_SHAFT = shaft_mod.Shaft([(0.2, 0.04, 0.0)], STEEL, n_elements=8, thermal_expansion=11.5e-6)
+_SEATS = (shaft_mod.Seat(0.02, BEARING), shaft_mod.Seat(0.18, BEARING, floating=True))
+_LOADS = (shaft_mod.PointLoad(0.1, Fy=2000.0, Fa=100.0),)
+SHAFT_RESULT = shaft_mod.solve(_SHAFT, _SEATS, _LOADS)
+TABLE.update({
+    "shaft.shear_coefficient": (dict(nu=0.3, inner_ratio=0.5),
+                                dict(nu="unit", inner_ratio="unit"),   # m = d_i/d_o in [0, 1)
+                                ("nu", "inner_ratio")),
+    # sections is a sequence of (length, outer, inner diameter): a text or a number is a
+    # TypeError; the numbers in it are checked one by one (tests/test_shaft.py)
+    "shaft.Shaft": (dict(sections=[(0.2, 0.04, 0.0)], material=STEEL, n_elements=8,
+                         thermal_expansion=11.5e-6),
+                    dict(sections="object", material="object", n_elements="count",
+                         thermal_expansion="load"), ()),
+    # direction (+1 or -1), housing_stiffness (5-vector or 5x5) and floating have no
+    # scalar role: tests/test_shaft.py
+    "shaft.Seat": (dict(position=0.02, bearing=BEARING, offset=1e-6, spring_preload=10.0,
+                        floating=True, clearance=5e-6, row_spacing=0.01),
+                   dict(position="coord", bearing="object", offset="signed",
+                        spring_preload="load", clearance="signed", row_spacing="load"), ()),
+    "shaft.PointLoad": (dict(position=0.1, Fa=100.0, Fy=2000.0, Fz=-500.0, My=1.0, Mz=-2.0),
+                        dict(position="coord", Fa="signed", Fy="signed", Fz="signed",
+                             My="signed", Mz="signed"), ()),
+    "shaft.gear_mesh": (dict(position=0.1, tangential_force=1000.0, pitch_diameter=0.2,
+                             pressure_angle=0.35, helix_angle=0.26, mesh_azimuth=0.5),
+                        dict(position="coord", tangential_force="signed",
+                             pitch_diameter="scale", pressure_angle="angle",
+                             helix_angle="angle", mesh_azimuth="finite"), ()),
+    "shaft.belt_pull": (dict(position=0.1, force=800.0, azimuth=1.0),
+                        dict(position="coord", force="load", azimuth="finite"), ()),
+    # gravity is a 3-vector (no scalar role); initial is None or a ShaftResult
+    "shaft.solve": (dict(shaft=_SHAFT, seats=_SEATS, loads=_LOADS,
+                         shaft_temperature_change=10.0, housing_temperature_change=5.0,
+                         housing_expansion=11.5e-6, thermal_reference=0.02, rtol=1e-10,
+                         max_iter=100, initial=SHAFT_RESULT),
+                    dict(shaft="object", seats="object", loads="object",
+                         shaft_temperature_change="signed",
+                         housing_temperature_change="signed", housing_expansion="load",
+                         thermal_reference="coord", rtol="pos", max_iter="count",
+                         initial="object"), ()),
+    # modified is a dict of ISO 281 factors (checked by iso281, rows above)
+    "shaft.life": (dict(result=SHAFT_RESULT, rotating="inner", dynamic_rating=30e3,
+                        nominal_contact_angle=0.0, weibull_slope=10 / 9),
+                   dict(result="object", rotating="choice", dynamic_rating="scale",
+                        nominal_contact_angle="angle", weibull_slope="pos"), ()),
+    "shaft.system_life": (dict(lives=[1e3, 2e3, np.inf], weibull_slope=10 / 9),
+                          dict(lives="life", weibull_slope="pos"), ()),
+    "shaft.duty_cycle": (dict(shaft=_SHAFT, seats=_SEATS,
+                              cases=[(_LOADS, 0.5, 1500.0),
+                                     ((shaft_mod.PointLoad(0.1, Fy=500.0),), 0.5, 3000.0)],
+                              rotating="inner", dynamic_rating=30e3,
+                              nominal_contact_angle=0.0, weibull_slope=10 / 9),
+                         dict(shaft="object", seats="object", cases="object",
+                              rotating="choice", dynamic_rating="scale",
+                              nominal_contact_angle="angle", weibull_slope="pos"), ()),
+    "shaft.bearing_coefficients": (dict(result=SHAFT_RESULT, tilt="free"),
+                                   dict(result="object", tilt="choice"), ()),
+    # nodes: one ROSS node index per seat (a sequence, no scalar role)
+    "shaft.ross_bearings": (dict(result=SHAFT_RESULT, nodes=[1, 7], tilt="held",
+                                 damping=100.0),
+                            dict(result="object", tilt="choice", damping="load"), ()),
+})
+#: Rows whose valid call needs an optional package (skipped without it; the bad values
+#: are refused before the package is imported).
+NEEDS = {"shaft.ross_bearings": "ross"}
+
 # methods of input classes (called on the instance in METHOD_OF)
 TABLE.update({
     "bearing.BallBearing.contacts": (dict(ball_loads=np.full(9, 500.0), contact_angles=0.4,
@@ -481,6 +571,8 @@ def test_every_public_function_is_in_the_table():
 @pytest.mark.parametrize("key", sorted(TABLE))
 def test_valid_row_runs(key):
     """The table's valid call works, so every failure below is due to the one bad argument."""
+    if key in NEEDS:
+        pytest.importorskip(NEEDS[key])
     kwargs, _, _ = TABLE[key]
     _func(key)(**kwargs)
 
@@ -578,6 +670,32 @@ def test_shapes_2_and_3_are_named():
         ANGULAR.contacts(np.ones(2), np.full(3, 0.3), "inner")
     with pytest.raises(ValueError, match=r"x \(shape \(2,\)\) and y \(shape \(3,\)\)"):
         subsurface.stress(CONTACT, np.zeros(2), np.zeros(3), 1e-4)
+
+
+def test_shaft_arguments_without_a_scalar_role():
+    """What the table's scalar roles cannot reach: direction, gravity, duty-cycle cases."""
+    with pytest.raises(ValueError, match="direction must be"):
+        shaft_mod.Seat(0.02, BEARING, direction=True)
+    with pytest.raises(ValueError, match="gravity must have a physical magnitude"):
+        shaft_mod.solve(_SHAFT, _SEATS, _LOADS, gravity=(0.0, -1e308, 0.0))
+    with pytest.raises(ValueError, match=r"cases\[0\] fraction must be finite"):
+        shaft_mod.duty_cycle(_SHAFT, _SEATS, [(_LOADS, math.nan, 1500.0)])
+    for t in (-0.5, 1.5):
+        with pytest.raises(ValueError, match=r"cases\[0\] fraction must be in \[0, 1\]"):
+            shaft_mod.duty_cycle(_SHAFT, _SEATS, [(_LOADS, t, 1500.0)])
+    with pytest.raises(TypeError, match=r"cases\[0\] must be \(loads, fraction"):
+        shaft_mod.duty_cycle(_SHAFT, _SEATS, [1.0])
+    with pytest.raises(ValueError, match=r"dynamic_rating must be a number or one per seat"):
+        shaft_mod.life(SHAFT_RESULT, dynamic_rating=[30e3, 30e3, 30e3])
+    with pytest.raises(TypeError, match=r"dynamic_rating\[1\] must be a real number"):
+        shaft_mod.life(SHAFT_RESULT, dynamic_rating=[None, "30 kN"])
+    # None in a per-seat list: that seat's default rating (as the case-file reader passes)
+    mixed = shaft_mod.life(SHAFT_RESULT, dynamic_rating=[None, 30e3])
+    default = shaft_mod.life(SHAFT_RESULT)
+    assert mixed.ratings[0][0].C == default.ratings[0][0].C
+    assert mixed.ratings[1][0].C == 30e3
+    with pytest.raises(ValueError, match=r"nodes must give one ROSS node per seat"):
+        shaft_mod.ross_bearings(SHAFT_RESULT, [1])
 
 
 @pytest.mark.parametrize("call", [
