@@ -19,7 +19,8 @@ what real curved balls do (docs/fem-axisym.md).
 """
 from __future__ import annotations
 
-from .api import (GAPS, LEVELS, MODES, TOLERANCES, ContactCase, FEResult, MeshLevel,
+from .api import (GAPS, LEVELS, MODES, TOLERANCES, TRACTION_TOLERANCES, ContactCase,
+                  FEResult, MeshLevel,
                   ball_case, ball_on_ball, ball_on_groove, ball_on_plane, ball_on_race,
                   groove_case, plane_case, race_case, run_case)
 from .render import render, render_3d
@@ -28,4 +29,4 @@ from .solvers import SOLVERS, available_solvers
 __all__ = ["ball_on_race", "ball_on_plane", "ball_on_ball", "ball_on_groove", "run_case",
            "render", "render_3d", "race_case", "plane_case", "ball_case", "groove_case",
            "ContactCase", "FEResult", "LEVELS", "MeshLevel", "MODES", "GAPS", "TOLERANCES",
-           "SOLVERS", "available_solvers"]
+           "TRACTION_TOLERANCES", "SOLVERS", "available_solvers"]

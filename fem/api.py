@@ -19,7 +19,8 @@ from ballrace.analytic._checks import check_choice, check_positive, check_range
 from ballrace.analytic.materials import BEARING_STEEL, Material, effective_modulus
 from ballrace.meshes import geometry as geo
 
-__all__ = ["LEVELS", "MeshLevel", "MODES", "GAPS", "TOLERANCES", "ContactCase", "FEResult",
+__all__ = ["LEVELS", "MeshLevel", "MODES", "GAPS", "TOLERANCES", "TRACTION_TOLERANCES",
+           "TRACTION_PRESSURES", "ContactCase", "FEResult",
            "ball_on_race", "ball_on_plane", "ball_on_ball", "ball_on_groove", "run_case",
            "race_case", "plane_case", "ball_case", "groove_case"]
 
@@ -464,6 +465,7 @@ class FEResult:
         out["timings"] = dict(self.timings)
         out["comparison"] = list(self.comparison)
         out["info"] = dict(self.info)
+        out["traction"] = float(self.info.get("traction", {}).get("mu", 0.0))
         out["passed"] = self.passed
         return out
 
@@ -495,7 +497,9 @@ def ball_on_race(brg, load: float, race: str = "inner", contact_angle: float = 0
         ("beyond Hertz": no tolerances applied).
     **kwargs
         ``solver`` (force a sparse solver), ``use_cache`` (mesh cache),
-        ``progress`` (callable(stage)).
+        ``progress`` (callable(stage)), ``traction`` (coefficient mu of a tangential
+        surface traction q = mu p along +x [-]) and ``traction_pressure`` ("fe" |
+        "hertz"): see :func:`run_case`.
 
     Returns
     -------
