@@ -1067,13 +1067,16 @@ def _traction_rows(r, low, ut, mu, kind, resultant) -> None:
         row(f"traction_{name}_depth", "m", z_fe, z_an, (z_fe - z_an) / minor,
             "minor semi-axis")
         peaks[name] = {"fe": (x_fe, z_fe, v_fe), "analytic": (x_an, z_an, v_an)}
-    # the surface tension behind the contact: the FE's largest sxx near the trailing edge
-    # against the exact sxx at (-a_x, 0, 0), where the tension peaks (Hamilton & Goodman
-    # 1966 for the circle)
+    # the surface tension behind the contact: the largest sxx of the surface row over
+    # -1.3 a_x <= x <= -0.7 a_x, FE against exact on the same points.  The exact sxx has a
+    # cusp at the trailing edge (x = -a_x, z = 0: Hamilton & Goodman 1966 for the circle,
+    # kept in info as "sxx_trailing_edge_exact") that falls by a third within 0.03 a_x;
+    # no mesh of element size h resolves it, the sampled row is what is compared
     back = (x >= -1.3 * ax_) & (x <= -0.7 * ax_)
     sxx_fe = float(np.max(S[back, 0, 0]))
-    sxx_an = float(sub.stress(c, -ax_, 0.0, 0.0, nu=nu, traction=mu).sxx)
+    sxx_an = float(np.max(A[back, 0, 0]))
     row("traction_sxx_trailing", "Pa", sxx_fe, sxx_an, (sxx_fe - sxx_an) / p0, "p0")
+    edge = float(sub.stress(c, -ax_, 0.0, 0.0, nu=nu, traction=mu).sxx)
     # the whole section below the surface row: RMS of the von Mises difference / p0
     d = (vm - vma)[:, 1:] / p0
     rms = float(np.sqrt(np.mean(d**2)))
@@ -1082,7 +1085,7 @@ def _traction_rows(r, low, ut, mu, kind, resultant) -> None:
     row("traction_resultant", "N", resultant, mu * Q, resultant / (mu * Q) - 1.0, "relative")
     # the normal load vector of the same pressure on the same facets (F lam: side times
     # int p |n_z| v_z dA, summed over the z-DOFs, where the basis sums to one)
-    normal = -low.body.side * 4.0 * float(np.sum((low.F @ np.asarray(r.fields["lam"]))[2::3]))
+    normal = low.body.side * 4.0 * float(np.sum((low.F @ np.asarray(r.fields["lam"]))[2::3]))
     r.comparison.extend(rows)
     r.fields["traction"] = {
         "mu": mu, "pressure": kind, "section_x": x, "section_z": zf,
@@ -1091,6 +1094,7 @@ def _traction_rows(r, low, ut, mu, kind, resultant) -> None:
         "analytic": {"von_mises": vma, "max_shear": tra, "tau_xz": A[..., 4],
                      "sxx": A[..., 0], "stress": A}}
     r.info["traction"] = {"mu": mu, "pressure": kind, "resultant": resultant,
-                          "normal_resultant": normal,
+                          "normal_resultant": normal, "sxx_trailing_edge_exact": edge,
+                          "surface_row_depth": float(zf[0]),
                           "section_rms_components": float(np.sqrt(np.mean(((S - A)[:, 1:]
                                                                            / p0) ** 2)))}
