@@ -1039,7 +1039,7 @@ def _traction_rows(r, low, ut, mu, kind, resultant) -> None:
     # the analytic maxima (section y = 0 and surface searches); the section's own grid
     # maximum where the analytic one lies off the section (y > 0)
     rows = []
-    tol = TRACTION_TOLERANCES.get(r.level, TRACTION_TOLERANCES["standard"])
+    tol = dict(TRACTION_TOLERANCES.get(r.level, TRACTION_TOLERANCES["standard"]))
     if r.gap != "hertz":
         tol = {}
 
@@ -1060,12 +1060,27 @@ def _traction_rows(r, low, ut, mu, kind, resultant) -> None:
             v_an, x_an, z_an = float(an_f[k]), float(x[k[0]]), float(zf[k[1]])
         k = np.unravel_index(np.argmax(fe_f), fe_f.shape)
         v_fe, x_fe, z_fe = float(fe_f[k]), float(x[k[0]]), float(zf[k[1]])
-        if z_an == 0.0:
+        at_surface = z_an == 0.0
+        if at_surface:
             z_an = float(zf[0])              # the surface row
-        row(f"traction_{name}", "Pa", v_fe, v_an, v_fe / v_an - 1.0, "relative")
-        row(f"traction_{name}_x", "m", x_fe, x_an, (x_fe - x_an) / minor, "minor semi-axis")
-        row(f"traction_{name}_depth", "m", z_fe, z_an, (z_fe - z_an) / minor,
-            "minor semi-axis")
+        # a maximum on the surface is held to the surface tolerance: the stresses of the
+        # top element layer carry the tent pressure's edge error (docs/fem.md)
+        key = f"traction_{name}"
+        if at_surface and f"{key}_surface" in tol:
+            tol[key] = tol[f"{key}_surface"]
+        row(key, "Pa", v_fe, v_an, v_fe / v_an - 1.0, "relative")
+        # near the critical traction the surface and the interior maxima are nearly
+        # equal and an error within the value tolerance may swap them: the location is
+        # then reported but not checked
+        top, inner = float(np.max(an_f[:, 0])), float(np.max(an_f[:, 1:]))
+        runner_up = abs(top - inner) / max(top, inner)
+        ill = key in tol and runner_up < tol[key]
+        for q, fe_v, an_v in ((f"{key}_x", x_fe, x_an), (f"{key}_depth", z_fe, z_an)):
+            if ill:
+                tol.pop(q, None)
+            row(q, "m", fe_v, an_v, (fe_v - an_v) / minor,
+                "minor semi-axis" + (f" (not checked: surface and interior maxima "
+                                     f"{100 * runner_up:.1f} % apart)" if ill else ""))
         peaks[name] = {"fe": (x_fe, z_fe, v_fe), "analytic": (x_an, z_an, v_an)}
     # the surface tension behind the contact: the largest sxx of the surface row over
     # -1.3 a_x <= x <= -0.7 a_x, FE against exact on the same points.  The exact sxx has a
