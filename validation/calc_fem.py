@@ -47,7 +47,7 @@ _OUT = {"a": "[length]", "b": "[length]", "p_max": "[pressure]", "tau0": "[press
         "approach_depth_point": "[length]", "approach_rigid": "[length]",
         "n_dofs": "", "wall_time": "[time]",
         **{f"{q}_vs_hertz": "" for q in ("a", "b", "p_max", "tau0", "max_shear", "z0",
-                                         "max_shear_depth")}},
+                                         "max_shear_depth")},
         **{q: _TRACTION_UNITS.get(q, "[length]") for q in TRACTION_OUT},
         **{f"{q}_error": "" for q in TRACTION_OUT}}
 
