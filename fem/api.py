@@ -415,7 +415,12 @@ class FEResult:
         ``analytic`` twins), ``tau_xz_y0`` (the nine-section fit to y = 0 over
         ``section_window``) and ``tau_profile`` (its max over x, whose peak gives tau0
         and z0) [Pa], the axis profiles, the tent grid and pressures, bodies and
-        displacements.
+        displacements; with a surface traction (``run_case(traction=mu)``) also
+        ``traction`` (the loaded section over both signs of x with a surface row: FE
+        ``von_mises``, ``max_shear``, ``tau_xz``, ``sxx``, ``stress`` [Pa], the
+        ``analytic`` twins and the ``peaks``) and ``u_traction`` (the tangential
+        displacements per body [m]); ``info["traction"]`` holds mu, the applied and the
+        normal resultants [N] and the exact trailing-edge sxx [Pa].
     """
 
     case: ContactCase
