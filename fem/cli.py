@@ -326,7 +326,9 @@ def _table(r, units: str, heading: str = "") -> None:
         if kind == "length" and str(row.get("quantity", "")).startswith("approach"):
             kind = "small"                 # deformations in µm, as `ballrace contact` prints them
         unit = unit_label(kind, units) if kind else (row.get("unit") or "")
-        rows.append([str(row.get("quantity", "")),
+        ref = str(row.get("error_ref") or "relative")
+        per = {"minor semi-axis": " (err/b)", "p0": " (err/p0)"}.get(ref.split(" (")[0], "")
+        rows.append([str(row.get("quantity", "")) + per,
                      fmt(convert(row.get("fe"), kind, units), 5),
                      fmt(convert(row.get("analytic"), kind, units), 5), unit,
                      _check_cell(row.get("error"), row.get("tol"), row.get("ok"))])
