@@ -15,7 +15,10 @@ Lundberg–Palmgren's "tau_yz" (their y = rolling) is ``tau_xz`` here, and both 
 are accepted by :func:`render`; :func:`render_3d` draws a 3-D pyvista picture
 off-screen.  :mod:`ballrace.fem.axisym` is an axisymmetric model of circular contacts
 (ball on ball, ball on a plane) resolved far beyond the 3-D model: the reference for
-what real curved balls do (docs/fem-axisym.md).
+what real curved balls do (docs/fem-axisym.md).  ``run_case(..., traction=mu)`` (and
+the ``ball_on_*`` helpers) adds a tangential surface traction q = mu p along +x and
+compares the loaded section with :func:`ballrace.analytic.subsurface.stress`
+(docs/fem.md, "Surface traction").
 """
 from __future__ import annotations
 
