@@ -723,7 +723,7 @@ def run_case(case: ContactCase, level: str = "standard", mode: str = "half-space
         surface traction q = mu p along +x is applied to the lower body's contact patch
         (and -q to the ball in two-body mode), the linear elastic problem is solved
         again for it and its stresses are superposed on the section y = 0
-        (:func:`_traction_check`; the normal and tangential problems uncouple for bodies
+        (docs/fem.md "Surface traction"; the normal and tangential problems uncouple for bodies
         of identical elastic constants, Johnson 1985 §7.1, which is assumed).  The
         comparison rows ``traction_*`` hold the section against
         :func:`ballrace.analytic.subsurface.stress` with the same traction.
