@@ -1094,11 +1094,12 @@ def _traction_rows(r, low, ut, mu, kind, resultant) -> None:
     # cusp at the trailing edge (x = -a_x, z = 0: Hamilton & Goodman 1966 for the circle,
     # kept in info as "sxx_trailing_edge_exact") that falls by a third within 0.03 a_x;
     # no mesh of element size h resolves it, the sampled row is what is compared
-    back = (x >= -1.3 * ax_) & (x <= -0.7 * ax_)
+    xb = -np.sign(mu) * x                  # a negative traction trails at x = +a_x
+    back = (xb >= -1.3 * ax_) & (xb <= -0.7 * ax_)
     sxx_fe = float(np.max(S[back, 0, 0]))
     sxx_an = float(np.max(A[back, 0, 0]))
     row("traction_sxx_trailing", "Pa", sxx_fe, sxx_an, (sxx_fe - sxx_an) / p0, "p0")
-    edge = float(sub.stress(c, -ax_, 0.0, 0.0, nu=nu, traction=mu).sxx)
+    edge = float(sub.stress(c, -np.sign(mu) * ax_, 0.0, 0.0, nu=nu, traction=mu).sxx)
     # the whole section below the surface row: RMS of the von Mises difference / p0
     d = (vm - vma)[:, 1:] / p0
     rms = float(np.sqrt(np.mean(d**2)))
