@@ -15,11 +15,15 @@ Lundberg–Palmgren's "tau_yz" (their y = rolling) is ``tau_xz`` here, and both 
 are accepted by :func:`render`; :func:`render_3d` draws a 3-D pyvista picture
 off-screen.  :mod:`ballrace.fem.axisym` is an axisymmetric model of circular contacts
 (ball on ball, ball on a plane) resolved far beyond the 3-D model: the reference for
-what real curved balls do (docs/fem-axisym.md).
+what real curved balls do (docs/fem-axisym.md).  ``run_case(..., traction=mu)`` (and
+the ``ball_on_*`` helpers) adds a tangential surface traction q = mu p along +x and
+compares the loaded section with :func:`ballrace.analytic.subsurface.stress`
+(docs/fem.md, "Surface traction").
 """
 from __future__ import annotations
 
-from .api import (GAPS, LEVELS, MODES, TOLERANCES, ContactCase, FEResult, MeshLevel,
+from .api import (GAPS, LEVELS, MODES, TOLERANCES, TRACTION_TOLERANCES, ContactCase,
+                  FEResult, MeshLevel,
                   ball_case, ball_on_ball, ball_on_groove, ball_on_plane, ball_on_race,
                   groove_case, plane_case, race_case, run_case)
 from .render import render, render_3d
@@ -28,4 +32,4 @@ from .solvers import SOLVERS, available_solvers
 __all__ = ["ball_on_race", "ball_on_plane", "ball_on_ball", "ball_on_groove", "run_case",
            "render", "render_3d", "race_case", "plane_case", "ball_case", "groove_case",
            "ContactCase", "FEResult", "LEVELS", "MeshLevel", "MODES", "GAPS", "TOLERANCES",
-           "SOLVERS", "available_solvers"]
+           "TRACTION_TOLERANCES", "SOLVERS", "available_solvers"]

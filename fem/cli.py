@@ -27,6 +27,8 @@ An FE case file (TOML, units parsed with pint; docs/casefiles.md)::
     mode = "half-space"      # half-space | two-body
     gap = "hertz"            # hertz | exact
     # solver = "cholmod"     # cholmod | pardiso | amg | superlu
+    # traction = 0.3         # q = traction * p along +x on the lower body (default 0)
+    # traction_pressure = "fe"   # fe (the FE's own pressure) | hertz
 
 Like bearing case files, unknown keys are errors (a typo never runs a default case) and
 every message names the file and the ``[table].key``.  A bearing or validation case
@@ -70,6 +72,8 @@ class FECaseFile:
     contact : "inner", "outer", "plane" or "ball".
     level, mode, gap : run settings.
     solver : sparse solver or None (automatic).
+    traction : tangential traction coefficient q/p along +x [-] (0: frictionless).
+    traction_pressure : "fe" or "hertz": the pressure the traction is proportional to.
     """
 
     title: str
@@ -79,6 +83,8 @@ class FECaseFile:
     mode: str
     gap: str
     solver: Optional[str]
+    traction: float = 0.0
+    traction_pressure: str = "fe"
 
 
 def _models():
@@ -119,6 +125,8 @@ def _models():
         mode: Literal["half-space", "two-body"] = "half-space"
         gap: Literal["hertz", "exact"] = "hertz"
         solver: Optional[Literal["cholmod", "pardiso", "amg", "superlu"]] = None
+        traction: float = Field(default=0.0, ge=-10.0, le=10.0)
+        traction_pressure: Literal["fe", "hertz"] = "fe"
 
     class Spec(_Strict):
         title: str = ""
@@ -152,8 +160,9 @@ def parse_fe_case(data: dict, source: str = "<case>", **overrides) -> FECaseFile
     source : str
         Name used in error messages (the file name).
     **overrides
-        ``contact``, ``load`` (unit string), ``level``, ``mode``, ``gap``, ``solver``:
-        values given on the command line; ``None`` keeps the file's value.
+        ``contact``, ``load`` (unit string), ``level``, ``mode``, ``gap``, ``solver``,
+        ``traction``, ``traction_pressure``: values given on the command line; ``None``
+        keeps the file's value.
 
     Raises
     ------
@@ -238,14 +247,16 @@ def parse_fe_case(data: dict, source: str = "<case>", **overrides) -> FECaseFile
         raise CaseFileError(f"{source}: {exc}") from None
     f = spec.fem
     return FECaseFile(title=spec.title, case=cse, contact=c.contact, level=f.level,
-                      mode=f.mode, gap=f.gap, solver=f.solver)
+                      mode=f.mode, gap=f.gap, solver=f.solver, traction=float(f.traction),
+                      traction_pressure=f.traction_pressure)
 
 
 def _merge(data: dict, overrides: dict) -> dict:
     """The document with command-line values (not None) put in place of the file's."""
     out = {k: (dict(v) if isinstance(v, dict) else v) for k, v in data.items()}
     for key, table in (("contact", "case"), ("load", "case"), ("level", "fem"),
-                       ("mode", "fem"), ("gap", "fem"), ("solver", "fem")):
+                       ("mode", "fem"), ("gap", "fem"), ("solver", "fem"),
+                       ("traction", "fem"), ("traction_pressure", "fem")):
         if overrides.get(key) is not None:
             t = out.setdefault(table, {})
             if not isinstance(t, dict):
@@ -327,7 +338,9 @@ def _table(r, units: str, heading: str = "") -> None:
         if kind == "length" and str(row.get("quantity", "")).startswith("approach"):
             kind = "small"                 # deformations in µm, as `ballrace contact` prints them
         unit = unit_label(kind, units) if kind else (row.get("unit") or "")
-        rows.append([str(row.get("quantity", "")),
+        ref = str(row.get("error_ref") or "relative")
+        per = {"minor semi-axis": " (err/b)", "p0": " (err/p0)"}.get(ref.split(" (")[0], "")
+        rows.append([str(row.get("quantity", "")) + per,
                      fmt(convert(row.get("fe"), kind, units), 5),
                      fmt(convert(row.get("analytic"), kind, units), 5), unit,
                      _check_cell(row.get("error"), row.get("tol"), row.get("ok"))])
@@ -381,6 +394,12 @@ def register(app: typer.Typer) -> None:
         sizes: Annotated[str, typer.Option(
             help="Convergence: elements per minor semi-axis.")] = "4,6,8,11",
         units: Annotated[str, typer.Option("--units", help=UNITS_HELP)] = "eng",
+        traction: Annotated[Optional[float], typer.Option(
+            help="Tangential traction coefficient q/p along +x on the lower body; the "
+                 "section is compared with the analytic field with traction "
+                 "[default: 0].")] = None,
+        traction_pressure: Annotated[Optional[str], typer.Option(
+            help="fe | hertz: the pressure the traction follows [default: fe].")] = None,
     ):
         """FE check of a Hertz ball contact (mesh, assemble, solve, compare, render).
 
@@ -394,6 +413,7 @@ def register(app: typer.Typer) -> None:
         _check_choice(level, "--level", LEVELS)
         _check_choice(mode, "--mode", MODES)
         _check_choice(gap, "--gap", GAPS)
+        _check_choice(traction_pressure, "--traction-pressure", ("fe", "hertz"))
         from .solvers import SOLVERS, available_solvers
 
         _check_choice(solver, "--solver", SOLVERS)
@@ -406,7 +426,8 @@ def register(app: typer.Typer) -> None:
                 n_sizes = tuple(int(s) for s in sizes.split(","))
             except ValueError:
                 fail(f"--sizes must be comma-separated integers, e.g. 4,6,8; got {sizes!r}")
-        overrides = dict(contact=case, load=load, level=level, mode=mode, gap=gap, solver=solver)
+        overrides = dict(contact=case, load=load, level=level, mode=mode, gap=gap, solver=solver,
+                         traction=traction, traction_pressure=traction_pressure)
         try:
             if case_file and case_file != "convergence":
                 fc = load_fe_case(case_file, **overrides)
@@ -432,7 +453,8 @@ def register(app: typer.Typer) -> None:
             with Progress(*cols, transient=True) as prog:
                 task = prog.add_task("starting", total=None)
                 r = api.run_case(fc.case, level=fc.level, mode=fc.mode, gap=fc.gap,
-                                 solver=fc.solver,
+                                 solver=fc.solver, traction=fc.traction,
+                                 traction_pressure=fc.traction_pressure,
                                  progress=lambda s: prog.update(task, description=s))
         except (ValueError, TypeError, ImportError) as exc:
             fail(str(exc))

@@ -34,7 +34,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 __all__ = ["PressureGrid", "Body", "BodyState", "assemble_body", "ContactSolution",
-           "solve_contact", "compliance"]
+           "solve_contact", "compliance", "traction_response"]
 
 log = logging.getLogger(__name__)
 
@@ -523,3 +523,99 @@ def solve_contact(C, G0, m, *, load: float | None = None, approach: float | None
     comp = float(abs(lam @ gap) / (nl * ng)) if nl > 0 and ng > 0 else 0.0
     return ContactSolution(lam=lam, Delta=dh * delta_ref, load=float(m @ lam), gap=gap,
                            complementarity=comp, seconds=time.perf_counter() - t0)
+
+
+# --------------------------------------------------------------------------- tangential load
+def traction_response(state: BodyState, tractions, solver: str | None = None):
+    r"""Displacement [m] of a body under a tangential surface traction along x.
+
+    The traction ``traction(x, y)`` [Pa] (a force per unit *projected* area, like the
+    tent pressures) acts along ``-side * x``: +x on the lower body (``side = -1``) and -x
+    on the ball, equal and opposite.  It is applied on the body's candidate contact facets
+    (``F_t = int q |n_z| v_x dA``), and the quarter model is solved again with the
+    boundary conditions of a load that is even in x and y but points along x: the load
+    is *antisymmetric* about the plane x = 0 (``u_y = u_z = 0`` there, u_x free),
+    symmetric about y = 0 (``u_y = 0``), and the far plane ``z = z_fixed`` is held in x
+    and z (it carries the resultant).  These are other Dirichlet DOFs than those of the
+    normal problem, so the stiffness is assembled and factorised once more (the normal
+    factor cannot be reused in a quarter model); the factor is released on return.
+
+    Parameters
+    ----------
+    state : BodyState
+        The assembled body (:func:`assemble_body`); its factor may be released.
+    tractions : sequence of callable
+        Each ``q(x, y)`` [Pa] on the surface, e.g. ``mu * grid.evaluate(lam, x, y)``;
+        one factorisation serves them all.
+    solver : str, optional
+        Force a sparse solver.
+
+    Returns
+    -------
+    us : list of ndarray
+        Displacement on all DOFs [m] per traction (interleaved u_x, u_y, u_z per scalar
+        DOF), valid for x >= 0; the field at x < 0 follows from the antisymmetry (u_x even, u_y and
+        u_z odd in x; stresses sxx, syy, szz, syz odd, sxy, sxz even).
+    resultants : list of float
+        x-resultant of each applied load vector on the quarter model [N] (``sum f_x``;
+        the equilibrium check: mu Q / 4 on the lower body for q = mu p).
+
+    References
+    ----------
+    Johnson, K.L. (1985) *Contact Mechanics*, §7.1: for bodies of identical elastic
+    constants a tangential traction causes no normal displacement difference, so the
+    normal (Hertz) and the tangential problems uncouple and superpose.
+    """
+    import scipy.sparse as sp
+    from skfem import ElementTetP2, ElementVector, FacetBasis
+
+    from .solvers import factorize
+
+    tm = state.timings
+    body = state.body
+    mesh, basis = state.mesh, state.basis
+    t0 = time.perf_counter()
+    K = elasticity_p2(mesh.p, mesh.t, state.scalar_basis.element_dofs, basis.N, body.E,
+                      body.nu)
+    bf = mesh.boundary_facets()
+    fv = mesh.facets[:, bf]
+    facets = bf[np.all(body.contact_nodes[fv], axis=0)]
+    fb = FacetBasis(mesh, ElementVector(ElementTetP2()), facets=facets, intorder=6)
+    xq = np.asarray(fb.global_coordinates())
+    wq = fb.dx * np.abs(fb.normals[2])                             # projected area weights
+    fs = []
+    for traction in tractions:
+        q = np.asarray(traction(xq[0], xq[1]), dtype=float) * wq
+        f = np.zeros(basis.N)
+        for j in range(len(fb.basis)):
+            vx = np.asarray(fb.basis[j][0])[0]                     # (nf, nq)
+            np.add.at(f, fb.element_dofs[j], -body.side * np.sum(vx * q, axis=1))
+        fs.append(f)
+    sym_x = mesh.facets_satisfying(lambda x: x[0] == 0.0, boundaries_only=True)
+    sym_y = mesh.facets_satisfying(lambda x: x[1] == 0.0, boundaries_only=True)
+    zf = body.z_fixed
+    tol = 1e-9 * float(np.ptp(mesh.p))
+    far = mesh.facets_satisfying(lambda x: np.abs(x[2] - zf) < tol, boundaries_only=True)
+    D = np.unique(np.concatenate([basis.get_dofs(sym_x).all(["u^2", "u^3"]),
+                                  basis.get_dofs(sym_y).all(["u^2"]),
+                                  basis.get_dofs(far).all(["u^1", "u^3"])]))
+    free = np.setdiff1d(np.arange(basis.N), D)
+    Kff = sp.csr_matrix(K[free][:, free])
+    del K
+    tm["traction_assemble"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    fac, _ = factorize(Kff, solver)
+    del Kff
+    us = []
+    try:
+        for f in fs:
+            u = np.zeros(basis.N)
+            u[free] = fac(f[free])
+            us.append(u)
+    finally:
+        fac.free()
+    tm["traction_solve"] = time.perf_counter() - t0
+    res = [float(f.reshape(-1, 3)[:, 0].sum()) for f in fs]
+    log.info("%s: tangential traction, %d load(s), %.2f s", body.name, len(fs),
+             tm["traction_solve"])
+    return us, res

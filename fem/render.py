@@ -49,9 +49,17 @@ def section_comparison(r, field: str):
     -------
     x, z, fe, an : ndarray
         x from -x_max to x_max [m] (the FE quarter section mirrored), depth z [m], and the
-        FE and analytic fields of shape (x.size, z.size) [Pa].
+        FE and analytic fields of shape (x.size, z.size) [Pa].  With a surface traction
+        (``run_case(traction=...)``) the section of the loaded contact: normal and
+        tangential FE solutions superposed (``fields["traction"]``, already over both
+        signs of x, with a row just below the surface), against
+        ``subsurface.stress(..., traction=mu)``.
     """
     f = r.fields
+    t = f.get("traction")
+    if t is not None:
+        return (np.asarray(t["section_x"]), np.asarray(t["section_z"]),
+                np.asarray(t[field], dtype=float), np.asarray(t["analytic"][field], dtype=float))
     xs, zs = np.asarray(f["section_x"]), np.asarray(f["section_z"])
     sgn = -1.0 if field == "tau_xz" else 1.0        # tau_xz is odd in x, the others even
     x = np.concatenate([-xs[:0:-1], xs])
@@ -120,9 +128,10 @@ def _section(fig, r, field: str) -> None:
     diff = fe - an
     c = r.analytic
     nu = _nu(r)
-    odd = field == "tau_xz"
+    trac = r.fields.get("traction")
+    odd = field == "tau_xz" and trac is None
     peak = float(np.max(np.abs(an))) / 1e6
-    if odd:
+    if field == "tau_xz":
         vmax = max(float(np.max(np.abs(fe))), float(np.max(np.abs(an)))) / 1e6
         norm, cmap = TwoSlopeNorm(0.0, -vmax, vmax), "RdBu_r"
     else:
@@ -156,7 +165,18 @@ def _section(fig, r, field: str) -> None:
                       fontsize=9)
 
     # analytic and FE maxima, named in one legend
-    if odd:
+    if trac is not None:
+        name = {"von_mises": "von Mises", "max_shear": "Tresca", "tau_xz": "|tau_xz|"}[field]
+        pk = trac["peaks"].get({"max_shear": "tresca"}.get(field, field))
+        if pk is None:                           # tau_xz: the section's largest |value|
+            ka = np.unravel_index(np.argmax(np.abs(an)), an.shape)
+            kf = np.unravel_index(np.argmax(np.abs(fe)), fe.shape)
+            pk = {"analytic": (x[ka[0]], z[ka[1]]), "fe": (x[kf[0]], z[kf[1]])}
+        apts = ([pk["analytic"][0] * mm], [pk["analytic"][1] * mm])
+        fpts = ([pk["fe"][0] * mm], [pk["fe"][1] * mm])
+        alab = f"analytic max {name} (traction {trac['mu']:g})"
+        flab = f"FE max {name}"
+    elif odd:
         o = subsurface.orthogonal_shear(c)
         xa, za = float(o.x0) * mm, float(o.z0) * mm
         apts = ([xa, -xa], [za, za])
@@ -177,7 +197,12 @@ def _section(fig, r, field: str) -> None:
 
     # depth profile: on the axis, or max over x for tau_xz
     pa = axes[3]
-    if odd:
+    if trac is not None:
+        pa.plot(np.max(np.abs(fe), axis=0) / 1e6, z * mm, lw=1.6, label="FE")
+        pa.plot(np.max(np.abs(an), axis=0) / 1e6, z * mm, "--", lw=1.4, color="k",
+                label="analytic")
+        pa.set_xlabel("max over x [MPa]", fontsize=8)
+    elif odd:
         pa.plot(np.max(np.abs(fe), axis=0) / 1e6, z * mm, lw=1.6, label="FE")
         pa.plot(np.max(np.abs(an), axis=0) / 1e6, z * mm, "--", lw=1.4, color="k",
                 label="analytic")
@@ -201,7 +226,9 @@ def _section(fig, r, field: str) -> None:
     pa.legend(fontsize=7, loc="lower right")
     h, lab = axes[0].get_legend_handles_labels()
     fig.legend(h, lab, loc="outside lower center", ncol=2, fontsize=7, frameon=False)
-    fig.suptitle(f"{_TITLES[field]}: {_label(r)} - section y = 0", fontsize=10)
+    extra = "" if trac is None else (f", traction q = {trac['mu']:g} p along +x "
+                                     f"({'FE' if trac['pressure'] == 'fe' else 'Hertz'} p)")
+    fig.suptitle(f"{_TITLES[field]}: {_label(r)} - section y = 0{extra}", fontsize=10)
 
 
 def _pressure(fig, r) -> None:
@@ -376,6 +403,11 @@ def render_3d(r, path: str = "out-3d.png", *, field: str = "von_mises",
     from .extract import tresca_von_mises
 
     check_choice(field, "field", FIELDS_3D)
+    if r.fields.get("traction") is not None:
+        raise NotImplementedError(
+            "no 3-D picture of a contact with surface traction: the quarter model is "
+            "mirrored as a symmetric field, the tangential part is antisymmetric in x; "
+            "the section y = 0 (render) shows the loaded field")
     offscreen_vtk()
     import pyvista as pv
 

@@ -26,6 +26,20 @@ _CONTEXT = {"level": Param("str", "quick", choices=("quick", "standard", "fine")
             "render_dir": Param("str", None), "case_id": Param("str", "fe")}
 _OPTIONS = {"mode": Param("str", "half-space", choices=("half-space", "two-body")),
             "gap": Param("str", "hertz", choices=("hertz", "exact"))}
+#: A tangential surface traction q = traction * p along +x (run_case(traction=...)): the
+#: section y = 0 of the loaded contact against subsurface.stress(..., traction=...).
+_TRACTION = {"traction": Param("", 0.0),
+             "traction_pressure": Param("str", "fe", choices=("fe", "hertz"))}
+#: Outputs of the traction rows (NaN without traction): the maxima [Pa] and their
+#: locations [m], the trailing-edge tension [Pa], and the errors as fem.api defines them
+#: (relative for values, per minor semi-axis for locations, per p0 for the tension and
+#: the section RMS, relative for the resultant).
+TRACTION_OUT = ("traction_von_mises", "traction_von_mises_x", "traction_von_mises_depth",
+                "traction_tresca", "traction_tresca_x", "traction_tresca_depth",
+                "traction_sxx_trailing", "traction_section_rms", "traction_resultant")
+_TRACTION_UNITS = {"traction_von_mises": "[pressure]", "traction_tresca": "[pressure]",
+                   "traction_sxx_trailing": "[pressure]", "traction_section_rms": "[pressure]",
+                   "traction_resultant": "[force]"}
 _OUT = {"a": "[length]", "b": "[length]", "p_max": "[pressure]", "tau0": "[pressure]",
         "z0": "[length]", "tau_x0z0": "[pressure]", "max_shear": "[pressure]",
         "max_shear_depth": "[length]", "von_mises": "[pressure]",
@@ -33,7 +47,9 @@ _OUT = {"a": "[length]", "b": "[length]", "p_max": "[pressure]", "tau0": "[press
         "approach_depth_point": "[length]", "approach_rigid": "[length]",
         "n_dofs": "", "wall_time": "[time]",
         **{f"{q}_vs_hertz": "" for q in ("a", "b", "p_max", "tau0", "max_shear", "z0",
-                                         "max_shear_depth")}}
+                                         "max_shear_depth")},
+        **{q: _TRACTION_UNITS.get(q, "[length]") for q in TRACTION_OUT},
+        **{f"{q}_error": "" for q in TRACTION_OUT}}
 
 
 def _outputs(r, render_dir, case_id) -> dict:
@@ -47,6 +63,9 @@ def _outputs(r, render_dir, case_id) -> dict:
         out[f"{q}_vs_hertz"] = float(rows[q]["error"]) if q in rows else math.nan
     out["n_dofs"] = float(r.n_dofs)
     out["wall_time"] = float(r.timings.get("total", math.nan))
+    for q in TRACTION_OUT:
+        out[q] = float(rows[q]["fe"]) if q in rows else math.nan
+        out[f"{q}_error"] = float(rows[q]["error"]) if q in rows else math.nan
     arts = []
     if render_dir:
         from ballrace import fem
@@ -75,6 +94,10 @@ def _render_3d(r, render_dir, case_id) -> tuple:
     except ImportError as exc:
         log.warning("no 3-D render of %s: pyvista is not installed (%s)", case_id, exc)
         return ("3-D render omitted: pyvista (VTK) is not installed", "")
+    except NotImplementedError as exc:          # a traction case: the section shows it
+        log.info("no 3-D render of %s: %s", case_id, exc)
+        return ("3-D render omitted: the contact carries a surface traction; the section "
+                "y = 0 above shows the loaded field", "")
     except Exception as exc:  # noqa: BLE001 - a render must not fail the check
         log.warning("3-D render of %s failed: %s: %s", case_id, type(exc).__name__, exc)
         return (f"3-D render omitted: {type(exc).__name__}: {exc}", "")
@@ -83,15 +106,17 @@ def _render_3d(r, render_dir, case_id) -> tuple:
 @calculation("fem.ball_on_plane", requires=(_FEM + ":ball_on_plane",), fem=True,
              inputs={"ball_diameter": Param("[length]"), "load": Param("[force]"),
                      "E": Param("[pressure]", 200e9), "nu": Param("", 0.3), **_OPTIONS,
-                     **_CONTEXT},
+                     **_TRACTION, **_CONTEXT},
              outputs=_OUT)
-def ball_on_plane(ball_diameter, load, E, nu, mode, gap, level, render_dir, case_id):
-    """FE ball on a flat of the same material."""
+def ball_on_plane(ball_diameter, load, E, nu, mode, gap, level, render_dir, case_id,
+                  traction=0.0, traction_pressure="fe"):
+    """FE ball on a flat of the same material (optionally with a surface traction)."""
     from ballrace import Material, fem
 
     with FE_LOCK:
         r = fem.ball_on_plane(ball_diameter, load, Material(E=E, nu=nu), level=level,
-                              mode=mode, gap=gap)
+                              mode=mode, gap=gap, traction=traction,
+                              traction_pressure=traction_pressure)
         return _outputs(r, render_dir, case_id)   # renders (VTK) under the lock too
 
 
@@ -115,16 +140,19 @@ def ball_on_ball(ball_diameter, load, E, nu, mode, gap, level, render_dir, case_
                      "E": Param("[pressure]", 200e9), "nu": Param("", 0.3),
                      "load": Param("[force]"),
                      "race": Param("str", "inner", choices=("inner", "outer")),
-                     "contact_angle": Param("[angle]", 0.0), **_OPTIONS, **_CONTEXT},
+                     "contact_angle": Param("[angle]", 0.0), **_OPTIONS, **_TRACTION,
+                     **_CONTEXT},
              outputs=_OUT)
-def ball_on_race(load, race, contact_angle, mode, gap, level, render_dir, case_id, **kw):
-    """FE ball on an inner or outer race groove."""
+def ball_on_race(load, race, contact_angle, mode, gap, level, render_dir, case_id,
+                 traction=0.0, traction_pressure="fe", **kw):
+    """FE ball on an inner or outer race groove (optionally with a surface traction)."""
     from ballrace import fem
 
     brg = make_bearing(**kw)
     with FE_LOCK:
         r = fem.ball_on_race(brg, load, race=race, contact_angle=contact_angle, level=level,
-                             mode=mode, gap=gap)
+                             mode=mode, gap=gap, traction=traction,
+                             traction_pressure=traction_pressure)
         return _outputs(r, render_dir, case_id)   # renders (VTK) under the lock too
 
 
