@@ -132,7 +132,11 @@ def test_ring_forces_one_case_equals_batch(u, arm):
     Fb, Kb = loaddist.ring_forces(brg, np.stack([u, 0.5 * u]), moment_arm=arm)
     scale = max(np.abs(F1).max(), 1.0)
     assert np.allclose(F1, Fb[0], rtol=1e-12, atol=1e-12 * scale)
-    assert np.allclose(K1, Kb[0], rtol=1e-11, atol=1e-12 * max(np.abs(K1).max(), 1.0))
+    # A ball just touching (delta -> 0) has dQ/ddelta = 1.5 K_n delta^(1/2): rounding delta
+    # by ~1e-16 A moves its stiffness by ~1.5 K_n (1e-16 A)^(1/2), about 1e-9 of the ring's
+    # K for the 218 bearing (hypothesis found 1.2e-9 at u = (0, 5e-5, 5e-5, 0, 0)); the
+    # two kernels round in different orders, so they agree to that, not to 1e-12.
+    assert np.allclose(K1, Kb[0], rtol=1e-11, atol=1e-8 * max(np.abs(K1).max(), 1.0))
 
 
 def test_small_solver_matches_numpy():

@@ -379,8 +379,11 @@ def test_surface_equilibrium(alpha, xi, eta, mu):
     x, y = xi * c.semi_axis_x, eta * c.semi_axis_y
     p = c.pressure(x, y) / c.p_max
     s = nd(subsurface.stress(c, x, y, 0.0, traction=mu), c.p_max)
-    assert s[2] == pytest.approx(-p, abs=4e-15)
-    assert s[4] == pytest.approx(-mu * p, abs=4e-15)
+    # near the edge p = sqrt(1 - rho^2) amplifies the rounding of the coordinates by
+    # dp/drho ~ 1/p: 1e-16 in rho is 1e-16/p in p (xi = 0, eta = 0.99999 gives 1.2e-14)
+    tol = 4e-15 + 2e-16 / max(float(p), 1e-3)
+    assert s[2] == pytest.approx(-p, abs=tol)
+    assert s[4] == pytest.approx(-mu * p, abs=tol)
     assert s[5] == 0
     s1 = nd(subsurface.stress(c, x, y, 1e-10 * c.b, traction=mu), c.p_max)
     if abs(1 - xi * xi - eta * eta) > 1e-3:   # away from the edge (singular gradient)
