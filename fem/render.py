@@ -403,13 +403,14 @@ def render_3d(r, path: str = "out-3d.png", *, field: str = "von_mises",
     from .extract import tresca_von_mises
 
     check_choice(field, "field", FIELDS_3D)
+    offscreen_vtk()
+    import pyvista as pv                      # first: without pyvista, say that
+
     if r.fields.get("traction") is not None:
         raise NotImplementedError(
             "no 3-D picture of a contact with surface traction: the quarter model is "
             "mirrored as a symmetric field, the tangential part is antisymmetric in x; "
             "the section y = 0 (render) shows the loaded field")
-    offscreen_vtk()
-    import pyvista as pv
 
     f = r.fields
     state = f["states"][-1]

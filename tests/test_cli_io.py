@@ -138,7 +138,7 @@ def test_flags_beside_a_case_file_take_precedence(tmp_path, monkeypatch):
 
     seen = {}
 
-    def fake_run_case(case, level, mode, gap, solver=None, progress=None):
+    def fake_run_case(case, level, mode, gap, solver=None, progress=None, **options):
         seen.update(load=case.load, name=case.name, level=level, mode=mode, gap=gap)
         raise ValueError("stop here")
 
