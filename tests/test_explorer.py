@@ -476,3 +476,20 @@ def test_in_browser(browser_exe, tmp_path, server, export_data):
         assert int(page2.get_attribute("#c-3d", "data-triangles")) > 100
         assert [u for u in requests if not u.startswith("file://")] == []
         browser.close()
+
+
+def test_beyond_hertz_is_a_note_on_the_page_not_a_warning_on_the_console():
+    """A load that makes a = 5.5 R (1e9 N on a 6.35 mm ball on a flat): the page says the
+    numbers are extrapolations; nothing is printed by the server."""
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        r = ex.compute({**ex.DEFAULTS, "mode": "bodies", "load": "1e9 N", "rx1": "6.35 mm",
+                        "ry1": "6.35 mm", "rx2": "inf", "ry2": "inf", "traction": "0"},
+                       maxima=False)
+        ok = ex.compute({**ex.DEFAULTS, "mode": "bodies", "load": "1000 N", "rx1": "6.35 mm",
+                         "ry1": "6.35 mm", "rx2": "inf", "ry2": "inf", "traction": "0"},
+                        maxima=False)
+    assert "a / R = 5.5" in r["note"] and "extrapolations" in r["note"]
+    assert ok["note"] == ""

@@ -126,7 +126,11 @@ def _contact(params: dict):
     _guard("traction", check_range, mu, "traction", -10.0, 10.0, low_inclusive=True,
            high_inclusive=True, unit="-")
     E = _guard("E", parse_quantity, str(p["E"]), "[pressure]", "E")
-    mat = _guard("E", Material, E=E, nu=nu)
+    import warnings
+
+    with warnings.catch_warnings():          # E has its unit here; the warning is for the API
+        warnings.simplefilter("ignore", UserWarning)
+        mat = _guard("E", Material, E=E, nu=nu)
     mode = p["mode"]
     if mode == "bodies":
         names = ("rx1", "ry1", "rx2", "ry2")
@@ -152,7 +156,16 @@ def _contact(params: dict):
             msg = _one_line(exc)
             field = "ry2" if "y plane" in msg else "rx2" if "x plane" in msg else "rx1"
             raise InputError(field, msg) from None
-        c = _guard("rx1", hertz.point_contact, Q, r["rx1"], r["ry1"], r["rx2"], r["ry2"], mat)
+        import warnings
+
+        with warnings.catch_warnings():      # a / R beyond Hertz: a note on the page instead
+            warnings.simplefilter("ignore", UserWarning)
+            c = _guard("rx1", hertz.point_contact, Q, r["rx1"], r["ry1"], r["rx2"], r["ry2"],
+                       mat)
+        size = hertz._size_ratio(c.a, tuple(r[n] for n in names))
+        if size > hertz.SIZE_LIMIT:
+            changed["_note"] = (f"a / R = {size:.3g} > {hertz.SIZE_LIMIT:g}: beyond Hertz's "
+                                "small-contact assumption; the numbers are extrapolations")
     elif mode == "bearing":
         from ballrace.analytic.bearing import BallBearing
 
@@ -341,8 +354,9 @@ def compute(params: dict, maxima: bool = True) -> dict:
              "a": float(c.a), "b": b, "ax": sx, "ay": sy, "p0": p0,
              "delta": float(c.approach), "nu": float(nu), "mu": float(mu)}
     table.update(_scaled(mx, b, p0))
+    note = changed.pop("_note", "")
     return {"ok": True, "table": table, "dimless": d, "maxima": mx, "pending": mx is None,
-            "inputs": changed}
+            "inputs": changed, "note": note}
 
 
 def _scaled(mx: dict | None, b: float, p0: float) -> dict:

@@ -373,7 +373,8 @@
     for (const [k, v] of Object.entries(r.inputs || {})) { const el = $(`[data-param="${k}"]`); if (el) el.value = v; }
     cur = r; render(r.pending);
     const dt = performance.now() - t0;
-    $("#status").textContent = `updated in ${dt.toFixed(0)} ms` + (r.pending ? "; maxima with traction follow" : "");
+    $("#status").textContent = `updated in ${dt.toFixed(0)} ms` + (r.pending ? "; maxima with traction follow" : "")
+      + (r.note ? ` - note: ${r.note}` : "");
     $("#status").dataset.ms = dt.toFixed(1);
     document.body.dataset.state = String(my);
     if (r.pending) {
