@@ -43,6 +43,7 @@ def test_elliptical_contact_scalar_equals_array(Q, Rx, ratio, Ep):
           hertz.elliptical_contact(np.array([Q]), np.array([Rx]), np.array([Ry]), Ep))
 
 
+@pytest.mark.filterwarnings("ignore:point_contact. a / R:UserWarning")   # any size here
 @settings(max_examples=300, deadline=None)
 @given(Q=load, r1=radius, r2=radius, g1=signed_ratio, g2=signed_ratio,
        flat=st.booleans())
