@@ -50,7 +50,7 @@ def max_error(sample=200, seed=1):
 
 def test_exact_hertz_throughput(benchmark):
     Q, Rx, Ry, Ep = make_inputs()
-    hertz.elliptical_contact(1.0, 1.0, 2.0, 1.0)     # build the spline once
+    hertz.elliptical_contact(1.0, 1.0, 2.0, 1.0)     # build the ellipticity tables once
     c = benchmark(hertz.elliptical_contact, Q, Rx, Ry, Ep)
     benchmark.extra_info["contacts_per_s"] = N / benchmark.stats.stats.min
     assert np.all(np.isfinite(c.p_max))
