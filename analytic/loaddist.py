@@ -360,7 +360,8 @@ def _geo(model, bearing, azimuth_offset, x0, z0):
 class _Geo:
     """Per-solve constants: ball azimuths and the kinematic vectors dx_j/du, dz_j/du."""
 
-    __slots__ = ("psi", "cp", "sp", "gx", "gz", "G", "G2", "kk", "x0", "z0", "A", "g0")
+    __slots__ = ("psi", "cp", "sp", "gx", "gz", "G", "G2", "kk", "xz0", "P2", "I2", "J2", "x0",
+                 "z0", "A", "g0")
 
     def __init__(self, model, psi, x0, z0):
         Z = psi.size
@@ -375,6 +376,16 @@ class _Geo:
         kk = np.zeros((Z, 5))                                # d(contact-arm vector)/d r
         kk[:, 3], kk[:, 4] = self.sp, -self.cp
         self.kk = kk
+        # one-case kernel (_State._one): (x; z) offsets, and the rows e G, t G of every ball
+        # as (5, 2Z) = A3[I, J] * P, A3 = (sin b, cos b, -sin b) (3, Z): the nonzero columns
+        # of g_x are (cos psi, sin psi) at DOFs 1, 2, of g_z (1, R_i sin psi, -R_i cos psi)
+        # at DOFs 0, 3, 4
+        self.xz0 = np.concatenate([np.full(Z, x0), np.full(Z, z0)])
+        P = np.stack([np.ones(Z), self.cp, self.sp, model.Ri * self.sp, -model.Ri * self.cp])
+        self.P2 = np.concatenate([P, P], axis=1)
+        rows = np.array([[0, 1, 1, 0, 0], [1, 2, 2, 1, 1]]).T          # e G: sin, cos; t G
+        self.I2 = np.repeat(rows, Z, axis=1)
+        self.J2 = np.tile(np.arange(Z), (5, 2))
         self.x0, self.z0, self.A = x0, z0, model.A
         # x0^2 + z0^2 - A^2 without cancellation: 0 for the touching reference,
         # (x0 - A)(x0 + A) = -(P_d/2)(x0 + A) for the centred one
@@ -436,14 +447,16 @@ class _State:
         change with beta adds Q sin b (D/2) sin b / s (0,0,0, sin psi, -cos psi) (x) g_t.
         """
         Z = geo.cp.size
-        d = geo.G2 @ u
-        dx, dz = d[:Z], d[Z:]
-        x = dx + geo.x0
-        z = dz + geo.z0
+        d = geo.G2 @ u                                       # (dx; dz)
+        XZ = d + geo.xz0
+        x, z = XZ[:Z], XZ[Z:]
         s = np.hypot(x, z)
-        approach = (geo.g0 + dx * (2.0 * geo.x0 + dx) + dz * (2.0 * geo.z0 + dz)) / (s + geo.A)
+        w = d * (d + 2.0 * geo.xz0)                          # dx (2 x0 + dx); dz (2 z0 + dz)
+        approach = w[:Z] + w[Z:] if geo.g0 == 0 else (geo.g0 + w[:Z]) + w[Z:]
+        approach /= s + geo.A
         s = np.maximum(s, 1e-300)
-        c, sn = x / s, z / s
+        CS = XZ.reshape(2, Z) / s
+        c, sn = CS[0], CS[1]
         beta = np.arctan2(z, x)
         delta = np.maximum(approach, 0.0)
         if not x.min() > 0:
@@ -451,24 +464,24 @@ class _State:
         Kn, dlnK = _kn(model, beta, c, sn)
         sq = np.sqrt(delta)
         Q = Kn * delta * sq
-        cc, ss = c[:, None], sn[:, None]
-        ge = cc * geo.gx + ss * geo.gz
-        gt = cc * geo.gz - ss * geo.gx
+        A3 = np.concatenate((CS[::-1], -CS[1:]))            # sin b, cos b, -sin b
+        GT = A3[geo.I2, geo.J2]
+        GT *= geo.P2                                         # (5, 2Z): e G | t G per ball
+        ge, gt = GT[:, :Z], GT[:, Z:]
         qs = Q / s
-        V = (1.5 * Kn * sq)[:, None] * ge + (qs * dlnK)[:, None] * gt
+        V = ge * (1.5 * Kn * sq)                             # dQ/du, (5, Z)
+        V += gt * (qs * dlnK)
         if arm == "groove":
-            he, ht = ge, gt
-            F = Q @ he
-            J = he.T @ V + (qs[:, None] * ht).T @ gt
+            F = ge @ Q
+            J = (GT * np.concatenate((np.ones(Z), qs))) @ np.concatenate((V, gt), axis=1).T
         else:
-            r = 0.5 * (model.dm - model.D * c)
-            h = geo.kk * r[:, None]
-            h[:, 0] = 1.0
-            he = cc * geo.gx + ss * h
-            ht = cc * h - ss * geo.gx
-            F = Q @ he
+            rr = (0.5 / model.Ri) * (model.dm - model.D * c)  # r / R_i
+            he, ht = ge.copy(), gt.copy()
+            he[3:] *= rr
+            ht[3:] *= rr
+            F = he @ Q
             w = qs * sn * sn * (0.5 * model.D)
-            J = he.T @ V + (qs[:, None] * ht + w[:, None] * geo.kk).T @ gt
+            J = he @ V.T + (ht * qs + geo.kk.T * w) @ gt.T
         self.s, self.beta, self.c, self.sn = s[None], beta[None], c[None], sn[None]
         self.delta, self.Kn, self.dlnK, self.Q = delta[None], Kn[None], dlnK[None], Q[None]
         self.F, self.J = F[None], J[None]
