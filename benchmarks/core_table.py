@@ -226,8 +226,23 @@ def eccentric_thrust():
 
 @row
 def shaft_system():
-    """Placeholder: the shaft-system solver's benchmark row goes here."""
-    return None
+    """The shaft-system solver (ballrace.analytic.shaft): a 260 mm, 45 mm steel shaft on
+    two deep-groove bearings, 40 beam elements, a helical gear between them (the case of
+    benchmarks/bench_shaft.py); the peer is one 5-DOF BallBearing.solve of the same
+    bearing at the larger seat's reaction, so the ratio says how many bearing solves one
+    shaft solve costs."""
+    import ballrace
+    from ballrace.analytic import shaft as S
+
+    brg = ballrace.BallBearing(7.938e-3, 9, 38.5e-3, 0.52, 0.53, diametral_clearance=10e-6)
+    sh = S.Shaft([(0.26, 45e-3, 0.0)], ballrace.BEARING_STEEL, n_elements=40)
+    seats = [S.Seat(0.03, brg), S.Seat(0.23, brg, floating=True)]
+    loads = [S.gear_mesh(0.09, 5000.0, 0.12, helix_angle=np.radians(15))]
+    R = S.solve(sh, seats, loads).reactions[0]          # K_n tables built once
+    t, tb, _ = timeit_pair(lambda: S.solve(sh, seats, loads),
+                           lambda: brg.solve(Fa=float(R[0]), Fy=float(R[1]), Fz=float(R[2])))
+    return Row("shaft.solve (2 seats, 40 elements, gear)", t, tb,
+               "one BallBearing.solve at the larger reaction", "<= 20 ms", t <= 20e-3)
 
 
 # --------------------------------------------------------------------------- table
