@@ -254,3 +254,18 @@ def test_shaft_thermal_preload():
     assert k["P0"] > 100.0
     assert abs(k["P_star"]) < 1e-6 * k["P0"]
     assert k["P_95"] > 0.0
+
+
+def test_traction_critical_point():
+    k = run(checks("plot_19_traction_critical_point.py"))
+    # no traction: the circle's von Mises maximum 0.62 p0 at 0.48 a below the surface
+    # (Johnson 1985 §3.4, fig. 3.9; nu = 0.3), to the printed digits
+    assert k["value"][0] == pytest.approx(0.62, abs=0.005)
+    assert k["depth"][0] == pytest.approx(0.48, abs=0.005)
+    # the maximum rises with the traction and climbs; it is at the surface by mu = 0.35
+    # and below it at 0.3 (Johnson 1985 §7.2: the critical value is about 0.25-0.3)
+    assert np.all(np.diff(k["value"]) > 0)
+    assert np.all(k["depth"][k["mus"] <= 0.3] > 0.3) and np.all(k["depth"][k["mus"] >= 0.35] == 0)
+    # the line contact at nu = 0.3 within Johnson's range; mu_c rises with nu
+    assert 0.25 <= k["mu_c"][1] <= 0.30
+    assert np.all(np.diff(k["mu_c"]) > 0)
