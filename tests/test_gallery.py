@@ -258,8 +258,8 @@ def test_shaft_thermal_preload():
 
 def test_traction_critical_point():
     k = run(checks("plot_19_traction_critical_point.py"))
-    # no traction: the circle's von Mises maximum 0.62 p0 at 0.48 a below the surface
-    # (Johnson 1985 §3.4, fig. 3.9; nu = 0.3), to the printed digits
+    # no traction: on the circle's axis sigma_r = sigma_theta, so von Mises = 2 tau_max =
+    # 2 x 0.31 p0 at 0.48 a (Johnson 1985 §4.2, nu = 0.3), to the printed digits
     assert k["value"][0] == pytest.approx(0.62, abs=0.005)
     assert k["depth"][0] == pytest.approx(0.48, abs=0.005)
     # the maximum rises with the traction and climbs; it is at the surface by mu = 0.35
