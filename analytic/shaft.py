@@ -1719,7 +1719,9 @@ def bearing_coefficients(result: ShaftResult, tilt: str = "held"):
     list of dict
         Per seat: ``x`` [m], ``node`` (index into ``result.nodes``), ``kxx``, ``kxy``,
         ``kyx``, ``kyy`` (lateral, ROSS axes), ``kzz`` (axial), ``kxz``, ``kyz``, ``kzx``,
-        ``kzy`` (axial–lateral) [N/m].
+        ``kzy`` (axial–lateral) [N/m], and ``stiffness``, the whole 5x5 seat stiffness
+        to the ground in the shaft frame (u, v, w, theta_y, theta_z) [N/m, N/rad, N m/m,
+        N m/rad], tilts included.
 
     Examples
     --------
@@ -1744,7 +1746,8 @@ def bearing_coefficients(result: ShaftResult, tilt: str = "held"):
         out.append(dict(x=s.position, node=int(np.argmin(np.abs(result.nodes - s.position))),
                         kxx=float(T[1, 1]), kxy=float(T[1, 2]), kyx=float(T[2, 1]),
                         kyy=float(T[2, 2]), kzz=float(T[0, 0]), kxz=float(T[1, 0]),
-                        kyz=float(T[2, 0]), kzx=float(T[0, 1]), kzy=float(T[0, 2])))
+                        kyz=float(T[2, 0]), kzx=float(T[0, 1]), kzy=float(T[0, 2]),
+                        stiffness=K))
     return out
 
 
