@@ -30,7 +30,8 @@ from ballrace.analytic import shaft
 
 try:
     import ross
-except ImportError:       # the documentation build has no ROSS
+    ross.Rotor            # (not some other directory called "ross" on the path)
+except (ImportError, AttributeError):       # the documentation build has no ROSS
     ross = None
 
 steel = ballrace.Material(E=210e9, nu=0.3, density=7850.0)
