@@ -1688,9 +1688,9 @@ def _seat_to_ground(K, seat) -> np.ndarray:
 def bearing_coefficients(result: ShaftResult, tilt: str = "held"):
     r"""Each seat's linearised stiffness in the axes of a rotordynamics code.
 
-    ROSS (and most rotordynamics codes) put the shaft along their z axis: (x, y, z)_ROSS =
-    (y, z, x)_ballrace (a cyclic permutation, so both frames are right-handed, and ROSS's
-    rotations alpha, beta about its x, y are ballrace's theta_y, theta_z).  The seat's
+    ROSS puts the shaft along its z axis: (x, y, z)_ROSS = (y, z, x)_ballrace (a cyclic
+    permutation, so both frames are right-handed, and ROSS's rotations alpha, beta about
+    its x, y are ballrace's theta_y, theta_z).  The seat's
     stiffness from the shaft node to the ground is the bearing's 5x5 tangent stiffness
     at the operating point (``result.seat_stiffness``) in series with its housing: the
     housing springs of ``housing_stiffness``, and no axial stiffness for a floating seat
@@ -1776,7 +1776,8 @@ def ross_bearings(result: ShaftResult, nodes=None, *, tilt: str = "held", dampin
     Returns
     -------
     list of ross.BearingElement
-        In the order of ``result.seats``, tagged with the seat names (or ``seat<k>``).
+        In the order of ``result.seats``, tagged with the seat names (``seat<k>`` for a
+        seat without one; ``_<k>`` appended to all when two are alike).
     """
     coeffs = bearing_coefficients(result, tilt)
     if nodes is None:
@@ -1791,7 +1792,10 @@ def ross_bearings(result: ShaftResult, nodes=None, *, tilt: str = "held", dampin
     except ImportError:
         raise ImportError("ross_bearings needs ROSS: pip install 'ballrace[rotor]' "
                           "(ross-rotordynamics)") from None
+    tags = [s.name or f"seat{k}" for k, s in enumerate(result.seats)]
+    if len(set(tags)) < len(tags):          # ROSS finds its elements by tag
+        tags = [f"{t}_{k}" for k, t in enumerate(tags)]
     return [ross.BearingElement(n=int(n), kxx=c["kxx"], kyy=c["kyy"], kxy=c["kxy"],
                                 kyx=c["kyx"], kzz=c["kzz"], cxx=c_d, cyy=c_d, czz=c_d,
-                                tag=s.name or f"seat{k}")
-            for k, (n, c, s) in enumerate(zip(nodes, coeffs, result.seats))]
+                                tag=t)
+            for n, c, t in zip(nodes, coeffs, tags)]
