@@ -776,3 +776,8 @@ def test_ross_bearings_in_a_ross_rotor():
     assert np.all(np.isfinite(wn)) and np.all(wn > 0)
     with pytest.raises(ValueError, match="nodes"):
         S.ross_bearings(r, [3])
+    # ROSS finds elements by tag: two seats of one name get distinct tags
+    twin = S.solve(s, [S.Seat(0.015, DG0, name="A"), S.Seat(0.245, DG0, floating=True,
+                                                            name="A")],
+                   [S.PointLoad(0.09, Fy=2000.0)])
+    assert [e.tag for e in S.ross_bearings(twin)] == ["A_0", "A_1"]
