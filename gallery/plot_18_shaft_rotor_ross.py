@@ -20,7 +20,8 @@ Simply supported beam, mode 1 (k = pi/L): Euler–Bernoulli
 f1 = (pi/L)^2 sqrt(EI/(rho A)) / (2 pi); Timoshenko (shear with Cowper's kappa and rotary
 inertia, as ROSS's shaft element) the lower root of
 (rho^2 I/(kappa G)) w^4 - (rho A + rho I k^2 (1 + E/(kappa G))) w^2 + E I k^4 = 0
-(Timoshenko 1921; Han, Benaroya & Wei 1999, J. Sound Vib. 225(5) 935-988, §6).
+(Timoshenko 1921, Phil. Mag. 41, 744-746: his two beam equations with
+w = sin(kx) exp(i w t) give it).
 
 Without ROSS the script prints a note and computes the beam formulas only.
 """

@@ -272,8 +272,9 @@ def test_shaft_rotor_beam_formulas():
     # f1 = (pi/0.5)^2 * 51.722 / (2 pi) = 324.98 Hz (5 figures).
     k = _shaft_rotor_key()
     assert k["f_eb"] == pytest.approx(324.98, abs=0.005)
-    # Timoshenko to first order in (k r)^2, r = D/4 the radius of gyration (Han, Benaroya &
-    # Wei 1999, §6): f_T / f_EB = 1 - (k r)^2 (1 + E/(kappa G)) / 2 + O((k r)^4); here
+    # Timoshenko to first order in (k r)^2, r = D/4 the radius of gyration (expand the
+    # script's quartic: w^2 = EI k^4 / (rho A (1 + (k r)^2 (1 + E/(kappa G)))) + ...):
+    # f_T / f_EB = 1 - (k r)^2 (1 + E/(kappa G)) / 2 + O((k r)^4); here
     # (k r)^2 (1 + E/(kappa G)) = 0.0155, so the second-order term is ~2.4e-4: 5e-4.
     kr2 = (np.pi / k["slenderness"] / 4) ** 2
     first = 1 - 0.5 * kr2 * (1 + 2 * (1 + k["nu"]) / k["kappa"])
