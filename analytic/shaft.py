@@ -1665,22 +1665,47 @@ def duty_cycle(shaft: Shaft, seats, cases, *, rotating: str = "inner", dynamic_r
 
 
 # =========================================================================== rotordynamics
-def bearing_coefficients(result: ShaftResult, tilt: str = "held"):
-    r"""Each seat's linearised lateral stiffness in the axes of a rotordynamics code.
+def _seat_to_ground(K, seat) -> np.ndarray:
+    """5x5 stiffness from the shaft node to the ground of one seat: the bearing's tangent
+    stiffness K in series with its housing (outer-ring DOFs condensed out)."""
+    if seat.housing_stiffness is None:
+        loc = [0] if seat.floating else []
+        Kh = np.zeros((len(loc), len(loc)))
+    else:
+        loc = [0, 1, 2, 3, 4]
+        Kh = seat.housing_stiffness.copy()
+        if seat.floating:
+            Kh[0, :] = 0.0
+            Kh[:, 0] = 0.0
+    if not loc:
+        return K.copy()
+    Koo = K[np.ix_(loc, loc)] + Kh
+    # outer ring in equilibrium: (K_oo + K_h) w = K_o u; a direction in which the outer ring
+    # is free and the bearing stiffness is zero carries nothing (pseudo-inverse)
+    return K - K[:, loc] @ np.linalg.pinv(Koo, rcond=1e-12) @ K[loc, :]
 
-    ROSS (and most rotordynamics codes) take a 2x2 translational stiffness per bearing
-    node, with the shaft along their z axis: (x, y, z)_ROSS = (y, z, x)_ballrace (a cyclic
-    permutation, so both frames are right-handed).  From the seat's 5x5 tangent stiffness
-    K at the operating point (``result.seat_stiffness``):
+
+def bearing_coefficients(result: ShaftResult, tilt: str = "held"):
+    r"""Each seat's linearised stiffness in the axes of a rotordynamics code.
+
+    ROSS puts the shaft along its z axis: (x, y, z)_ROSS = (y, z, x)_ballrace (a cyclic
+    permutation, so both frames are right-handed, and ROSS's rotations alpha, beta about
+    its x, y are ballrace's theta_y, theta_z).  The seat's
+    stiffness from the shaft node to the ground is the bearing's 5x5 tangent stiffness
+    at the operating point (``result.seat_stiffness``) in series with its housing: the
+    housing springs of ``housing_stiffness``, and no axial stiffness for a floating seat
+    (its outer ring slides).  Of that 5x5 K:
 
     * ``tilt="held"`` — the translational block as it is (the ring held square: what the
       bearing shows when the shaft prevents it from tilting);
-    * ``tilt="free"`` — the lateral stiffness with the bearing free to tilt, the Schur
-      complement K_tt - K_tr K_rr^-1 K_rt over the two tilts (softer or equal).
+    * ``tilt="free"`` — the translational stiffness with the bearing free to tilt, the
+      Schur complement K_tt - K_tr K_rr^-1 K_rt over the two tilts (softer or equal).
 
-    The bearing's tilt stiffness itself (a rotational spring, large for an axially loaded
-    or preloaded bearing) is not part of a 2x2 translational element; either choice
-    drops it, and the axial stiffness is reported separately (``kzz``).
+    A ROSS ``BearingElement`` acts on the three translations of its node only (a 3x3
+    block with kxx, kxy, kyx, kyy and kzz, no axial–lateral terms), so the bearing's tilt
+    stiffness (a rotational spring, large for an axially loaded or preloaded bearing)
+    is not exported; either choice drops it.  The axial–lateral coupling terms are
+    returned (``kzx``, ``kzy``, ``kxz``, ``kyz``) but ROSS has no place for them.
 
     Parameters
     ----------
@@ -1693,7 +1718,10 @@ def bearing_coefficients(result: ShaftResult, tilt: str = "held"):
     -------
     list of dict
         Per seat: ``x`` [m], ``node`` (index into ``result.nodes``), ``kxx``, ``kxy``,
-        ``kyx``, ``kyy``, ``kzz`` [N/m].
+        ``kyx``, ``kyy`` (lateral, ROSS axes), ``kzz`` (axial), ``kxz``, ``kyz``, ``kzx``,
+        ``kzy`` (axial–lateral) [N/m], and ``stiffness``, the whole 5x5 seat stiffness
+        to the ground in the shaft frame (u, v, w, theta_y, theta_z) [N/m, N/rad, N m/m,
+        N m/rad], tilts included.
 
     Examples
     --------
@@ -1709,37 +1737,51 @@ def bearing_coefficients(result: ShaftResult, tilt: str = "held"):
     check_choice(tilt, "tilt", ("held", "free"))
     out = []
     for k, s in enumerate(result.seats):
-        K = result.seat_stiffness[k]
-        T = K[np.ix_([1, 2], [1, 2])]
+        K = _seat_to_ground(result.seat_stiffness[k], s)
+        T = K[:3, :3]
         if tilt == "free":
-            Krr = K[np.ix_([3, 4], [3, 4])]
-            if np.linalg.cond(Krr) < 1e12:
-                T = T - K[np.ix_([1, 2], [3, 4])] @ np.linalg.solve(Krr, K[np.ix_([3, 4], [1, 2])])
+            Krr = K[3:, 3:]
+            # K_tr K_rr^+ K_rt: a tilt without stiffness (and so without coupling) drops out
+            T = T - K[:3, 3:] @ np.linalg.pinv(Krr, rcond=1e-12) @ K[3:, :3]
         out.append(dict(x=s.position, node=int(np.argmin(np.abs(result.nodes - s.position))),
-                        kxx=float(T[0, 0]), kxy=float(T[0, 1]), kyx=float(T[1, 0]),
-                        kyy=float(T[1, 1]), kzz=float(K[0, 0])))
+                        kxx=float(T[1, 1]), kxy=float(T[1, 2]), kyx=float(T[2, 1]),
+                        kyy=float(T[2, 2]), kzz=float(T[0, 0]), kxz=float(T[1, 0]),
+                        kyz=float(T[2, 0]), kzx=float(T[0, 1]), kzy=float(T[0, 2]),
+                        stiffness=K))
     return out
 
 
-def ross_bearings(result: ShaftResult, nodes, *, tilt: str = "held", damping: float = 0.0):
+def ross_bearings(result: ShaftResult, nodes=None, *, tilt: str = "held", damping: float = 0.0):
     """ROSS ``BearingElement`` objects of the seats (needs ``ballrace[rotor]``).
+
+    Each element carries the seat's :func:`bearing_coefficients` at the operating point:
+    kxx, kxy, kyx, kyy (lateral) and kzz (axial) [N/m], constant in speed; the tilt
+    stiffness and the axial–lateral terms are not exported (a ROSS bearing acts on the
+    three translations of its node only).
 
     Parameters
     ----------
     result : ShaftResult
         The solved shaft.
-    nodes : sequence of int
-        The ROSS rotor node of each seat (in the ROSS model's own numbering).
+    nodes : sequence of int, optional
+        The ROSS rotor node of each seat (in the ROSS model's own numbering); default
+        the index of the seat's node in ``result.nodes``, right for a ROSS rotor built
+        with one ``ShaftElement`` per interval of ``result.nodes``.
     tilt : {"held", "free"}
         See :func:`bearing_coefficients`.
     damping : float
-        Direct damping c_xx = c_yy [N s/m], >= 0 (a rolling bearing's is small and not modelled).
+        Direct damping c_xx = c_yy = c_zz [N s/m], >= 0 (a rolling bearing's is small and
+        not modelled).
 
     Returns
     -------
     list of ross.BearingElement
+        In the order of ``result.seats``, tagged with the seat names (``seat<k>`` for a
+        seat without one; ``_<k>`` appended to all when two are alike).
     """
     coeffs = bearing_coefficients(result, tilt)
+    if nodes is None:
+        nodes = [c["node"] for c in coeffs]
     nodes = check_integer(nodes, "nodes", 0)
     if nodes.shape != (len(coeffs),):
         raise ValueError(f"nodes must give one ROSS node per seat ({len(coeffs)}); got "
@@ -1750,6 +1792,10 @@ def ross_bearings(result: ShaftResult, nodes, *, tilt: str = "held", damping: fl
     except ImportError:
         raise ImportError("ross_bearings needs ROSS: pip install 'ballrace[rotor]' "
                           "(ross-rotordynamics)") from None
+    tags = [s.name or f"seat{k}" for k, s in enumerate(result.seats)]
+    if len(set(tags)) < len(tags):          # ROSS finds its elements by tag
+        tags = [f"{t}_{k}" for k, t in enumerate(tags)]
     return [ross.BearingElement(n=int(n), kxx=c["kxx"], kyy=c["kyy"], kxy=c["kxy"],
-                                kyx=c["kyx"], cxx=c_d, cyy=c_d)
-            for n, c in zip(nodes, coeffs)]
+                                kyx=c["kyx"], kzz=c["kzz"], cxx=c_d, cyy=c_d, czz=c_d,
+                                tag=t)
+            for n, c, t in zip(nodes, coeffs, tags)]

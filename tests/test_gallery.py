@@ -269,3 +269,55 @@ def test_traction_critical_point():
     # the line contact at nu = 0.3 within Johnson's range; mu_c rises with nu
     assert 0.25 <= k["mu_c"][1] <= 0.30
     assert np.all(np.diff(k["mu_c"]) > 0)
+
+
+_ROSS_KEY = {}
+
+
+def _shaft_rotor_key() -> dict:
+    """plot_18 runs once for both of its tests (ROSS's first modal run takes ~20 s)."""
+    if not _ROSS_KEY:
+        _ROSS_KEY.update(run(checks("plot_18_shaft_rotor_ross.py")))
+    return _ROSS_KEY
+
+
+def test_shaft_rotor_beam_formulas():
+    # Runs with or without ROSS.  Simply supported Euler-Bernoulli beam, mode 1, by hand:
+    # EI/(rho A) = E D^2/(16 rho) = 210e9 * 0.04^2 / (16 * 7850) = 2675.16 m^4/s^2,
+    # f1 = (pi/0.5)^2 * 51.722 / (2 pi) = 324.98 Hz (5 figures).
+    k = _shaft_rotor_key()
+    assert k["f_eb"] == pytest.approx(324.98, abs=0.005)
+    # Timoshenko to first order in (k r)^2, r = D/4 the radius of gyration (expand the
+    # script's quartic: w^2 = EI k^4 / (rho A (1 + (k r)^2 (1 + E/(kappa G)))) + ...):
+    # f_T / f_EB = 1 - (k r)^2 (1 + E/(kappa G)) / 2 + O((k r)^4); here
+    # (k r)^2 (1 + E/(kappa G)) = 0.0155, so the second-order term is ~2.4e-4: 5e-4.
+    kr2 = (np.pi / k["slenderness"] / 4) ** 2
+    first = 1 - 0.5 * kr2 * (1 + 2 * (1 + k["nu"]) / k["kappa"])
+    assert k["f_timoshenko"] / k["f_eb"] == pytest.approx(first, abs=5e-4)
+    assert k["f_timoshenko"] < k["f_eb"]
+
+
+def test_shaft_rotor_ross_critical_speeds():
+    pytest.importorskip("ross")
+    k = _shaft_rotor_key()
+    if not k["ross"]:
+        pytest.skip("the module named ross is not ROSS")
+    # ROSS's Timoshenko shaft elements (Cowper's kappa, rotary inertia) on 1e12 N/m
+    # bearings: the simply supported Timoshenko beam (the stiff bearings lower it by
+    # ~k_shaft / k_bearing ~ 1e-5, the 40-element mesh far less): 1e-4.
+    assert k["f_stiff"] == pytest.approx(k["f_timoshenko"], rel=1e-4)
+    # the ballrace bearings are springs in series with the shaft: lower (Rayleigh); their
+    # tilt stiffness added back stiffens the model against tilt="free" (whose 3x3 block
+    # is the 5x5 seat stiffness minimised over the tilts, so never stiffer)
+    assert k["f_held"] < k["f_stiff"]
+    assert k["f_free"] <= k["f_full"] * (1 + 1e-9)
+    assert k["f_full"] < k["f_stiff"]
+    # the spindle's DB pair has a tilt stiffness (~3e5 N m/rad) of the order of the
+    # shaft's own bending stiffness EI/L (~4e5 N m/rad): adding it raises the first
+    # frequency clearly (> 1 %), and never below tilt="free" (Rayleigh)
+    sp_held, sp_free, sp_full = k["spindle"]
+    assert sp_free <= sp_full * (1 + 1e-9) and sp_full > 1.01 * sp_held
+    # the bending frequencies from ROSS's assembled K, M at standstill are among those of
+    # ROSS's own run_modal (1e-6)
+    for f in k["f_gearbox"][:2]:
+        assert np.min(np.abs(k["f_ross_modal"] / f - 1)) < 1e-6

@@ -713,3 +713,71 @@ def test_ring_forces_are_loaddist_at_imposed_displacements():
         np.testing.assert_allclose(F[0], ref.loads, rtol=1e-12, atol=1e-12 * np.abs(F).max())
         np.testing.assert_allclose(K[0], ref.stiffness, rtol=1e-12,
                                    atol=1e-12 * np.abs(K).max())
+
+
+def test_bearing_coefficients_seat_to_ground_in_series():
+    """A seat's stiffness to the ground is the bearing and its housing as springs in
+    series, K = (K_b^-1 + K_h^-1)^-1 (both invertible here: a DB pair with row spacing
+    and preload is stiff in all five DOFs) — the textbook series formula, independent of
+    the condensation the code uses; 1e-9.  A floating seat in a rigid housing has no axial
+    stiffness to the ground (its outer ring slides), and a rigid locating seat exports the
+    bearing's own tangent stiffness unchanged."""
+    pair = dx.DuplexPair(AC, "DB", preload=1000.0)
+    Kh = np.array([2e8, 3e8, 4e8, 2e6, 3e6])
+    s = S.Shaft([(0.3, 60e-3, 0.0)], STEEL)
+    seats = [S.Seat(0.03, pair, housing_stiffness=Kh, row_spacing=0.02),
+             S.Seat(0.27, DG0, floating=True), S.Seat(0.15, DG0)]
+    r = S.solve(s, seats, [S.PointLoad(0.1, Fy=3000.0, Fz=-1000.0, Fa=500.0)])
+    c = S.bearing_coefficients(r)
+    Kb = r.seat_stiffness[0]
+    series = np.linalg.inv(np.linalg.inv(Kb) + np.diag(1 / Kh))
+    np.testing.assert_allclose(c[0]["stiffness"], series, rtol=0, atol=1e-9 * np.abs(series).max())
+    assert c[0]["kxx"] == pytest.approx(series[1, 1], rel=1e-9)
+    assert c[0]["kzz"] == pytest.approx(series[0, 0], rel=1e-9)
+    assert abs(c[1]["kzz"]) < 1e-9 * c[1]["kxx"]
+    assert c[1]["kxx"] > 0
+    np.testing.assert_array_equal(c[2]["stiffness"], r.seat_stiffness[2])
+
+
+def test_ross_bearings_in_a_ross_rotor():
+    """ross_bearings gives one ROSS BearingElement per seat whose 3x3 stiffness at any
+    frequency is [[kxx, kxy, 0], [kyx, kyy, 0], [0, 0, kzz]] of bearing_coefficients at the
+    operating point (exact), at the seat's node; a ROSS rotor of ShaftElements on
+    result.nodes with them assembles and its modal analysis runs (finite, positive
+    frequencies)."""
+    ross = pytest.importorskip("ross")
+    if not hasattr(ross, "BearingElement"):
+        pytest.skip("the module named ross is not ROSS")
+    s = S.Shaft([(0.03, 0.04, 0.0), (0.2, 0.048, 0.0), (0.03, 0.04, 0.0)], STEEL)
+    seats = [S.Seat(0.015, DG0, name="A"), S.Seat(0.245, DG0, floating=True, name="B")]
+    r = S.solve(s, seats, [S.gear_mesh(0.09, 5000.0, 0.12, helix_angle=np.radians(15))])
+    for tilt in ("held", "free"):
+        c = S.bearing_coefficients(r, tilt=tilt)
+        els = S.ross_bearings(r, tilt=tilt, damping=50.0)
+        assert [e.n for e in els] == [int(np.argmin(abs(r.nodes - x))) for x in (0.015, 0.245)]
+        assert [e.tag for e in els] == ["A", "B"]
+        for e, ck in zip(els, c):
+            np.testing.assert_array_equal(
+                e.K(0.0), [[ck["kxx"], ck["kxy"], 0], [ck["kyx"], ck["kyy"], 0],
+                           [0, 0, ck["kzz"]]])
+            np.testing.assert_array_equal(np.diag(e.C(0.0)), [50.0, 50.0, 50.0])
+    # ROSS axes (x, y, z) = ballrace (y, z, x), rigid housing: the tangent stiffness itself
+    K0 = r.seat_stiffness[0]
+    held = S.ross_bearings(r)
+    assert (held[0].K(0.0)[0, 0], held[0].K(0.0)[1, 1], held[0].K(0.0)[0, 1],
+            held[0].K(0.0)[2, 2]) == (K0[1, 1], K0[2, 2], K0[1, 2], K0[0, 0])
+    assert held[1].K(0.0)[2, 2] == pytest.approx(0.0, abs=1e-9 * K0[1, 1])  # floating
+    mat = ross.Material(name="test_steel", rho=STEEL.density, E=STEEL.E, Poisson=STEEL.nu)
+    els = [ross.ShaftElement(L=float(b - a), idl=float(s.diameters(0.5 * (a + b))[1]),
+                             odl=float(s.diameters(0.5 * (a + b))[0]), material=mat, n=i)
+           for i, (a, b) in enumerate(zip(r.nodes[:-1], r.nodes[1:]))]
+    rotor = ross.Rotor(els, bearing_elements=held)
+    wn = np.asarray(rotor.run_modal(speed=0.0, num_modes=8).wn)
+    assert np.all(np.isfinite(wn)) and np.all(wn > 0)
+    with pytest.raises(ValueError, match="nodes"):
+        S.ross_bearings(r, [3])
+    # ROSS finds elements by tag: two seats of one name get distinct tags
+    twin = S.solve(s, [S.Seat(0.015, DG0, name="A"), S.Seat(0.245, DG0, floating=True,
+                                                            name="A")],
+                   [S.PointLoad(0.09, Fy=2000.0)])
+    assert [e.tag for e in S.ross_bearings(twin)] == ["A_0", "A_1"]
