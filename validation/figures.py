@@ -373,6 +373,19 @@ _FEM_CAPTION = ("Section y = 0 through the contact (x rolling, depth z down; the
                 "axis.")
 
 
+_FEM_TRACTION_CAPTION = (
+    "Section y = 0 through the contact (x rolling, depth z down), loaded by the normal "
+    "pressure and a tangential traction q = mu p along +x, so the field is not symmetric in "
+    "x and the section is the FE's own (not mirrored).  Left to right: the FE field, the "
+    "analytic field with the same traction (ballrace.analytic.subsurface.stress(..., "
+    "traction=mu)) on the same points and colour scale, their difference FE - analytic, "
+    "and both along depth.  Open circles mark the analytic maxima, crosses the FE maxima.")
+
+
+def _is_traction(r) -> bool:
+    return "traction" in (getattr(r, "title", "") or "") or "traction" in (r.id or "")
+
+
 def fem_figures(run) -> list[Figure]:
     """One figure per FE case: the pictures its calculation drew (``fem.render``)."""
     if run is None:
@@ -383,8 +396,9 @@ def fem_figures(run) -> list[Figure]:
             continue
         imgs = tuple(tuple(a) for a in r.artifacts if a[1])
         note = "; ".join(a[0] for a in r.artifacts if not a[1])   # a picture not drawn
+        caption = _FEM_TRACTION_CAPTION if _is_traction(r) else _FEM_CAPTION
         figs.append(Figure(f"fem-{r.id}", "fem", f"FE against analytic: {r.title}",
-                           caption=_FEM_CAPTION, images=imgs, note=note))
+                           caption=caption, images=imgs, note=note))
     if not figs:
         fem_ran = any(r.area == "fem" and r.status in ("pass", "fail") for r in run.results)
         why = ("the FE cases wrote no pictures" if fem_ran else
