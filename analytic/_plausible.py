@@ -56,19 +56,26 @@ def length(value, name: str, largest: float, what: str, stacklevel: int = 3) -> 
 TEMPERATURE_RANGE = (173.15, 773.15)
 
 
+def _outside(values, lo: float, hi: float):
+    """The first value outside [lo, hi] (a float), or None when all are inside."""
+    v = np.asarray(values, float)
+    bad = ~((v >= lo) & (v <= hi))
+    if not np.any(bad):
+        return None
+    return float(v[bad].flat[0]) if v.ndim else float(v)
+
+
 def temperature(T, name: str):
     """Check an absolute temperature [K]; ``ValueError`` outside :data:`TEMPERATURE_RANGE`
     naming the likely slip (°C given for K).  Returns the float array."""
-    t = np.asarray(T, float)
     lo, hi = TEMPERATURE_RANGE
-    bad = ~((t >= lo) & (t <= hi))
-    if np.any(bad):
-        v = float(t[bad].flat[0]) if t.ndim else float(t)
+    v = _outside(T, lo, hi)
+    if v is not None:
         hint = (f"; were degrees Celsius given? ({v:g} °C is {v + 273.15:g} K)"
                 if -100.0 <= v <= 500.0 and v < lo else "")
         raise ValueError(f"{name} must be an absolute temperature in kelvin in [{lo:g}, {hi:g}] "
                          f"[K] (-100 °C to 500 °C); got {v:g}{hint}")
-    return t
+    return np.asarray(T, float)
 
 
 #: Kinematic viscosities [m²/s] of lubricating oils: ISO VG 2 to VG 10000 and beyond.
@@ -77,13 +84,11 @@ VISCOSITY_RANGE = (1e-7, 0.05)
 
 def viscosity(nu, name: str):
     """Check a kinematic viscosity [m²/s]; ``ValueError`` naming a mm²/s (cSt) slip."""
-    v = np.asarray(nu, float)
     lo, hi = VISCOSITY_RANGE
-    bad = ~((v >= lo) & (v <= hi))
-    if np.any(bad):
-        x = float(v[bad].flat[0]) if v.ndim else float(v)
+    x = _outside(nu, lo, hi)
+    if x is not None:
         hint = (f"; were mm^2/s (cSt) given? ({x:g} mm^2/s is {x * 1e-6:g} m^2/s)"
                 if x > hi else "")
         raise ValueError(f"{name} must be a kinematic viscosity in [{lo:g}, {hi:g}] [m^2/s]; "
                          f"got {x:g}{hint}")
-    return v
+    return np.asarray(nu, float)

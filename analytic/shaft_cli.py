@@ -692,13 +692,10 @@ def plot(r: dict, path) -> float:
 
 
 def _clean(obj):
-    if isinstance(obj, dict):
-        return {k: _clean(v) for k, v in obj.items()}
-    if isinstance(obj, list):
-        return [_clean(v) for v in obj]
-    if isinstance(obj, float) and not math.isfinite(obj):
-        return None
-    return obj
+    """JSON-safe copy: NaN / inf become null (as ``ballrace bearing --json``)."""
+    from ballrace.analytic.cli import _clean as clean
+
+    return clean(obj)
 
 
 def register(app) -> None:
