@@ -914,15 +914,7 @@ class _Problem:
         for k, s in enumerate(seats):
             self.w0[k, 0] = housing_expansion * housing_dT * (s.position - reference)
             self.spring[k, 0] = -s.direction * s.spring_preload
-            if s.housing_stiffness is None:
-                loc = [0] if s.floating else []
-                Kh = np.zeros((len(loc), len(loc)))
-            else:
-                loc = [0, 1, 2, 3, 4]
-                Kh = s.housing_stiffness.copy()
-                if s.floating:
-                    Kh[0, :] = 0.0
-                    Kh[:, 0] = 0.0
+            loc, Kh = _outer_dofs(s)
             gl = list(range(nxt, nxt + len(loc)))
             nxt += len(loc)
             self.outer.append((np.array(loc, int), np.array(gl, int), Kh))
@@ -1470,7 +1462,8 @@ def life(result: ShaftResult, *, rotating: str = "inner", dynamic_rating=None,
     dynamic_rating : float or sequence, optional
         C of each seat's bearing [N]; default the ISO 281 rating of the geometry.
     nominal_contact_angle : float or sequence, optional
-        alpha of the rating [rad] per seat; default the free contact angle.
+        alpha of the rating [rad] per seat; default each bearing's
+        ``nominal_contact_angle``.
     modified : dict, optional
         ``kappa``, ``contamination``, ``fatigue_limit`` [-, -, N] and optionally
         ``reliability`` and ``ep_additives`` for L_nmr (ISO 281:2007 §9.3).
@@ -1665,18 +1658,24 @@ def duty_cycle(shaft: Shaft, seats, cases, *, rotating: str = "inner", dynamic_r
 
 
 # =========================================================================== rotordynamics
+def _outer_dofs(seat) -> tuple[list, np.ndarray]:
+    """The outer-ring DOFs of a seat that move (indices into the 5) and the housing
+    stiffness on them: none in a rigid housing (only the axial one of a floating seat);
+    all five in an elastic housing, the axial one then free of it when floating."""
+    if seat.housing_stiffness is None:
+        loc = [0] if seat.floating else []
+        return loc, np.zeros((len(loc), len(loc)))
+    Kh = seat.housing_stiffness.copy()
+    if seat.floating:
+        Kh[0, :] = 0.0
+        Kh[:, 0] = 0.0
+    return [0, 1, 2, 3, 4], Kh
+
+
 def _seat_to_ground(K, seat) -> np.ndarray:
     """5x5 stiffness from the shaft node to the ground of one seat: the bearing's tangent
     stiffness K in series with its housing (outer-ring DOFs condensed out)."""
-    if seat.housing_stiffness is None:
-        loc = [0] if seat.floating else []
-        Kh = np.zeros((len(loc), len(loc)))
-    else:
-        loc = [0, 1, 2, 3, 4]
-        Kh = seat.housing_stiffness.copy()
-        if seat.floating:
-            Kh[0, :] = 0.0
-            Kh[:, 0] = 0.0
+    loc, Kh = _outer_dofs(seat)
     if not loc:
         return K.copy()
     Koo = K[np.ix_(loc, loc)] + Kh

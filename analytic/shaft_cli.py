@@ -77,6 +77,7 @@ shaft and seats on top of each other are one-line errors naming the key)::
 """
 from __future__ import annotations
 
+import dataclasses
 import json
 import logging
 import math
@@ -224,7 +225,6 @@ class ShaftCase:
     speed_rpm : Shaft speed [rev/min] or None (no lives in hours).
     rotating_ring : "inner" or "outer".
     ratings : Per seat: C [N] or None (ISO 281 from the geometry).
-    nominal_angles : Per seat: nominal contact angle of the rating [rad].
     solve_options : Temperatures for :func:`ballrace.analytic.shaft.solve`.
     duty : Duty cycle: ((time fraction, speed [rev/min], load factor), ...) or ().
     """
@@ -237,7 +237,6 @@ class ShaftCase:
     speed_rpm: Optional[float]
     rotating_ring: str
     ratings: tuple
-    nominal_angles: tuple
     solve_options: dict
     duty: tuple = ()
 
@@ -315,8 +314,12 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
                                        f"{where}.free_contact_angle"))
         if b.material is not None:
             kw["material"] = material(b.material, f"{where}.material")
+        if b.type == "deep-groove":          # rated at 0 deg whatever its clearance
+            kw["nominal_contact_angle"] = 0.0
         try:
             brg = ballrace.BallBearing(**kw)
+            if b.type == "angular-contact":  # rated at its design (free) angle
+                brg = dataclasses.replace(brg, nominal_contact_angle=brg.free_contact_angle)
         except (ValueError, TypeError) as exc:
             raise err(where, exc) from None
         if b.pair is not None:
@@ -328,7 +331,7 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
         elif b.preload is not None:
             raise err(f"{where}.preload", "a preload needs pair = \"DB\", \"DF\" or \"DT\" "
                       "(for single bearings use the seat's offset or spring_preload)")
-        bearings[name] = (brg, b.type)
+        bearings[name] = brg
         ratings[name] = q(b.dynamic_rating, "[force]", f"{where}.dynamic_rating")
 
     def position(v, where):
@@ -337,13 +340,13 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
             raise err(where, f"must be within the shaft [0, {L * 1e3:g} mm]; got {v!r}")
         return x
 
-    seats, C, alpha_n = [], [], []
+    seats, C = [], []
     for k, s in enumerate(spec.seat):
         where = f"[[seat]][{k}]"
         if s.bearing not in bearings:
             raise err(f"{where}.bearing", f"no bearing named {s.bearing!r} in [bearings] "
                       f"(have: {', '.join(bearings) or 'none'})")
-        brg, kind = bearings[s.bearing]
+        brg = bearings[s.bearing]
         kw = dict(direction=s.direction, floating=s.floating, name=s.name or f"seat {k + 1}")
         for key, dim in (("offset", "[length]"), ("spring_preload", "[force]"),
                          ("clearance", "[length]"), ("row_spacing", "[length]")):
@@ -372,8 +375,6 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
         except (ValueError, TypeError) as exc:
             raise err(where, exc) from None
         C.append(ratings[s.bearing])
-        b1 = brg if not isinstance(brg, DuplexPair) else brg.bearing
-        alpha_n.append(0.0 if kind == "deep-groove" else float(b1.free_contact_angle))
     order = sorted(range(len(seats)), key=lambda i: seats[i].position)
     for i, j in zip(order[:-1], order[1:]):
         if seats[j].position - seats[i].position < 1e-6 * L:
@@ -434,8 +435,7 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
     return ShaftCase(title=spec.title, duty=tuple(duty), shaft=shaft, seats=tuple(seats), loads=tuple(loads),
                      gravity=(0.0, -S.STANDARD_GRAVITY, 0.0) if sh.weight else None,
                      speed_rpm=None if speed is None else speed * 60 / (2 * math.pi),
-                     rotating_ring=op.rotating_ring, ratings=tuple(C),
-                     nominal_angles=tuple(alpha_n), solve_options=opts)
+                     rotating_ring=op.rotating_ring, ratings=tuple(C), solve_options=opts)
 
 
 def _fits(f, brg, shaft, x, q, source, where):
@@ -506,8 +506,7 @@ def analyze(case: ShaftCase) -> dict:
     try:
         lf = S.life(r, rotating=case.rotating_ring,
                     dynamic_rating=[c for c in case.ratings] if any(
-                        c is not None for c in case.ratings) else None,
-                    nominal_contact_angle=list(case.nominal_angles))
+                        c is not None for c in case.ratings) else None)
     except ValueError as exc:
         lf = None
         notes.append(f"lives not available: {exc}")
@@ -569,7 +568,7 @@ def analyze(case: ShaftCase) -> dict:
         def scaled(p, f):
             return S.PointLoad(p.position, *(f * p.vector), name=p.name)
 
-        kw = dict(rotating=case.rotating_ring, nominal_contact_angle=list(case.nominal_angles),
+        kw = dict(rotating=case.rotating_ring,
                   dynamic_rating=[c for c in case.ratings] if any(
                       c is not None for c in case.ratings) else None,
                   gravity=case.gravity, **case.solve_options)

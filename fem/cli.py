@@ -298,14 +298,13 @@ def _check_choice(value, option: str, allowed) -> None:
 
 def _size_ratio(r) -> float:
     """The analytic contact's a over the smallest radius of ball and lower body [-]."""
-    import math
+    from ballrace.analytic import hertz
 
     case = getattr(r, "case", None)
     if case is None:
         return 0.0
-    radii = [case.ball_radius, *(abs(x) for x in getattr(case, "lower_radii", ()))]
-    rmin = min((x for x in radii if math.isfinite(x) and x > 0), default=math.inf)
-    return float(case.analytic.a) / rmin if math.isfinite(rmin) else 0.0
+    radii = (case.ball_radius, *getattr(case, "lower_radii", ()))
+    return hertz._size_ratio(case.analytic.a, radii)
 
 
 def _check_cell(err, tol, ok):

@@ -18,6 +18,16 @@ __all__ = ["subsurface_figure", "traction_figure", "TRACTION_SWEEP"]
 log = logging.getLogger(__name__)
 
 
+def _save(fig, path, heading: str, load: float, c, nu: float) -> None:
+    """Title the figure with the contact (Q, a, b, p0, nu) and write it as a PNG."""
+    fig.suptitle(f"{heading}: Q = {load:g} N, a = {float(c.a) * 1e3:.3f} mm, "
+                 f"b = {float(c.b) * 1e3:.3f} mm, p0 = {float(c.p_max) / 1e9:.3f} GPa, "
+                 f"nu = {nu}")
+    fig.tight_layout()
+    Path(path).parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(path, dpi=110)
+
+
 def subsurface_figure(load, rx1, ry1, rx2=math.inf, ry2=math.inf, *, E=200e9, nu=0.3,
                       path="subsurface.png", n: int = 121) -> dict:
     """Write the teaching figure to ``path``; returns the marked numbers (SI and over p0 / b).
@@ -94,11 +104,7 @@ def subsurface_figure(load, rx1, ry1, rx2=math.inf, ry2=math.inf, *, E=200e9, nu
         ax.set_ylabel("depth z / b")
         ax.legend(fontsize=8)
         ax.grid(alpha=0.3)
-        fig.suptitle(f"Subsurface stresses: Q = {load:g} N, a = {float(c.a) * 1e3:.3f} mm, "
-                     f"b = {float(c.b) * 1e3:.3f} mm, p0 = {p0 / 1e9:.3f} GPa, nu = {nu}")
-        fig.tight_layout()
-        Path(path).parent.mkdir(parents=True, exist_ok=True)
-        fig.savefig(path, dpi=110)
+        _save(fig, path, "Subsurface stresses", load, c, nu)
     finally:
         plt.close(fig)
     log.info("wrote %s", path)
@@ -202,11 +208,7 @@ def traction_figure(load, rx1, ry1, rx2=math.inf, ry2=math.inf, *, E=200e9, nu=0
         ax.set_ylabel("stress / p0")
         ax.legend(fontsize=8)
         ax.grid(alpha=0.3)
-        fig.suptitle(f"Traction {mu:g}: Q = {load:g} N, a = {float(c.a) * 1e3:.3f} mm, "
-                     f"b = {float(c.b) * 1e3:.3f} mm, p0 = {p0 / 1e9:.3f} GPa, nu = {nu}")
-        fig.tight_layout()
-        Path(path).parent.mkdir(parents=True, exist_ok=True)
-        fig.savefig(path, dpi=110)
+        _save(fig, path, f"Traction {mu:g}", load, c, nu)
     finally:
         plt.close(fig)
     log.info("wrote %s", path)
