@@ -87,6 +87,28 @@ class CaseFileError(ValueError):
     """A case file that cannot be read, or whose contents are invalid."""
 
 
+def rating_angle(kind: str, nominal, raw, where: str):
+    """Rating (nominal) contact angle of a case file's bearing [rad], or None.
+
+    ``kind`` is the bearing ``type``; ``nominal`` the parsed
+    ``nominal_contact_angle`` [rad] or None when not given, ``raw`` its text (for the
+    message), ``where`` the table it sits in (e.g. ``"[bearing]"``).  A deep-groove
+    bearing is rated at 0 deg (the nominal contact angle of ISO 281:2007's rating
+    formulas for radial deep-groove bearings); None means "the bearing's free contact angle" (an
+    angular-contact bearing's design angle).  ``ValueError`` for an angle outside
+    [0, 90) deg or a non-zero angle on a deep-groove bearing.
+    """
+    if nominal is None:
+        return 0.0 if kind == "deep-groove" else None
+    if not 0.0 <= nominal < 0.5 * math.pi:
+        raise ValueError(f"{where}.nominal_contact_angle must be in [0, 90) deg; got {raw!r}")
+    if kind == "deep-groove" and nominal != 0.0:
+        raise ValueError(f"{where}.nominal_contact_angle: a deep-groove bearing is rated at "
+                         f"0 deg (ISO 281:2007); got {raw!r} - use type = "
+                         "\"angular-contact\" for a bearing with a design angle")
+    return nominal
+
+
 def _models():
     """Pydantic models, built on first use (pydantic is imported lazily)."""
     from pydantic import BaseModel, ConfigDict, Field
@@ -530,18 +552,12 @@ def parse_case(data: dict, source: str = "<case>") -> BearingCase:
     if (b.diametral_clearance is None) == (b.free_contact_angle is None):
         raise CaseFileError(f"{source}: [bearing]: give exactly one of diametral_clearance "
                             "and free_contact_angle")
-    nominal = q(b.nominal_contact_angle, "[angle]", "[bearing].nominal_contact_angle")
-    if nominal is not None:
-        if not 0.0 <= nominal < 0.5 * math.pi:
-            raise CaseFileError(f"{source}: [bearing].nominal_contact_angle must be in "
-                                f"[0, 90) deg; got {b.nominal_contact_angle!r}")
-        if b.type == "deep-groove" and nominal != 0.0:
-            raise CaseFileError(f"{source}: [bearing].nominal_contact_angle: a deep-groove "
-                                "bearing is rated at 0 deg (ISO 281:2007); got "
-                                f"{b.nominal_contact_angle!r} - use type = "
-                                "\"angular-contact\" for a bearing with a design angle")
-    elif b.type == "deep-groove":
-        nominal = 0.0
+    try:
+        nominal = rating_angle(b.type, q(b.nominal_contact_angle, "[angle]",
+                                         "[bearing].nominal_contact_angle"),
+                               b.nominal_contact_angle, "[bearing]")
+    except ValueError as exc:
+        raise CaseFileError(f"{source}: {exc}") from None
     try:
         brg = ballrace.BallBearing(
             ball_diameter=q(b.ball_diameter, "[length]", "[bearing].ball_diameter"),

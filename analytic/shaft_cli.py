@@ -27,6 +27,8 @@ shaft and seats on top of each other are one-line errors naming the key)::
     f_inner = 0.52
     f_outer = 0.525
     diametral_clearance = "15 um"       # or free_contact_angle = "40 deg"
+    # nominal_contact_angle = "0 deg"   # rating angle; default 0 (deep-groove) or the
+                                        # free contact angle (angular-contact)
     # pair = "DB"; preload = "1.5 kN"   # a duplex pair (DB, DF, DT) of this bearing
     # dynamic_rating = "29.1 kN"        # C for the life (default: ISO 281 from geometry)
 
@@ -125,6 +127,7 @@ def _models():
         f_outer: float = Field(gt=0.5)
         diametral_clearance: Optional[str] = None
         free_contact_angle: Optional[str] = None
+        nominal_contact_angle: Optional[str] = None
         material: Optional[MaterialSpec] = None
         pair: Optional[Literal["DB", "DF", "DT"]] = None
         preload: Optional[str] = None
@@ -263,7 +266,7 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
     import ballrace
     from ballrace.analytic import shaft as S
     from ballrace.analytic.casefile import (CaseFileError, _speed, quantity_reader,
-                                            validate_spec)
+                                            rating_angle, validate_spec)
     from ballrace.analytic.duplex import DuplexPair
 
     hint = _kind_hint(data, source)
@@ -314,11 +317,16 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
                                        f"{where}.free_contact_angle"))
         if b.material is not None:
             kw["material"] = material(b.material, f"{where}.material")
-        if b.type == "deep-groove":          # rated at 0 deg whatever its clearance
-            kw["nominal_contact_angle"] = 0.0
+        try:
+            nominal = rating_angle(b.type, q(b.nominal_contact_angle, "[angle]",
+                                             f"{where}.nominal_contact_angle"),
+                                   b.nominal_contact_angle, where)
+        except ValueError as exc:
+            raise CaseFileError(f"{source}: {exc}") from None
+        kw["nominal_contact_angle"] = 0.0 if nominal is None else nominal
         try:
             brg = ballrace.BallBearing(**kw)
-            if b.type == "angular-contact":  # rated at its design (free) angle
+            if nominal is None:              # angular-contact: rated at its design (free) angle
                 brg = dataclasses.replace(brg, nominal_contact_angle=brg.free_contact_angle)
         except (ValueError, TypeError) as exc:
             raise err(where, exc) from None

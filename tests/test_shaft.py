@@ -557,6 +557,54 @@ def test_case_file_errors_are_one_line_naming_the_key(tmp_path, kw, match):
     assert __import__("re").search(match, res.output), res.output
 
 
+@pytest.mark.parametrize("kind, key, match", [
+    ("deep-groove", 'nominal_contact_angle = "5 deg"', "deep-groove bearing is rated at 0 deg"),
+    ("angular-contact", 'nominal_contact_angle = "95 deg"', r"\[0, 90\) deg"),
+    ("angular-contact", 'nominal_contact_angle = "15 mm"', "nominal_contact_angle"),
+])
+def test_case_file_nominal_angle_errors(tmp_path, kind, key, match):
+    """A shaft case file's bearing takes the rating-angle key of the bearing case file,
+    with the same checks, and the message names the bearing's table."""
+    runner, app = _cli()
+    text = _BASE.format(x1="20 mm", x2="180 mm", xl="100 mm", extra="").replace(
+        'diametral_clearance = "10 um"',
+        f'type = "{kind}"\ndiametral_clearance = "10 um"\n{key}')
+    p = tmp_path / "c.toml"
+    p.write_text(text)
+    res = runner.invoke(app, ["shaft", str(p)])
+    assert res.exit_code == 2, res.output
+    assert len(res.output.strip().splitlines()) == 1, res.output
+    assert "[bearings.b]" in res.output
+    assert __import__("re").search(match, res.output), res.output
+
+
+def test_case_file_nominal_angle_key():
+    """The rating angle of a shaft case file's bearing: the free (design) angle for an
+    angular-contact bearing unless nominal_contact_angle is given, 0 for deep-groove;
+    the bearing's ISO 281 rating follows it."""
+    import tomllib
+
+    from ballrace.analytic import ratings
+    from ballrace.analytic.shaft_cli import parse_shaft_case
+
+    def front(text):
+        b = parse_shaft_case(tomllib.loads(text)).seats[0].bearing
+        return getattr(b, "bearing", b)              # a pair's single bearing
+
+    text = (EXAMPLES / "shaft_spindle.toml").read_text()
+    assert front(text).nominal_contact_angle == pytest.approx(np.radians(25), rel=1e-14)
+    b15 = front(text.replace('free_contact_angle = "25 deg"',
+                             'free_contact_angle = "25 deg"\nnominal_contact_angle = "15 deg"', 1))
+    assert b15.nominal_contact_angle == pytest.approx(np.radians(15), rel=1e-14)
+    assert b15.free_contact_angle == pytest.approx(np.radians(25), rel=1e-14)
+    assert ratings.dynamic_rating(b15) == pytest.approx(
+        ratings.dynamic_rating(b15.ball_diameter, b15.n_balls, b15.pitch_diameter,
+                               np.radians(15)), rel=1e-14)
+    dg = parse_shaft_case(tomllib.loads(_BASE.format(x1="20 mm", x2="180 mm", xl="100 mm",
+                                                     extra=""))).seats[0].bearing
+    assert dg.nominal_contact_angle == 0.0 and dg.free_contact_angle > 0.0
+
+
 def test_bearing_case_file_is_not_a_shaft_case():
     runner, app = _cli()
     res = runner.invoke(app, ["shaft", str(EXAMPLES / "bearing_209.toml")])
