@@ -301,6 +301,9 @@ class _Model:
     mass: float
     J: float
     cheb: tuple = (None, None)
+    rho: float = 0.0
+    cp: object = None          # cos, sin of the ball azimuths psi_j (BallBearing.azimuths(0))
+    sp: object = None
 
     @staticmethod
     @functools.lru_cache(maxsize=64)
@@ -319,7 +322,9 @@ class _Model:
                       ri=(b.f_inner - 0.5) * D, ro=(b.f_outer - 0.5) * D, f_i=b.f_inner,
                       Ep=b.E_prime, Ry_i=b.f_inner * D / (2 * b.f_inner - 1),
                       Ry_o=b.f_outer * D / (2 * b.f_outer - 1), mass=m, J=m * D * D / 10.0)
-        return _Model(**{**model.__dict__, "cheb": _stiffness_fit(model)})
+        psi = b.azimuths(0.0)
+        return _Model(**{**model.__dict__, "cheb": _stiffness_fit(model), "rho": D / model.dm,
+                         "cp": np.cos(psi), "sp": np.sin(psi)})
 
 
 def _stiffness_exact(model, ci, co):
@@ -366,8 +371,11 @@ def _stiffness(model, ai, ao):
     if fi is None or fo is None:
         return _stiffness_exact(model, np.cos(ai), np.cos(ao))
     # T_k(cos a) = cos(k a): the series is a cosine series in the angle itself
-    return (np.cos(np.multiply.outer(ai, np.arange(fi.size))) @ fi,
-            np.cos(np.multiply.outer(ao, np.arange(fo.size))) @ fo)
+    return (np.cos(np.multiply.outer(ai, _ARANGE[:fi.size])) @ fi,
+            np.cos(np.multiply.outer(ao, _ARANGE[:fo.size])) @ fo)
+
+
+_ARANGE = np.arange(81.0)
 
 
 def _lambdas(outer, gyro):
@@ -388,58 +396,71 @@ _EDGE = float(np.nextafter(0.5 * np.pi, 0.0))
 
 def _smoothstep(t):
     """0 for t <= 0, 1 for t >= 1, 3t^2 - 2t^3 between (continuous slope) [-]."""
-    t = np.clip(t, 0.0, 1.0)
+    t = np.minimum(np.maximum(t, 0.0), 1.0)
     return t * t * (3.0 - 2.0 * t)
 
 
 class _Balls:
-    """Per-ball state: geometry, loads, kinematics, residuals and ring contributions."""
+    """Per-ball state: geometry, loads, kinematics, residuals and ring contributions.
 
-    def __init__(self, model, psi, X1, X2, u, wi, wo, outer, gyro, static,
+    Arrays X1, X2 have shape (..., Z) and u shape (..., 5): several states at once (the
+    Jacobian evaluates all its perturbed states in one batch).  Written for few NumPy
+    calls per state (the solver spends its time here): terms that vanish exactly (no
+    tilt, no inner-controlled ball) are skipped, which changes no value."""
+
+    def __init__(self, model, X1, X2, u, wi, wo, outer, gyro, static,
                  orbital="ball", wc_fixed=None):
-        # (arrays: X1, X2 (..., Z), u (..., 5): several states at once for the Jacobian)
         m = model
-        cp, sp = np.cos(psi), np.sin(psi)
+        cp, sp = m.cp, m.sp
         u = np.asarray(u, float)
-        U = [u[..., k:k + 1] for k in range(5)]
-        self.A1 = m.A * m.sbf + U[0] + m.Ri * (U[3] * sp - U[4] * cp)
-        self.A2 = m.A * m.cbf + U[1] * cp + U[2] * sp
+        if u.ndim == 1:                          # (plain floats: cheaper than (1,) arrays)
+            u0, u1, u2, u3, u4 = (float(v) for v in u)
+            tilt, off = u3 != 0.0 or u4 != 0.0, u2 != 0.0
+        else:
+            u0, u1, u2, u3, u4 = (u[..., k:k + 1] for k in range(5))
+            tilt, off = bool(np.any(u[..., 3:])), bool(np.any(u2))
+        a1 = m.A * m.sbf + u0
+        self.A1 = (a1 + m.Ri * (u3 * sp - u4 * cp) if tilt
+                   else np.broadcast_to(a1, np.broadcast_shapes(np.shape(a1), cp.shape)))
+        self.A2 = m.A * m.cbf + u1 * cp + u2 * sp if off else m.A * m.cbf + u1 * cp
+        A1, A2 = self.A1, self.A2
         if static:
             # zero speed: ball on the line of centres, deflection shared by stiffness
-            s = np.hypot(self.A1, self.A2)
-            a = np.arctan2(self.A1, self.A2)
+            s = np.hypot(A1, A2)
+            a = np.arctan2(A1, A2)
             Ki, Ko = _stiffness(m, a, a)
             wo_ = Ko ** (-2.0 / 3.0) / (Ki ** (-2.0 / 3.0) + Ko ** (-2.0 / 3.0))
             lo_ = m.ro + wo_ * (s - m.A)
             # (a ball whose line of groove centres points past 90 deg is unloaded, as in
             # loaddist: it rests at the outer-groove bottom, clear of both races)
-            past = ~(self.A2 > 0)
+            past = ~(A2 > 0)
             self.X1s = np.where(past, 0.0, lo_ * np.sin(a))
             self.X2s = np.where(past, m.ro, lo_ * np.cos(a))
         self.X1, self.X2 = X1, X2
         lo = np.hypot(X1, X2)
-        e1, e2 = self.A1 - X1, self.A2 - X2
+        e1, e2 = A1 - X1, A2 - X2
         li = np.hypot(e1, e2)
         self.do = lo - m.ro
         self.di = li - m.ri
-        self.sao, self.cao = X1 / lo, X2 / lo
-        self.sai, self.cai = e1 / li, e2 / li
+        self.sao, self.cao = sao, cao = X1 / lo, X2 / lo
+        self.sai, self.cai = sai, cai = e1 / li, e2 / li
         self.ao = np.arctan2(X1, X2)
         self.ai = np.arctan2(e1, e2)
         # The grooves are half tori: a race touches the ball only where the line of
         # centres lies less than 90 deg from its groove bottom (e2 > 0 at the inner race,
         # X2 > 0 at the outer race); beyond that there is no ring material and the
         # contact carries nothing, as in the static model (loaddist._State).
-        self.on_i, self.on_o = e2 > 0, X2 > 0
+        on_i, on_o = e2 > 0, X2 > 0
         if static:
             # on the line of centres both contacts share its angle: the groove-centre
             # line itself must point outwards, as in loaddist (x > 0), so that round-off
             # at 90 deg cannot load one contact of a ball and not the other
-            self.on_i = self.on_i & (self.A2 > 0)
-            self.on_o = self.on_o & (self.A2 > 0)
+            on_i = on_i & (A2 > 0)
+            on_o = on_o & (A2 > 0)
+        self.on_i, self.on_o = on_i, on_o
         Ki, Ko = _stiffness(m, self.ai, self.ao)
-        self.Qi = np.where(self.on_i, Ki * np.maximum(self.di, 0.0) ** 1.5, 0.0)
-        self.Qo = np.where(self.on_o, Ko * np.maximum(self.do, 0.0) ** 1.5, 0.0)
+        self.Qi = Qi = np.where(on_i, Ki * np.maximum(self.di, 0.0) ** 1.5, 0.0)
+        self.Qo = Qo = np.where(on_o, Ko * np.maximum(self.do, 0.0) ** 1.5, 0.0)
         # An open contact has no contact angle: for the kinematics it takes the angle of
         # the line of groove centres, blended in over a deflection of 1e-5 D (loads there
         # are ~1 N or less) so that the equations stay continuous.
@@ -447,30 +468,42 @@ class _Balls:
         # of a ring displaced by more than A cos(beta_f) does not get an angle near pi)
         # These kinematic angles set only the speeds; the forces act along the
         # mechanical angles ai, ao (|ai|, |ao| < pi/2 wherever the contact is loaded).
-        base = np.arctan(self.A1 / np.where(self.A2 == 0.0, 1e-300, self.A2))
+        base = np.arctan(A1 / np.where(A2 == 0.0, 1e-300, A2))
         d_ref = 1e-5 * m.D
-        self.wgt_i = np.where(self.on_i, _smoothstep(self.di / d_ref), 0.0)
-        self.wgt_o = np.where(self.on_o, _smoothstep(self.do / d_ref), 0.0)
-        self.ai_k = base + self.wgt_i * (np.where(self.on_i, self.ai, base) - base)
-        self.ao_k = base + self.wgt_o * (np.where(self.on_o, self.ao, base) - base)
+        self.wgt_i = wgt_i = np.where(on_i, _smoothstep(self.di / d_ref), 0.0)
+        self.wgt_o = wgt_o = np.where(on_o, _smoothstep(self.do / d_ref), 0.0)
+        self.ai_k = ai_k = base + wgt_i * (np.where(on_i, self.ai, base) - base)
+        self.ao_k = ao_k = base + wgt_o * (np.where(on_o, self.ao, base) - base)
         # kinematics (race control) at the current angles
-        rho = m.D / m.dm
+        rho = m.rho
         # a ball cannot be controlled by a race it does not touch: inner control fades
         # into outer control as the inner contact opens (same blend)
-        b_o = np.arctan2(np.sin(self.ao_k), np.cos(self.ao_k) + rho)
-        b_i = np.arctan2(np.sin(self.ai_k), np.cos(self.ai_k) - rho)
-        beta = np.where(outer, b_o, b_o + self.wgt_i * (b_i - b_o))
-        (self.beta, self.wc, self.wR, self.s_i, self.s_o,
-         self.r_i, self.r_o) = _kinematics_beta(rho, self.ai_k, self.ao_k, wi, wo, beta)
+        outer = np.asarray(outer, bool)
+        all_outer = bool(outer.all())
+        c_ao, c_ai = np.cos(ao_k), np.cos(ai_k)
+        b_o = np.arctan2(np.sin(ao_k), c_ao + rho)
+        if all_outer:
+            beta = b_o
+        else:
+            b_i = np.arctan2(np.sin(ai_k), c_ai - rho)
+            beta = np.where(outer, b_o, b_o + wgt_i * (b_i - b_o))
+        self.beta = beta
+        # race-control kinematics (kinematics._kinematics_beta, the speeds only)
+        co = np.cos(ao_k - beta)
+        A_o = (1.0 + rho * c_ao) / co
+        A_i = (1.0 - rho * c_ai) / np.cos(ai_k - beta)
+        wc = (wi * A_i + wo * A_o) / (A_i + A_o)
+        self.wR = (wo - wc) * A_o / rho
+        self.wc = wc
         if orbital == "cage":
             # One cage: every ball orbits at the cage speed, the mean of the balls'
             # kinematic orbital speeds weighted by Q_i Q_o / (Q_i + Q_o) (balls with an
             # open contact do not drive the cage); each ball rolls without slip on its
             # controlling race at that speed (H&D 1981 eqs. 3.76-3.77 with omega_c given).
-            q = np.where(self.Qi + self.Qo > 0,
-                         self.Qi * self.Qo / np.where(self.Qi + self.Qo > 0,
-                                                      self.Qi + self.Qo, 1.0), 0.0)
-            self.num, self.den = q * np.where(q > 0, self.wc, 0.0), q
+            sQ = Qi + Qo
+            pos = sQ > 0
+            q = np.where(pos, Qi * Qo / np.where(pos, sQ, 1.0), 0.0)
+            self.num, self.den = q * np.where(q > 0, wc, 0.0), q
             sq = np.sum(q, axis=-1, keepdims=True)
             wc = np.where(sq > 0, np.sum(self.num, axis=-1, keepdims=True)
                           / np.where(sq > 0, sq, 1.0),
@@ -479,36 +512,55 @@ class _Balls:
             if wc_fixed is not None:      # (Jacobian: hold the cage speed; nan: do not)
                 wf = np.asarray(wc_fixed, float)
                 wc = np.where(np.isnan(wf), wc, wf)
-            self.wc = np.broadcast_to(wc, self.Qi.shape).astype(float)
-            self.wc_cage = np.mean(self.wc, axis=-1)
-            wR_o = (wo - self.wc) * (1.0 + rho * np.cos(self.ao_k)) / (
-                rho * np.cos(self.ao_k - b_o))
-            wR_i = (self.wc - wi) * (1.0 - rho * np.cos(self.ai_k)) / (
-                rho * np.cos(self.ai_k - b_i))
-            self.wR = np.where(outer, wR_o, wR_o + self.wgt_i * (wR_i - wR_o))
-        self.Fc = m.mass * (m.Roc + X2) * self.wc**2              # (1/2) m d_orbit wc^2
-        self.Mg = m.J * self.wR * self.wc * np.sin(self.beta)      # H&D eq. 3.108
+            self.wc = wc = np.broadcast_to(wc, Qi.shape).astype(float)
+            self.wc_cage = np.mean(wc, axis=-1)
+            # (cos(ao_k - b_o) is co where beta = b_o)
+            wR_o = (wo - wc) * (1.0 + rho * c_ao) / (
+                rho * (co if all_outer else np.cos(ao_k - b_o)))
+            if all_outer:
+                self.wR = wR_o
+            else:
+                wR_i = (wc - wi) * (1.0 - rho * c_ai) / (rho * np.cos(ai_k - b_i))
+                self.wR = np.where(outer, wR_o, wR_o + wgt_i * (wR_i - wR_o))
+        self.Fc = Fc = m.mass * (m.Roc + X2) * wc**2              # (1/2) m d_orbit wc^2
+        self.Mg = Mg = m.J * self.wR * wc * np.sin(beta)           # H&D eq. 3.108
         if gyro == "none":                      # (reported, not in the equilibrium)
-            li_, lo_ = np.zeros_like(self.Fc), np.zeros_like(self.Fc)
+            li_ = lo_ = np.zeros_like(Fc)
         else:
             li_, lo_ = _lambdas(outer, gyro)
             # no friction without a normal load: an open contact passes its share on
-            li_ = self.wgt_i * li_
-            lo_ = self.wgt_o * (2.0 - li_)
+            li_ = wgt_i * li_
+            lo_ = wgt_o * (2.0 - li_)
         self.lam_i, self.lam_o = li_, lo_
-        gi, go = li_ * self.Mg / m.D, lo_ * self.Mg / m.D
+        gi, go = li_ * Mg / m.D, lo_ * Mg / m.D
         # ball equilibrium (H&D eqs. 3.104-3.105; Harris 2001 ch. 25)
         if static:
-            self.R = np.stack([X1 - self.X1s, X2 - self.X2s], axis=-1)
+            self.R1, self.R2 = X1 - self.X1s, X2 - self.X2s
         else:
-            R1 = self.Qi * self.sai - self.Qo * self.sao - gi * self.cai + go * self.cao
-            R2 = self.Qi * self.cai - self.Qo * self.cao + gi * self.sai - go * self.sao + self.Fc
-            self.R = np.stack([R1, R2], axis=-1)
-        # forces on the inner ring (H&D eqs. 3.111-3.112, five DOFs)
-        T = self.Qi * self.sai - gi * self.cai
-        P = self.Qi * self.cai + gi * self.sai
-        Mt = m.Ri * T + m.f_i * li_ * self.Mg
-        self.C = np.stack([T, P * cp, P * sp, Mt * sp, -Mt * cp], axis=-1)
+            self.R1 = Qi * sai - Qo * sao - gi * cai + go * cao
+            self.R2 = Qi * cai - Qo * cao + gi * sai - go * sao + Fc
+        # forces on the inner ring (H&D eqs. 3.111-3.112, five DOFs): axial T, radial P,
+        # moment Mt about the groove centre's circle
+        self.T = Qi * sai - gi * cai
+        self.P = Qi * cai + gi * sai
+        self.Mt = m.Ri * self.T + m.f_i * li_ * Mg
+        self._cp, self._sp = cp, sp
+
+    def ring(self, free):
+        """Per-ball forces on the inner ring in the DOFs ``free``, shape (..., Z, nf)."""
+        cols = {0: lambda: self.T, 1: lambda: self.P * self._cp, 2: lambda: self.P * self._sp,
+                3: lambda: self.Mt * self._sp, 4: lambda: -self.Mt * self._cp}
+        return np.stack([cols[int(k)]() for k in free], axis=-1)
+
+    @property
+    def C(self):
+        """Per-ball forces on the inner ring (Fa, Fy, Fz, My, Mz), shape (..., Z, 5)."""
+        return self.ring(range(5))
+
+    @property
+    def R(self):
+        """Ball residuals (axial, radial), shape (..., Z, 2)."""
+        return np.stack([self.R1, self.R2], axis=-1)
 
 
 # =========================================================================== result
@@ -717,12 +769,12 @@ class _System:
 
     def balls(self, x, wc_fixed=None):
         X1, X2, u = self.unpack(x)
-        return _Balls(self.m, self.psi, X1, X2, u, self.wi, self.wo, self.outer, self.gyro,
+        return _Balls(self.m, X1, X2, u, self.wi, self.wo, self.outer, self.gyro,
                       self.static, self.orbital, wc_fixed)
 
     def residual(self, b):
-        ring = self.L[self.free] - b.C.sum(axis=-2)[..., self.free]
-        return np.concatenate([b.R[..., 0], b.R[..., 1], ring], axis=-1)
+        ring = self.L[self.free] - b.ring(self.free).sum(axis=-2)
+        return np.concatenate([b.R1, b.R2, ring], axis=-1)
 
     def scaled(self, r):
         Z = self.Z
@@ -739,55 +791,64 @@ class _System:
         # the difference never straddles the contact edge (delta^1.5 is not smooth at 0)
         if b0 is None:
             b0 = self.balls(x)
-        d = np.minimum(np.abs(b0.di), np.abs(b0.do))
+        d = 1e-2 * np.minimum(np.abs(b0.di), np.abs(b0.do))
         hmax, hmin = 1e-9 * self.m.D, 1e-12 * self.m.D
-        hb = np.clip(1e-2 * d, hmin, hmax)
-        h = float(np.clip(np.min(1e-2 * d), hmin, hmax))
-        idx = np.arange(Z)
+        hb = np.minimum(np.maximum(d, hmin), hmax)
+        h = min(max(float(np.min(d)), hmin), hmax)
         # one cage speed couples all balls: hold it fixed for the per-ball blocks and add
         # the rank-one coupling d(residual)/d(omega_c) x d(omega_c)/dX afterwards
         cage = self.orbital == "cage" and not self.static
         X1, X2, u = self.unpack(x)
         N = 4 + 2 * cage + 2 * nf
-        X1s, X2s = np.tile(X1, (N, 1)), np.tile(X2, (N, 1))
-        us = np.tile(u, (N, 1))
-        wcf = np.full((N, 1), np.nan)
+        X1s, X2s, us = np.empty((N, Z)), np.empty((N, Z)), np.empty((N, 5))
+        X1s[:], X2s[:], us[:] = X1, X2, u
         X1s[0] += hb
         X1s[1] -= hb
         X2s[2] += hb
         X2s[3] -= hb
+        wcf = None
         if cage:
+            wcf = np.full((N, 1), np.nan)
             wc0 = float(b0.wc_cage)
             hw = 1e-7 * max(abs(wc0), abs(self.wi), abs(self.wo), 1e-300)
             wcf[:4] = wc0
-            wcf[4:6] = [[wc0 + hw], [wc0 - hw]]
+            wcf[4, 0], wcf[5, 0] = wc0 + hw, wc0 - hw
         k0 = 4 + 2 * cage
         hu = h / self.u_sc
-        for j in range(nf):
-            us[k0 + 2 * j, self.free[j]] += hu[j]
-            us[k0 + 2 * j + 1, self.free[j]] -= hu[j]
-        B = _Balls(self.m, self.psi, X1s, X2s, us, self.wi, self.wo, self.outer, self.gyro,
+        rows = np.arange(k0, N, 2)
+        us[rows, self.free] += hu
+        us[rows + 1, self.free] -= hu
+        B = _Balls(self.m, X1s, X2s, us, self.wi, self.wo, self.outer, self.gyro,
                    self.static, self.orbital, wcf)
-        R, C = B.R, B.C[..., self.free]
+        R1, R2, C = B.R1, B.R2, B.ring(self.free)          # (N, Z), (N, Z), (N, Z, nf)
+        inv = 0.5 / hb
+        idx = np.arange(Z)
+        J[idx, idx] = (R1[0] - R1[1]) * inv
+        J[Z + idx, idx] = (R2[0] - R2[1]) * inv
+        J[idx, Z + idx] = (R1[2] - R1[3]) * inv
+        J[Z + idx, Z + idx] = (R2[2] - R2[3]) * inv
+        J[2 * Z:, :Z] = ((C[1] - C[0]) * inv[:, None]).T
+        J[2 * Z:, Z:2 * Z] = ((C[3] - C[2]) * inv[:, None]).T
         if cage:
-            rw = (R[4] - R[5]) / (2 * hw)                      # (Z, 2)
-            cw = (C[4] - C[5]).sum(axis=0) / (2 * hw)          # (nf,)
             den = np.sum(b0.den)
-        for k in (0, 1):
-            p, q = 2 * k, 2 * k + 1
-            dR = (R[p] - R[q]) / (2 * hb[:, None])             # (Z, 2)
-            dC = (C[p] - C[q]) / (2 * hb[:, None])             # (Z, nf)
-            J[idx, k * Z + idx] = dR[:, 0]
-            J[Z + idx, k * Z + idx] = dR[:, 1]
-            J[2 * Z:, k * Z:(k + 1) * Z] = -dC.T
-            if cage and den > 0:
-                g = ((B.num[p] - B.num[q]) - wc0 * (B.den[p] - B.den[q])) / (2 * hb * den)
-                J[:Z, k * Z:(k + 1) * Z] += np.outer(rw[:, 0], g)
-                J[Z:2 * Z, k * Z:(k + 1) * Z] += np.outer(rw[:, 1], g)
-                J[2 * Z:, k * Z:(k + 1) * Z] -= np.outer(cw, g)
+            if den > 0:
+                iw = 0.5 / hw
+                rw1, rw2 = (R1[4] - R1[5]) * iw, (R2[4] - R2[5]) * iw    # (Z,)
+                cw = (C[4] - C[5]).sum(axis=0) * iw                      # (nf,)
+                num, dn = B.num, B.den
+                g = np.concatenate([(num[0] - num[1]) - wc0 * (dn[0] - dn[1]),
+                                    (num[2] - num[3]) - wc0 * (dn[2] - dn[3])]) \
+                    * np.concatenate([inv, inv]) / den                   # (2Z,)
+                J[:Z, :2 * Z] += np.outer(rw1, g)
+                J[Z:2 * Z, :2 * Z] += np.outer(rw2, g)
+                J[2 * Z:, :2 * Z] -= np.outer(cw, g)
         if nf:
-            res = self.residual(B)[k0:]
-            J[:, 2 * Z:] = ((res[0::2] - res[1::2]) / (2 * hu[:, None])).T
+            r1, r2 = R1[k0:], R2[k0:]
+            ring = -C[k0:].sum(axis=1)                                   # (2 nf, nf)
+            ihu = 0.5 / hu
+            J[:Z, 2 * Z:] = ((r1[0::2] - r1[1::2]) * ihu[:, None]).T
+            J[Z:2 * Z, 2 * Z:] = ((r2[0::2] - r2[1::2]) * ihu[:, None]).T
+            J[2 * Z:, 2 * Z:] = ((ring[0::2] - ring[1::2]) * ihu[:, None]).T
         return J
 
 
@@ -840,7 +901,7 @@ def _start(model, psi, u, wi, wo, free, static):
     """Starting ball positions from ring displacements u (static line of centres)."""
     Z = model.Z
     x = np.concatenate([np.zeros(2 * Z), u[free]])
-    b = _Balls(model, psi, np.zeros(Z), np.full(Z, model.ro), u, 0.0, 0.0, np.ones(Z, bool),
+    b = _Balls(model, np.zeros(Z), np.full(Z, model.ro), u, 0.0, 0.0, np.ones(Z, bool),
                "none", True)
     X1, X2 = b.X1s.copy(), b.X2s.copy()
     if not static:
