@@ -304,6 +304,7 @@ class _Model:
     rho: float = 0.0
     cp: object = None          # cos, sin of the ball azimuths psi_j (BallBearing.azimuths(0))
     sp: object = None
+    zero: object = None        # zeros, shape (Z,)
 
     @staticmethod
     @functools.lru_cache(maxsize=64)
@@ -324,7 +325,8 @@ class _Model:
                       Ry_o=b.f_outer * D / (2 * b.f_outer - 1), mass=m, J=m * D * D / 10.0)
         psi = b.azimuths(0.0)
         return _Model(**{**model.__dict__, "cheb": _stiffness_fit(model), "rho": D / model.dm,
-                         "cp": np.cos(psi), "sp": np.sin(psi)})
+                         "cp": np.cos(psi), "sp": np.sin(psi),
+                         "zero": np.zeros(b.n_balls)})
 
 
 def _stiffness_exact(model, ci, co):
@@ -420,8 +422,7 @@ class _Balls:
             u0, u1, u2, u3, u4 = (u[..., k:k + 1] for k in range(5))
             tilt, off = bool(np.any(u[..., 3:])), bool(np.any(u2))
         a1 = m.A * m.sbf + u0
-        self.A1 = (a1 + m.Ri * (u3 * sp - u4 * cp) if tilt
-                   else np.broadcast_to(a1, np.broadcast_shapes(np.shape(a1), cp.shape)))
+        self.A1 = a1 + m.Ri * (u3 * sp - u4 * cp) if tilt else a1 + m.zero
         self.A2 = m.A * m.cbf + u1 * cp + u2 * sp if off else m.A * m.cbf + u1 * cp
         A1, A2 = self.A1, self.A2
         if static:
@@ -504,16 +505,16 @@ class _Balls:
             pos = sQ > 0
             q = np.where(pos, Qi * Qo / np.where(pos, sQ, 1.0), 0.0)
             self.num, self.den = q * np.where(q > 0, wc, 0.0), q
-            sq = np.sum(q, axis=-1, keepdims=True)
-            wc = np.where(sq > 0, np.sum(self.num, axis=-1, keepdims=True)
+            sq = q.sum(axis=-1, keepdims=True)
+            wc = np.where(sq > 0, self.num.sum(axis=-1, keepdims=True)
                           / np.where(sq > 0, sq, 1.0),
                           # no ball drives: classical value
                           0.5 * (wi * (1 - rho * np.cos(base)) + wo * (1 + rho * np.cos(base))))
             if wc_fixed is not None:      # (Jacobian: hold the cage speed; nan: do not)
                 wf = np.asarray(wc_fixed, float)
                 wc = np.where(np.isnan(wf), wc, wf)
-            self.wc = wc = np.broadcast_to(wc, Qi.shape).astype(float)
-            self.wc_cage = np.mean(wc, axis=-1)
+            self.wc = wc = wc + np.zeros(Qi.shape)
+            self.wc_cage = wc.sum(axis=-1) / m.Z
             # (cos(ao_k - b_o) is co where beta = b_o)
             wR_o = (wo - wc) * (1.0 + rho * c_ao) / (
                 rho * (co if all_outer else np.cos(ao_k - b_o)))
