@@ -106,9 +106,11 @@ from __future__ import annotations
 
 import functools
 import logging
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
+import scipy.linalg
 
 from . import hertz
 from ._checks import as_array, broadcast, check_choice, check_positive, check_range
@@ -551,7 +553,18 @@ class _Balls:
         """Per-ball forces on the inner ring in the DOFs ``free``, shape (..., Z, nf)."""
         cols = {0: lambda: self.T, 1: lambda: self.P * self._cp, 2: lambda: self.P * self._sp,
                 3: lambda: self.Mt * self._sp, 4: lambda: -self.Mt * self._cp}
+        if len(free) == 0:
+            return np.zeros(self.T.shape + (0,))
         return np.stack([cols[int(k)]() for k in free], axis=-1)
+
+    def row(self, k):
+        """State k of a batch of states."""
+        new = object.__new__(_Balls)
+        for name, v in vars(self).items():
+            new.__dict__[name] = v[k] if isinstance(v, np.ndarray) and v.ndim >= 2 else v
+        if "wc_cage" in new.__dict__:
+            new.wc_cage = self.wc_cage[k]
+        return new
 
     @property
     def C(self):
@@ -779,7 +792,16 @@ class _System:
 
     def scaled(self, r):
         Z = self.Z
-        return np.concatenate([r[:2 * Z] * self.ball_sc, r[2 * Z:] * self.load_sc])
+        return np.concatenate([r[..., :2 * Z] * self.ball_sc, r[..., 2 * Z:] * self.load_sc],
+                              axis=-1)
+
+    def balls_rows(self, X):
+        """States of the rows of X (k, 2Z + nf) in one batch."""
+        Z = self.Z
+        u = np.zeros((X.shape[0], 5))
+        u[:, self.free] = X[:, 2 * Z:]
+        return _Balls(self.m, X[:, :Z], X[:, Z:2 * Z], u, self.wi, self.wo, self.outer,
+                      self.gyro, self.static, self.orbital)
 
     def jacobian(self, x, b0=None):
         """Central differences: all balls' X1 (then X2) at once, then each ring DOF; all
@@ -858,44 +880,109 @@ def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39):
 
     Stops (unconverged) when the line search needs a step below ``min_step``, or steps
     below 1/32 in 5 successive iterations (stalled: the Newton direction does not
-    describe the residual, e.g. at the kinks of the contact law or of the blends)."""
+    describe the residual, e.g. at the kinks of the contact law or of the blends).
+
+    The line search tries the full step alone, then the halved steps 1/2 ... 1/64 in one
+    batch (and so on), taking the longest that decreases the merit enough: the steps of
+    a plain backtracking search, for fewer evaluations.  Where Newton converges
+    quadratically (a full step from a residual below _CHORD_START that reduced it
+    tenfold), the next step reuses the last factorised Jacobian (a chord step) as long as
+    that reduces the residual by _CHORD_RATE or more; chord steps are counted in the
+    iterations returned but not against ``max_iter``."""
     b = sysm.balls(x)
-    r = sysm.scaled(sysm.residual(b))
-    err = np.max(np.abs(r))
-    it = 0
+    r_raw = sysm.residual(b)
+    r = sysm.scaled(r_raw)
+    err = float(np.max(np.abs(r)))
+    it = chord = 0
     step_cap = 0.05 * sysm.m.D
     short = 0
+    lu = None
+    Z = sysm.Z
     while err > rtol and it < max_iter and short < 5:
+        if lu is not None:
+            # chord step: the Jacobian of the last Newton iteration
+            dx = scipy.linalg.lu_solve(lu, -r_raw, check_finite=False)
+            lu = None
+            if np.all(np.isfinite(dx)) and _step_size(sysm, dx) <= step_cap:
+                xn = x + dx
+                bn = sysm.balls(xn)
+                rn_raw = sysm.residual(bn)
+                rn = sysm.scaled(rn_raw)
+                en = float(np.max(np.abs(rn)))
+                if np.isfinite(en) and en <= _CHORD_RATE * err:
+                    chord += 1
+                    x, b, r, r_raw, err = xn, bn, rn, rn_raw, en
+                    lu = lu_last
+                    log.debug("highspeed: chord step, scaled residual %.3e", err)
+                    continue
         it += 1
         J = sysm.jacobian(x, b)
-        r_raw = sysm.residual(b)
-        try:
-            dx = np.linalg.solve(J, -r_raw)
-            if not np.all(np.isfinite(dx)):
-                raise np.linalg.LinAlgError
-        except np.linalg.LinAlgError:
+        dx = None
+        if np.all(np.isfinite(J)):
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", scipy.linalg.LinAlgWarning)
+                fac = scipy.linalg.lu_factor(J, check_finite=False)
+            if np.all(np.diagonal(fac[0]) != 0.0):
+                dx = scipy.linalg.lu_solve(fac, -r_raw, check_finite=False)
+                if not np.all(np.isfinite(dx)):
+                    dx = None
+        if dx is None:                                   # singular: least squares
+            fac = None
             dx = np.linalg.lstsq(J, -r_raw, rcond=1e-14)[0]
-        big = np.max(np.abs(dx[:2 * sysm.Z]), initial=0.0)
-        big = max(big, np.max(np.abs(dx[2 * sysm.Z:] * sysm.u_sc), initial=0.0))
+        big = _step_size(sysm, dx)
         if big > step_cap:
             dx *= step_cap / big
         f0 = 0.5 * float(r @ r)
+        # line search: t = 1, then 1/2 ... 1/64 in one batch, and so on
         t = 1.0
-        while t >= min_step:
-            xn = x + t * dx
-            bn = sysm.balls(xn)
-            rn = sysm.scaled(sysm.residual(bn))
-            if np.all(np.isfinite(rn)) and 0.5 * float(rn @ rn) <= (1.0 - 1e-4 * t) * f0:
+        xn = x + dx
+        bn = sysm.balls(xn)
+        rn_raw = sysm.residual(bn)
+        rn = sysm.scaled(rn_raw)
+        if not (np.all(np.isfinite(rn)) and 0.5 * float(rn @ rn) <= (1.0 - 1e-4) * f0):
+            t = 0.5
+            while t >= min_step:
+                ts = t * _HALVINGS
+                ts = ts[ts >= min_step]
+                X = x + ts[:, None] * dx
+                B = sysm.balls_rows(X)
+                R_raw = sysm.residual(B)
+                R = sysm.scaled(R_raw)
+                with np.errstate(invalid="ignore", over="ignore"):
+                    ok = np.all(np.isfinite(R), axis=1) & (
+                        0.5 * np.einsum("ij,ij->i", R, R) <= (1.0 - 1e-4 * ts) * f0)
+                if np.any(ok):
+                    j = int(np.argmax(ok))
+                    t, xn, bn, rn_raw, rn = ts[j], X[j], B.row(j), R_raw[j], R[j]
+                    break
+                t = 0.5 * ts[-1]
+            else:
+                log.debug("highspeed: line search failed at iteration %d (residual %.3e)",
+                          it, err)
                 break
-            t *= 0.5
-        else:
-            log.debug("highspeed: line search failed at iteration %d (residual %.3e)", it, err)
-            break
-        x, b, r = xn, bn, rn
+        en = float(np.max(np.abs(rn)))
+        if fac is not None and t == 1.0 and err < _CHORD_START and en < 0.1 * err:
+            lu = lu_last = fac
+        x, b, r, r_raw = xn, bn, rn, rn_raw
         short = short + 1 if t < 1.0 / 32 else 0
-        err = float(np.max(np.abs(r)))
+        err = en
         log.debug("highspeed: iteration %d, step %.3g, scaled residual %.3e", it, t, err)
-    return x, b, err, it
+    return x, b, err, it + chord
+
+
+#: Scaled residual below which a Newton iteration converging quadratically may be
+#: followed by chord steps (see :func:`_damped_newton`).
+_CHORD_START = 1e-3
+#: Residual reduction a chord step must reach to be followed by another (else Newton).
+_CHORD_RATE = 0.05
+_HALVINGS = 0.5 ** np.arange(6.0)
+
+
+def _step_size(sysm, dx):
+    """Largest ball or ring-point displacement of a Newton step [m]."""
+    Z = sysm.Z
+    big = np.max(np.abs(dx[:2 * Z]), initial=0.0)
+    return max(big, np.max(np.abs(dx[2 * Z:] * sysm.u_sc), initial=0.0))
 
 
 def _start(model, psi, u, wi, wo, free, static):
