@@ -106,7 +106,6 @@ from __future__ import annotations
 
 import functools
 import logging
-import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -422,7 +421,7 @@ class _Balls:
             tilt, off = u3 != 0.0 or u4 != 0.0, u2 != 0.0
         else:
             u0, u1, u2, u3, u4 = (u[..., k:k + 1] for k in range(5))
-            tilt, off = bool(np.any(u[..., 3:])), bool(np.any(u2))
+            tilt, off = bool(u[..., 3:].any()), bool(u2.any())
         a1 = m.A * m.sbf + u0
         self.A1 = a1 + m.Ri * (u3 * sp - u4 * cp) if tilt else a1 + m.zero
         self.A2 = m.A * m.cbf + u1 * cp + u2 * sp if off else m.A * m.cbf + u1 * cp
@@ -556,6 +555,15 @@ class _Balls:
         if len(free) == 0:
             return np.zeros(self.T.shape + (0,))
         return np.stack([cols[int(k)]() for k in free], axis=-1)
+
+    def ring_sum(self, free):
+        """Resultant of the ball forces on the inner ring in the DOFs ``free``, shape
+        (..., nf)."""
+        cp, sp = self._cp, self._sp
+        out = [self.T.sum(axis=-1) if k == 0 else self.P @ cp if k == 1 else
+               self.P @ sp if k == 2 else self.Mt @ sp if k == 3 else -(self.Mt @ cp)
+               for k in free]
+        return np.stack(out, axis=-1) if out else np.zeros(self.T.shape[:-1] + (0,))
 
     def row(self, k):
         """State k of a batch of states."""
@@ -765,6 +773,8 @@ class _System:
     def __init__(self, model, psi, L, free, wi, wo, gyro, static, F_ref, Q_ref,
                  orbital="cage"):
         self.m, self.psi, self.L, self.free = model, psi, L, free
+        self.Lf = L[free]
+        self.free_list = [int(k) for k in free]
         self.orbital = orbital
         self.wi, self.wo, self.gyro, self.static = wi, wo, gyro, static
         self.Z = model.Z
@@ -787,7 +797,7 @@ class _System:
                       self.static, self.orbital, wc_fixed)
 
     def residual(self, b):
-        ring = self.L[self.free] - b.ring(self.free).sum(axis=-2)
+        ring = self.Lf - b.ring_sum(self.free_list)
         return np.concatenate([b.R1, b.R2, ring], axis=-1)
 
     def scaled(self, r):
@@ -843,7 +853,7 @@ class _System:
         us[rows + 1, self.free] -= hu
         B = _Balls(self.m, X1s, X2s, us, self.wi, self.wo, self.outer, self.gyro,
                    self.static, self.orbital, wcf)
-        R1, R2, C = B.R1, B.R2, B.ring(self.free)          # (N, Z), (N, Z), (N, Z, nf)
+        R1, R2, C = B.R1, B.R2, B.ring(self.free_list)          # (N, Z), (N, Z), (N, Z, nf)
         inv = 0.5 / hb
         idx = np.arange(Z)
         J[idx, idx] = (R1[0] - R1[1]) * inv
@@ -901,9 +911,9 @@ def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39):
     while err > rtol and it < max_iter and short < 5:
         if lu is not None:
             # chord step: the Jacobian of the last Newton iteration
-            dx = scipy.linalg.lu_solve(lu, -r_raw, check_finite=False)
+            dx = _getrs(*lu, -r_raw)[0]
             lu = None
-            if np.all(np.isfinite(dx)) and _step_size(sysm, dx) <= step_cap:
+            if np.isfinite(dx).all() and _step_size(sysm, dx) <= step_cap:
                 xn = x + dx
                 bn = sysm.balls(xn)
                 rn_raw = sysm.residual(bn)
@@ -918,13 +928,12 @@ def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39):
         it += 1
         J = sysm.jacobian(x, b)
         dx = None
-        if np.all(np.isfinite(J)):
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore", scipy.linalg.LinAlgWarning)
-                fac = scipy.linalg.lu_factor(J, check_finite=False)
-            if np.all(np.diagonal(fac[0]) != 0.0):
-                dx = scipy.linalg.lu_solve(fac, -r_raw, check_finite=False)
-                if not np.all(np.isfinite(dx)):
+        if np.isfinite(J).all():
+            lu_, piv, info = _getrf(J)
+            fac = (lu_, piv)
+            if info == 0:                                # (info > 0: exactly singular)
+                dx = _getrs(lu_, piv, -r_raw)[0]
+                if not np.isfinite(dx).all():
                     dx = None
         if dx is None:                                   # singular: least squares
             fac = None
@@ -939,7 +948,7 @@ def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39):
         bn = sysm.balls(xn)
         rn_raw = sysm.residual(bn)
         rn = sysm.scaled(rn_raw)
-        if not (np.all(np.isfinite(rn)) and 0.5 * float(rn @ rn) <= (1.0 - 1e-4) * f0):
+        if not (np.isfinite(rn).all() and 0.5 * float(rn @ rn) <= (1.0 - 1e-4) * f0):
             t = 0.5
             while t >= min_step:
                 ts = t * _HALVINGS
@@ -976,6 +985,8 @@ _CHORD_START = 1e-3
 #: Residual reduction a chord step must reach to be followed by another (else Newton).
 _CHORD_RATE = 0.05
 _HALVINGS = 0.5 ** np.arange(6.0)
+# LAPACK LU factorisation and solve (what numpy.linalg.solve does, without its overhead)
+_getrf, _getrs = scipy.linalg.get_lapack_funcs(("getrf", "getrs"), (np.zeros((2, 2)),))
 
 
 def _step_size(sysm, dx):
