@@ -775,6 +775,7 @@ class _System:
         self.m, self.psi, self.L, self.free = model, psi, L, free
         self.Lf = L[free]
         self.free_list = [int(k) for k in free]
+        self._diag = None
         self.orbital = orbital
         self.wi, self.wo, self.gyro, self.static = wi, wo, gyro, static
         self.Z = model.Z
@@ -805,20 +806,20 @@ class _System:
         return np.concatenate([r[..., :2 * Z] * self.ball_sc, r[..., 2 * Z:] * self.load_sc],
                               axis=-1)
 
-    def balls_rows(self, X):
+    def balls_rows(self, X, wc_fixed=None):
         """States of the rows of X (k, 2Z + nf) in one batch."""
         Z = self.Z
         u = np.zeros((X.shape[0], 5))
         u[:, self.free] = X[:, 2 * Z:]
         return _Balls(self.m, X[:, :Z], X[:, Z:2 * Z], u, self.wi, self.wo, self.outer,
-                      self.gyro, self.static, self.orbital)
+                      self.gyro, self.static, self.orbital, wc_fixed)
 
     def jacobian(self, x, b0=None):
-        """Central differences: all balls' X1 (then X2) at once, then each ring DOF; all
-        perturbed states evaluated together in one batch."""
+        """Central differences: all balls' X1 (then X2) at once, the cage speed (held for
+        the others), then each ring DOF; all perturbed states evaluated together in one
+        batch, the differences taken and scaled for all of them at once."""
         Z, nf = self.Z, self.free.size
         n = 2 * Z + nf
-        J = np.zeros((n, n))
         # steps: 1e-9 D (1e-4 of the blend width 1e-5 D, so that the differences resolve
         # the blends to ~1e-8), but below 1 % of each contact's deflection or gap so that
         # the difference never straddles the contact edge (delta^1.5 is not smooth at 0)
@@ -827,62 +828,67 @@ class _System:
         d = 1e-2 * np.minimum(np.abs(b0.di), np.abs(b0.do))
         hmax, hmin = 1e-9 * self.m.D, 1e-12 * self.m.D
         hb = np.minimum(np.maximum(d, hmin), hmax)
-        h = min(max(float(np.min(d)), hmin), hmax)
+        h = min(max(float(d.min()), hmin), hmax)
         # one cage speed couples all balls: hold it fixed for the per-ball blocks and add
         # the rank-one coupling d(residual)/d(omega_c) x d(omega_c)/dX afterwards
         cage = self.orbital == "cage" and not self.static
-        X1, X2, u = self.unpack(x)
-        N = 4 + 2 * cage + 2 * nf
-        X1s, X2s, us = np.empty((N, Z)), np.empty((N, Z)), np.empty((N, 5))
-        X1s[:], X2s[:], us[:] = X1, X2, u
-        X1s[0] += hb
-        X1s[1] -= hb
-        X2s[2] += hb
-        X2s[3] -= hb
+        k0 = 4 + 2 * cage
+        N = k0 + 2 * nf
+        hu = h / self.u_sc
+        X = np.empty((N, n))
+        X[:] = x
+        X[0, :Z] += hb
+        X[1, :Z] -= hb
+        X[2, Z:2 * Z] += hb
+        X[3, Z:2 * Z] -= hb
+        ju = np.arange(nf)
+        X[k0 + 2 * ju, 2 * Z + ju] += hu
+        X[k0 + 1 + 2 * ju, 2 * Z + ju] -= hu
         wcf = None
+        # inverse steps 1/(2h) of the N/2 differences: X1, X2 per ball, cage, ring DOFs
+        inv = np.empty((N // 2, Z))
+        inv[0] = inv[1] = 0.5 / hb
+        inv[k0 // 2:] = (0.5 / hu)[:, None]
         if cage:
             wcf = np.full((N, 1), np.nan)
             wc0 = float(b0.wc_cage)
             hw = 1e-7 * max(abs(wc0), abs(self.wi), abs(self.wo), 1e-300)
             wcf[:4] = wc0
             wcf[4, 0], wcf[5, 0] = wc0 + hw, wc0 - hw
-        k0 = 4 + 2 * cage
-        hu = h / self.u_sc
-        rows = np.arange(k0, N, 2)
-        us[rows, self.free] += hu
-        us[rows + 1, self.free] -= hu
-        B = _Balls(self.m, X1s, X2s, us, self.wi, self.wo, self.outer, self.gyro,
-                   self.static, self.orbital, wcf)
-        R1, R2, C = B.R1, B.R2, B.ring(self.free_list)          # (N, Z), (N, Z), (N, Z, nf)
-        inv = 0.5 / hb
-        idx = np.arange(Z)
-        J[idx, idx] = (R1[0] - R1[1]) * inv
-        J[Z + idx, idx] = (R2[0] - R2[1]) * inv
-        J[idx, Z + idx] = (R1[2] - R1[3]) * inv
-        J[Z + idx, Z + idx] = (R2[2] - R2[3]) * inv
-        J[2 * Z:, :Z] = ((C[1] - C[0]) * inv[:, None]).T
-        J[2 * Z:, Z:2 * Z] = ((C[3] - C[2]) * inv[:, None]).T
+            inv[2] = 0.5 / hw
+        B = self.balls_rows(X, wcf)
+        C = B.ring(self.free_list)                                   # (N, Z, nf)
+        D1 = (B.R1[0::2] - B.R1[1::2]) * inv                         # (N/2, Z)
+        D2 = (B.R2[0::2] - B.R2[1::2]) * inv
+        DC = (C[0::2] - C[1::2]) * inv[:, :, None]                   # (N/2, Z, nf)
+        J = np.zeros((n, n))
+        Jf = J.reshape(-1)
+        Jf[self._diag_index()] = np.concatenate([D1[0], D2[0], D1[1], D2[1]])
+        J[2 * Z:, :2 * Z] = -DC[:2].transpose(2, 0, 1).reshape(nf, 2 * Z)
         if cage:
-            den = np.sum(b0.den)
+            den = float(b0.den.sum())
             if den > 0:
-                iw = 0.5 / hw
-                rw1, rw2 = (R1[4] - R1[5]) * iw, (R2[4] - R2[5]) * iw    # (Z,)
-                cw = (C[4] - C[5]).sum(axis=0) * iw                      # (nf,)
-                num, dn = B.num, B.den
-                g = np.concatenate([(num[0] - num[1]) - wc0 * (dn[0] - dn[1]),
-                                    (num[2] - num[3]) - wc0 * (dn[2] - dn[3])]) \
-                    * np.concatenate([inv, inv]) / den                   # (2Z,)
-                J[:Z, :2 * Z] += np.outer(rw1, g)
-                J[Z:2 * Z, :2 * Z] += np.outer(rw2, g)
-                J[2 * Z:, :2 * Z] -= np.outer(cw, g)
+                # d(omega_c)/dX of the Q_i Q_o/(Q_i + Q_o)-weighted mean
+                dnum = (B.num[0:4:2] - B.num[1:4:2]) * inv[:2]
+                dden = (B.den[0:4:2] - B.den[1:4:2]) * inv[:2]
+                g = ((dnum - wc0 * dden) / den).reshape(2 * Z)
+                col = np.concatenate([D1[2], D2[2], -DC[2].sum(axis=0)])
+                J[:, :2 * Z] += np.multiply.outer(col, g)
         if nf:
-            r1, r2 = R1[k0:], R2[k0:]
-            ring = -C[k0:].sum(axis=1)                                   # (2 nf, nf)
-            ihu = 0.5 / hu
-            J[:Z, 2 * Z:] = ((r1[0::2] - r1[1::2]) * ihu[:, None]).T
-            J[Z:2 * Z, 2 * Z:] = ((r2[0::2] - r2[1::2]) * ihu[:, None]).T
-            J[2 * Z:, 2 * Z:] = ((ring[0::2] - ring[1::2]) * ihu[:, None]).T
+            J[:Z, 2 * Z:] = D1[k0 // 2:].T
+            J[Z:2 * Z, 2 * Z:] = D2[k0 // 2:].T
+            J[2 * Z:, 2 * Z:] = -DC[k0 // 2:].sum(axis=1).T
         return J
+
+    def _diag_index(self):
+        """Flat indices of the per-ball 2 x 2 blocks in the Jacobian (d R1/d X1, d R2/d X1,
+        d R1/d X2, d R2/d X2 of every ball)."""
+        if self._diag is None:
+            Z, n = self.Z, 2 * self.Z + self.free.size
+            i = np.arange(Z)
+            self._diag = np.concatenate([i * n + i, (Z + i) * n + i, i * n + Z + i,
+                                         (Z + i) * n + Z + i])
+        return self._diag
 
 
 def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39):
