@@ -507,10 +507,14 @@ class _Balls:
             q = np.where(pos, Qi * Qo / np.where(pos, sQ, 1.0), 0.0)
             self.num, self.den = q * np.where(q > 0, wc, 0.0), q
             sq = q.sum(axis=-1, keepdims=True)
-            wc = np.where(sq > 0, self.num.sum(axis=-1, keepdims=True)
-                          / np.where(sq > 0, sq, 1.0),
-                          # no ball drives: classical value
-                          0.5 * (wi * (1 - rho * np.cos(base)) + wo * (1 + rho * np.cos(base))))
+            if (sq > 0).all():
+                wc = self.num.sum(axis=-1, keepdims=True) / sq
+            else:
+                wc = np.where(sq > 0, self.num.sum(axis=-1, keepdims=True)
+                              / np.where(sq > 0, sq, 1.0),
+                              # no ball drives: classical value
+                              0.5 * (wi * (1 - rho * np.cos(base))
+                                     + wo * (1 + rho * np.cos(base))))
             if wc_fixed is not None:      # (Jacobian: hold the cage speed; nan: do not)
                 wf = np.asarray(wc_fixed, float)
                 wc = np.where(np.isnan(wf), wc, wf)
@@ -526,26 +530,42 @@ class _Balls:
                 self.wR = np.where(outer, wR_o, wR_o + wgt_i * (wR_i - wR_o))
         self.Fc = Fc = m.mass * (m.Roc + X2) * wc**2              # (1/2) m d_orbit wc^2
         self.Mg = Mg = m.J * self.wR * wc * np.sin(beta)           # H&D eq. 3.108
+        # friction shares (the terms of a zero share are left out: same values)
         if gyro == "none":                      # (reported, not in the equilibrium)
             li_ = lo_ = np.zeros_like(Fc)
+            fric_i = fric_o = False
+        elif all_outer:                         # lambda_i = 0, lambda_o = 2 (both rules)
+            li_, lo_ = np.zeros_like(Fc), wgt_o * 2.0
+            fric_i, fric_o = False, True
         else:
             li_, lo_ = _lambdas(outer, gyro)
             # no friction without a normal load: an open contact passes its share on
             li_ = wgt_i * li_
             lo_ = wgt_o * (2.0 - li_)
+            fric_i = fric_o = True
         self.lam_i, self.lam_o = li_, lo_
-        gi, go = li_ * Mg / m.D, lo_ * Mg / m.D
         # ball equilibrium (H&D eqs. 3.104-3.105; Harris 2001 ch. 25)
+        R1 = Qi * sai - Qo * sao
+        R2 = Qi * cai - Qo * cao
+        self.T = Qi * sai
+        self.P = Qi * cai
+        if fric_i:
+            gi = li_ * Mg / m.D
+            R1 = R1 - gi * cai
+            R2 = R2 + gi * sai
+            self.T = self.T - gi * cai
+            self.P = self.P + gi * sai
+        if fric_o:
+            go = lo_ * Mg / m.D
+            R1 = R1 + go * cao
+            R2 = R2 - go * sao
         if static:
             self.R1, self.R2 = X1 - self.X1s, X2 - self.X2s
         else:
-            self.R1 = Qi * sai - Qo * sao - gi * cai + go * cao
-            self.R2 = Qi * cai - Qo * cao + gi * sai - go * sao + Fc
+            self.R1, self.R2 = R1, R2 + Fc
         # forces on the inner ring (H&D eqs. 3.111-3.112, five DOFs): axial T, radial P,
         # moment Mt about the groove centre's circle
-        self.T = Qi * sai - gi * cai
-        self.P = Qi * cai + gi * sai
-        self.Mt = m.Ri * self.T + m.f_i * li_ * Mg
+        self.Mt = m.Ri * self.T + m.f_i * li_ * Mg if fric_i else m.Ri * self.T
         self._cp, self._sp = cp, sp
 
     def ring(self, free):
