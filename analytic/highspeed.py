@@ -1007,9 +1007,9 @@ def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39):
 
 #: Scaled residual below which a Newton iteration converging quadratically may be
 #: followed by chord steps (see :func:`_damped_newton`).
-_CHORD_START = 1e-3
+_CHORD_START = 1e-2
 #: Residual reduction a chord step must reach to be followed by another (else Newton).
-_CHORD_RATE = 0.05
+_CHORD_RATE = 0.1
 _HALVINGS = 0.5 ** np.arange(6.0)
 # LAPACK LU factorisation and solve (what numpy.linalg.solve does, without its overhead)
 _getrf, _getrs = scipy.linalg.get_lapack_funcs(("getrf", "getrs"), (np.zeros((2, 2)),))
