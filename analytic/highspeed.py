@@ -795,7 +795,7 @@ class _System:
         self.m, self.psi, self.L, self.free = model, psi, L, free
         self.Lf = L[free]
         self.free_list = [int(k) for k in free]
-        self._diag = None
+        self._diag = self._rows = None
         self.orbital = orbital
         self.wi, self.wo, self.gyro, self.static = wi, wo, gyro, static
         self.Z = model.Z
@@ -804,6 +804,9 @@ class _System:
         self.load_sc = sc[free] / F_ref             # ring residual scale (moments / R_i)
         self.ball_sc = 1.0 / Q_ref if not static else 1.0 / (1e-4 * model.D)
         self.u_sc = np.where(free >= 3, model.Ri, 1.0)
+        # (residual and step scales as vectors over all unknowns)
+        self.res_sc = np.concatenate([np.full(2 * self.Z, self.ball_sc), self.load_sc])
+        self.step_sc = np.concatenate([np.ones(2 * self.Z), self.u_sc])
         self.outer = np.ones(model.Z, bool)
 
     def unpack(self, x):
@@ -822,9 +825,7 @@ class _System:
         return np.concatenate([b.R1, b.R2, ring], axis=-1)
 
     def scaled(self, r):
-        Z = self.Z
-        return np.concatenate([r[..., :2 * Z] * self.ball_sc, r[..., 2 * Z:] * self.load_sc],
-                              axis=-1)
+        return r * self.res_sc
 
     def balls_rows(self, X, wc_fixed=None):
         """States of the rows of X (k, 2Z + nf) in one batch."""
@@ -861,9 +862,9 @@ class _System:
         X[1, :Z] -= hb
         X[2, Z:2 * Z] += hb
         X[3, Z:2 * Z] -= hb
-        ju = np.arange(nf)
-        X[k0 + 2 * ju, 2 * Z + ju] += hu
-        X[k0 + 1 + 2 * ju, 2 * Z + ju] -= hu
+        rp, rm, cu = self._ring_rows(k0)
+        X[rp, cu] += hu
+        X[rm, cu] -= hu
         wcf = None
         # inverse steps 1/(2h) of the N/2 differences: X1, X2 per ball, cage, ring DOFs
         inv = np.empty((N // 2, Z))
@@ -900,6 +901,13 @@ class _System:
             J[2 * Z:, 2 * Z:] = -DC[k0 // 2:].sum(axis=1).T
         return J
 
+    def _ring_rows(self, k0):
+        """Rows (+h, -h) and columns of the ring-DOF perturbations in the Jacobian batch."""
+        if self._rows is None:
+            ju = np.arange(self.free.size)
+            self._rows = (k0 + 2 * ju, k0 + 1 + 2 * ju, 2 * self.Z + ju)
+        return self._rows
+
     def _diag_index(self):
         """Flat indices of the per-ball 2 x 2 blocks in the Jacobian (d R1/d X1, d R2/d X1,
         d R1/d X2, d R2/d X2 of every ball)."""
@@ -928,7 +936,7 @@ def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39):
     b = sysm.balls(x)
     r_raw = sysm.residual(b)
     r = sysm.scaled(r_raw)
-    err = float(np.max(np.abs(r)))
+    err = float(np.abs(r).max())
     it = chord = 0
     step_cap = 0.05 * sysm.m.D
     short = 0
@@ -944,7 +952,7 @@ def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39):
                 bn = sysm.balls(xn)
                 rn_raw = sysm.residual(bn)
                 rn = sysm.scaled(rn_raw)
-                en = float(np.max(np.abs(rn)))
+                en = float(np.abs(rn).max())
                 if np.isfinite(en) and en <= _CHORD_RATE * err:
                     chord += 1
                     x, b, r, r_raw, err = xn, bn, rn, rn_raw, en
@@ -995,7 +1003,7 @@ def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39):
                 log.debug("highspeed: line search failed at iteration %d (residual %.3e)",
                           it, err)
                 break
-        en = float(np.max(np.abs(rn)))
+        en = float(np.abs(rn).max())
         if fac is not None and t == 1.0 and err < _CHORD_START and en < 0.1 * err:
             lu = lu_last = fac
         x, b, r, r_raw = xn, bn, rn, rn_raw
@@ -1017,9 +1025,7 @@ _getrf, _getrs = scipy.linalg.get_lapack_funcs(("getrf", "getrs"), (np.zeros((2,
 
 def _step_size(sysm, dx):
     """Largest ball or ring-point displacement of a Newton step [m]."""
-    Z = sysm.Z
-    big = np.max(np.abs(dx[:2 * Z]), initial=0.0)
-    return max(big, np.max(np.abs(dx[2 * Z:] * sysm.u_sc), initial=0.0))
+    return float(np.abs(dx * sysm.step_sc).max())
 
 
 def _start(model, psi, u, wi, wo, free, static):
