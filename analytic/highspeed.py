@@ -89,7 +89,9 @@ M_g (it skids), or a cage speed outside the rolling range (:data:`CAGE_RATIO_RAN
 Solution: Newton on all 2Z + (free ring DOFs) unknowns at once, the Jacobian by central
 differences exploiting the block structure (ball residuals depend only on their own
 ball, the cage speed and the ring; ring residuals are sums over balls; all perturbed
-states evaluated in one batch), with a backtracking line search on the scaled residual.
+states evaluated in one batch), with a backtracking line search on the scaled residual
+(the halved steps evaluated in one batch) and, once Newton converges quadratically,
+chord steps that reuse the last factorised Jacobian.
 Starting values come from the static solution (:func:`ballrace.analytic.loaddist.solve`):
 loaded balls on their static line of centres, unloaded balls pressed by the centrifugal
 force onto the outer race as near its groove bottom as the inner race lets them.  If
@@ -114,7 +116,6 @@ import scipy.linalg
 from . import hertz
 from ._checks import as_array, broadcast, check_choice, check_positive, check_range
 from .bearing import BallBearing
-from .kinematics import _kinematics_beta
 from .loaddist import ConvergenceError
 
 __all__ = [
@@ -941,7 +942,6 @@ def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39):
     step_cap = 0.05 * sysm.m.D
     short = 0
     lu = None
-    Z = sysm.Z
     while err > rtol and it < max_iter and short < 5:
         if lu is not None:
             # chord step: the Jacobian of the last Newton iteration
