@@ -404,6 +404,39 @@ def _smoothstep(t):
     return t * t * (3.0 - 2.0 * t)
 
 
+def _groove_centres(m, u):
+    """Inner-groove curvature centres (A1, A2) of the balls [m] for ring displacements u
+    (..., 5) (H&D 1981 eqs. 3.93-3.95); shape (..., Z)."""
+    cp, sp = m.cp, m.sp
+    u = np.asarray(u, float)
+    if u.ndim == 1:                          # (plain floats: cheaper than (1,) arrays)
+        u0, u1, u2, u3, u4 = (float(v) for v in u)
+        tilt, off = u3 != 0.0 or u4 != 0.0, u2 != 0.0
+    else:
+        u0, u1, u2, u3, u4 = (u[..., k:k + 1] for k in range(5))
+        tilt, off = bool(u[..., 3:].any()), bool(u2.any())
+    # (terms of a zero displacement are left out: same values)
+    a1 = m.A * m.sbf + u0
+    A1 = a1 + m.Ri * (u3 * sp - u4 * cp) if tilt else a1 + m.zero
+    A2 = m.A * m.cbf + u1 * cp + u2 * sp if off else m.A * m.cbf + u1 * cp
+    return A1, A2
+
+
+def _static_positions(m, A1, A2):
+    """Ball centres (X1, X2) [m] of the zero-speed equilibrium for inner-groove centres
+    (A1, A2): on the line of centres, the deflection shared in the ratio of the contact
+    stiffnesses."""
+    s = np.hypot(A1, A2)
+    a = np.arctan2(A1, A2)
+    Ki, Ko = _stiffness(m, a, a)
+    wo_ = Ko ** (-2.0 / 3.0) / (Ki ** (-2.0 / 3.0) + Ko ** (-2.0 / 3.0))
+    lo_ = m.ro + wo_ * (s - m.A)
+    # (a ball whose line of groove centres points past 90 deg is unloaded, as in
+    # loaddist: it rests at the outer-groove bottom, clear of both races)
+    past = ~(A2 > 0)
+    return np.where(past, 0.0, lo_ * np.sin(a)), np.where(past, m.ro, lo_ * np.cos(a))
+
+
 class _Balls:
     """Per-ball state: geometry, loads, kinematics, residuals and ring contributions.
 
@@ -416,29 +449,9 @@ class _Balls:
                  orbital="ball", wc_fixed=None):
         m = model
         cp, sp = m.cp, m.sp
-        u = np.asarray(u, float)
-        if u.ndim == 1:                          # (plain floats: cheaper than (1,) arrays)
-            u0, u1, u2, u3, u4 = (float(v) for v in u)
-            tilt, off = u3 != 0.0 or u4 != 0.0, u2 != 0.0
-        else:
-            u0, u1, u2, u3, u4 = (u[..., k:k + 1] for k in range(5))
-            tilt, off = bool(u[..., 3:].any()), bool(u2.any())
-        a1 = m.A * m.sbf + u0
-        self.A1 = a1 + m.Ri * (u3 * sp - u4 * cp) if tilt else a1 + m.zero
-        self.A2 = m.A * m.cbf + u1 * cp + u2 * sp if off else m.A * m.cbf + u1 * cp
-        A1, A2 = self.A1, self.A2
+        self.A1, self.A2 = A1, A2 = _groove_centres(m, u)
         if static:
-            # zero speed: ball on the line of centres, deflection shared by stiffness
-            s = np.hypot(A1, A2)
-            a = np.arctan2(A1, A2)
-            Ki, Ko = _stiffness(m, a, a)
-            wo_ = Ko ** (-2.0 / 3.0) / (Ki ** (-2.0 / 3.0) + Ko ** (-2.0 / 3.0))
-            lo_ = m.ro + wo_ * (s - m.A)
-            # (a ball whose line of groove centres points past 90 deg is unloaded, as in
-            # loaddist: it rests at the outer-groove bottom, clear of both races)
-            past = ~(A2 > 0)
-            self.X1s = np.where(past, 0.0, lo_ * np.sin(a))
-            self.X2s = np.where(past, m.ro, lo_ * np.cos(a))
+            self.X1s, self.X2s = _static_positions(m, A1, A2)
         self.X1, self.X2 = X1, X2
         lo = np.hypot(X1, X2)
         e1, e2 = A1 - X1, A2 - X2
@@ -1032,12 +1045,11 @@ def _start(model, psi, u, wi, wo, free, static):
     """Starting ball positions from ring displacements u (static line of centres)."""
     Z = model.Z
     x = np.concatenate([np.zeros(2 * Z), u[free]])
-    b = _Balls(model, np.zeros(Z), np.full(Z, model.ro), u, 0.0, 0.0, np.ones(Z, bool),
-               "none", True)
-    X1, X2 = b.X1s.copy(), b.X2s.copy()
+    A1, A2 = _groove_centres(model, u)
+    X1, X2 = _static_positions(model, A1, A2)
     if not static:
         # unloaded (static) balls: on the outer race only, pressed by the centrifugal force
-        s = np.hypot(b.A1, b.A2)
+        s = np.hypot(A1, A2)
         unl = s <= model.A * (1.0 + 1e-9)
         if np.any(unl):
             wc = 0.5 * (wi * (1 - model.D / model.dm) + wo * (1 + model.D / model.dm))
@@ -1050,7 +1062,7 @@ def _start(model, psi, u, wi, wo, free, static):
             # contacts carry about F_c, and the ball is held in both directions.  (At
             # the bottom itself an angular-contact ball can overlap the inner race by up
             # to ~A sin(beta_f).)
-            a = np.arctan2(b.A1, b.A2)
+            a = np.arctan2(A1, A2)
             dc = (Fc / Ko[0]) ** (2.0 / 3.0)
             lo = model.ro + dc
             cphi = (lo**2 + s**2 - (model.ri + dc)**2) / (2.0 * lo * np.maximum(s, 1e-300))
@@ -1058,8 +1070,8 @@ def _start(model, psi, u, wi, wo, free, static):
             th = np.clip(0.0, a - phi, a + phi)
             # ... unless the inner race does not hold it at the bottom (contact open there,
             # or past the inner groove's edge)
-            e2 = b.A2 - lo
-            free_ = ~((e2 > 0) & (np.hypot(b.A1, e2) > model.ri))
+            e2 = A2 - lo
+            free_ = ~((e2 > 0) & (np.hypot(A1, e2) > model.ri))
             th = np.clip(np.where(free_, 0.0, th), -0.49 * np.pi, 0.49 * np.pi)
             X1 = np.where(unl, lo * np.sin(th), X1)
             X2 = np.where(unl, lo * np.cos(th), X2)
@@ -1438,7 +1450,8 @@ def _result(bearing, model, psi, sysm, x, b, L, wi, wo, outer, gyro, mu, iters, 
     loads = b.C.sum(axis=0)
     arrays = (b.Qi, b.Qo, b.ai_k, b.ao_k, b.di, b.do, b.X1, b.X2, b.Fc, b.Mg, b.wc, b.wR,
               b.beta, sr_i, sr_o, u, loads)
-    if not (all(np.all(np.isfinite(a)) for a in arrays) and res / F_ref <= max(1e-9, rtol)):
+    finite = np.isfinite(np.concatenate([np.ravel(a) for a in arrays])).all()
+    if not (finite and res / F_ref <= max(1e-9, rtol)):
         raise ConvergenceError(f"high-speed equilibrium: the solution is not finite or not "
                                f"balanced (relative residual {res / F_ref:.3e}) after {iters} "
                                "Newton iterations")
