@@ -682,7 +682,8 @@ class HighSpeedResult:
     relative_residual : float
         ``residual`` over the load scale (max applied load, Z F_c) [-].
     iterations : int
-        Newton iterations in total.
+        Newton iterations in total (chord steps, which reuse the last Jacobian,
+        included).
     gyroscopic : str
         Treatment of the gyroscopic moment.
     friction_coefficient : float or None
