@@ -111,7 +111,6 @@ import logging
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.linalg
 
 from . import hertz
 from ._checks import as_array, broadcast, check_choice, check_positive, check_range
@@ -956,6 +955,7 @@ def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39):
     step_cap = 0.05 * sysm.m.D
     short = 0
     lu = None
+    _getrf, _getrs = _lapack()
     while err > rtol and it < max_iter and short < 5:
         if lu is not None:
             # chord step: the Jacobian of the last Newton iteration
@@ -1033,8 +1033,14 @@ _CHORD_START = 1e-2
 #: Residual reduction a chord step must reach to be followed by another (else Newton).
 _CHORD_RATE = 0.1
 _HALVINGS = 0.5 ** np.arange(6.0)
-# LAPACK LU factorisation and solve (what numpy.linalg.solve does, without its overhead)
-_getrf, _getrs = scipy.linalg.get_lapack_funcs(("getrf", "getrs"), (np.zeros((2, 2)),))
+
+
+@functools.lru_cache(maxsize=1)
+def _lapack():
+    """LAPACK LU factorisation and solve, dgetrf and dgetrs (what numpy.linalg.solve
+    does, without its overhead); scipy.linalg is imported on first use."""
+    import scipy.linalg
+    return scipy.linalg.get_lapack_funcs(("getrf", "getrs"), (np.zeros((2, 2)),))
 
 
 def _step_size(sysm, dx):
