@@ -941,8 +941,9 @@ def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39):
     describe the residual, e.g. at the kinks of the contact law or of the blends).
 
     The line search tries the full step alone, then the halved steps 1/2 ... 1/64 in one
-    batch (and so on), taking the longest that decreases the merit enough: the steps of
-    a plain backtracking search, for fewer evaluations.  Where Newton converges
+    batch (and so on; after a shortened step, 1 ... 1/32 in one batch), taking the
+    longest that decreases the merit enough: the steps of a plain backtracking search,
+    for fewer evaluations.  Where Newton converges
     quadratically (a full step from a residual below _CHORD_START that reduced it
     tenfold), the next step reuses the last factorised Jacobian (a chord step) as long as
     that reduces the residual by _CHORD_RATE or more; chord steps are counted in the
@@ -955,6 +956,7 @@ def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39):
     step_cap = 0.05 * sysm.m.D
     short = 0
     lu = None
+    damped = False
     _getrf, _getrs = _lapack()
     while err > rtol and it < max_iter and short < 5:
         if lu is not None:
@@ -990,14 +992,17 @@ def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39):
         if big > step_cap:
             dx *= step_cap / big
         f0 = 0.5 * float(r @ r)
-        # line search: t = 1, then 1/2 ... 1/64 in one batch, and so on
+        # line search: t = 1, then 1/2 ... 1/64 in one batch, and so on (after a
+        # shortened step, 1 ... 1/32 in one batch at once)
         t = 1.0
-        xn = x + dx
-        bn = sysm.balls(xn)
-        rn_raw = sysm.residual(bn)
-        rn = sysm.scaled(rn_raw)
-        if not (np.isfinite(rn).all() and 0.5 * float(rn @ rn) <= (1.0 - 1e-4) * f0):
-            t = 0.5
+        if not damped:
+            xn = x + dx
+            bn = sysm.balls(xn)
+            rn_raw = sysm.residual(bn)
+            rn = sysm.scaled(rn_raw)
+        if damped or not (np.isfinite(rn).all()
+                          and 0.5 * float(rn @ rn) <= (1.0 - 1e-4) * f0):
+            t = 1.0 if damped else 0.5
             while t >= min_step:
                 ts = t * _HALVINGS
                 ts = ts[ts >= min_step]
@@ -1021,6 +1026,7 @@ def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39):
         if fac is not None and t == 1.0 and err < _CHORD_START and en < 0.1 * err:
             lu = lu_last = fac
         x, b, r, r_raw = xn, bn, rn, rn_raw
+        damped = t < 1.0
         short = short + 1 if t < 1.0 / 32 else 0
         err = en
         log.debug("highspeed: iteration %d, step %.3g, scaled residual %.3e", it, t, err)
