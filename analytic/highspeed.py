@@ -474,8 +474,15 @@ class _Balls:
             on_o = on_o & (A2 > 0)
         self.on_i, self.on_o = on_i, on_o
         Ki, Ko = _stiffness(m, self.ai, self.ao)
-        self.Qi = Qi = np.where(on_i, Ki * np.maximum(self.di, 0.0) ** 1.5, 0.0)
-        self.Qo = Qo = np.where(on_o, Ko * np.maximum(self.do, 0.0) ** 1.5, 0.0)
+        # every contact of the race closed beyond the blend (1e-5 D, below): the blend
+        # weights are 1 and the masks all true, so those terms are left out (same values)
+        d_ref = 1e-5 * m.D
+        full_i = bool((on_i & (self.di >= d_ref)).all())
+        full_o = bool((on_o & (self.do >= d_ref)).all())
+        self.Qi = Qi = (Ki * self.di ** 1.5 if full_i
+                        else np.where(on_i, Ki * np.maximum(self.di, 0.0) ** 1.5, 0.0))
+        self.Qo = Qo = (Ko * self.do ** 1.5 if full_o
+                        else np.where(on_o, Ko * np.maximum(self.do, 0.0) ** 1.5, 0.0))
         # An open contact has no contact angle: for the kinematics it takes the angle of
         # the line of groove centres, blended in over a deflection of 1e-5 D (loads there
         # are ~1 N or less) so that the equations stay continuous.
@@ -484,11 +491,18 @@ class _Balls:
         # These kinematic angles set only the speeds; the forces act along the
         # mechanical angles ai, ao (|ai|, |ao| < pi/2 wherever the contact is loaded).
         base = np.arctan(A1 / np.where(A2 == 0.0, 1e-300, A2))
-        d_ref = 1e-5 * m.D
-        self.wgt_i = wgt_i = np.where(on_i, _smoothstep(self.di / d_ref), 0.0)
-        self.wgt_o = wgt_o = np.where(on_o, _smoothstep(self.do / d_ref), 0.0)
-        self.ai_k = ai_k = base + wgt_i * (np.where(on_i, self.ai, base) - base)
-        self.ao_k = ao_k = base + wgt_o * (np.where(on_o, self.ao, base) - base)
+        if full_i:
+            self.wgt_i = wgt_i = np.ones_like(Qi)
+            self.ai_k = ai_k = base + (self.ai - base)
+        else:
+            self.wgt_i = wgt_i = np.where(on_i, _smoothstep(self.di / d_ref), 0.0)
+            self.ai_k = ai_k = base + wgt_i * (np.where(on_i, self.ai, base) - base)
+        if full_o:
+            self.wgt_o = wgt_o = np.ones_like(Qo)
+            self.ao_k = ao_k = base + (self.ao - base)
+        else:
+            self.wgt_o = wgt_o = np.where(on_o, _smoothstep(self.do / d_ref), 0.0)
+            self.ao_k = ao_k = base + wgt_o * (np.where(on_o, self.ao, base) - base)
         # kinematics (race control) at the current angles
         rho = m.rho
         # a ball cannot be controlled by a race it does not touch: inner control fades
@@ -516,9 +530,13 @@ class _Balls:
             # open contact do not drive the cage); each ball rolls without slip on its
             # controlling race at that speed (H&D 1981 eqs. 3.76-3.77 with omega_c given).
             sQ = Qi + Qo
-            pos = sQ > 0
-            q = np.where(pos, Qi * Qo / np.where(pos, sQ, 1.0), 0.0)
-            self.num, self.den = q * np.where(q > 0, wc, 0.0), q
+            if full_i and full_o:                # (all loaded: q > 0)
+                q = Qi * Qo / sQ
+                self.num, self.den = q * wc, q
+            else:
+                pos = sQ > 0
+                q = np.where(pos, Qi * Qo / np.where(pos, sQ, 1.0), 0.0)
+                self.num, self.den = q * np.where(q > 0, wc, 0.0), q
             sq = q.sum(axis=-1, keepdims=True)
             if (sq > 0).all():
                 wc = self.num.sum(axis=-1, keepdims=True) / sq
