@@ -490,7 +490,8 @@ class _Balls:
         # of a ring displaced by more than A cos(beta_f) does not get an angle near pi)
         # These kinematic angles set only the speeds; the forces act along the
         # mechanical angles ai, ao (|ai|, |ao| < pi/2 wherever the contact is loaded).
-        base = np.arctan(A1 / np.where(A2 == 0.0, 1e-300, A2))
+        z = A2 == 0.0
+        base = np.arctan(A1 / np.where(z, 1e-300, A2) if z.any() else A1 / A2)
         if full_i:
             self.wgt_i = wgt_i = np.ones_like(Qi)
             self.ai_k = ai_k = base + (self.ai - base)
@@ -538,7 +539,7 @@ class _Balls:
                 q = np.where(pos, Qi * Qo / np.where(pos, sQ, 1.0), 0.0)
                 self.num, self.den = q * np.where(q > 0, wc, 0.0), q
             sq = q.sum(axis=-1, keepdims=True)
-            if (sq > 0).all():
+            if (full_i and full_o) or (sq > 0).all():
                 wc = self.num.sum(axis=-1, keepdims=True) / sq
             else:
                 wc = np.where(sq > 0, self.num.sum(axis=-1, keepdims=True)
