@@ -615,7 +615,7 @@ class _Balls:
         out = [self.T.sum(axis=-1) if k == 0 else self.P @ cp if k == 1 else
                self.P @ sp if k == 2 else self.Mt @ sp if k == 3 else -(self.Mt @ cp)
                for k in free]
-        return np.stack(out, axis=-1) if out else np.zeros(self.T.shape[:-1] + (0,))
+        return np.array(out).T if out else np.zeros(self.T.shape[:-1] + (0,))
 
     def row(self, k):
         """State k of a batch of states."""
