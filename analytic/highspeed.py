@@ -1343,10 +1343,10 @@ def _equilibrium(model, psi, L, free, wi, wo, gyro, static, F_ref, Q_ref, orbita
             last = (sy, xn, bn)
             if s < 1.0:                         # tangent dx/ds = -J^-1 dR/ds
                 h = 1e-6
-                dR = (system(s + h).residual(system(s + h).balls(xn))
-                      - system(s - h).residual(system(s - h).balls(xn))) / (2 * h)
+                sp_, sm_ = system(s + h), system(s - h)
+                dR = (sp_.residual(sp_.balls(xn)) - sm_.residual(sm_.balls(xn))) / (2 * h)
                 try:
-                    tangent = np.linalg.solve(sy.jacobian(xn), -dR)
+                    tangent = np.linalg.solve(sy.jacobian(xn, bn), -dR)
                 except np.linalg.LinAlgError:
                     tangent = np.zeros_like(xn)
                 if not np.all(np.isfinite(tangent)):
