@@ -952,7 +952,7 @@ class _System:
         return self._diag
 
 
-def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39):
+def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39, chord_steps=True):
     """Damped Newton; returns (x, balls, scaled max residual, iterations).
 
     Stops (unconverged) when the line search needs a step below ``min_step``, or steps
@@ -966,7 +966,8 @@ def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39):
     quadratically (a full step from a residual below _CHORD_START that reduced it
     tenfold), the next step reuses the last factorised Jacobian (a chord step) as long as
     that reduces the residual by _CHORD_RATE or more; chord steps are counted in the
-    iterations returned but not against ``max_iter``."""
+    iterations returned but not against ``max_iter``.  ``chord_steps=False``: Newton
+    only (the continuation in speed, whose step control counts Newton iterations)."""
     b = sysm.balls(x)
     r_raw = sysm.residual(b)
     r = sysm.scaled(r_raw)
@@ -1042,7 +1043,8 @@ def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39):
                           it, err)
                 break
         en = float(np.abs(rn).max())
-        if fac is not None and t == 1.0 and err < _CHORD_START and en < 0.1 * err:
+        if (chord_steps and fac is not None and t == 1.0 and err < _CHORD_START
+                and en < 0.1 * err):
             lu = lu_last = fac
         x, b, r, r_raw = xn, bn, rn, rn_raw
         damped = t < 1.0
@@ -1333,8 +1335,9 @@ def _equilibrium(model, psi, L, free, wi, wo, gyro, static, F_ref, Q_ref, orbita
         sy = system(s_new)
         # from the predictor a step converges in a few full Newton steps; a step that
         # needs heavy damping or more iterations is halved instead
-        xn, bn, err, it = (_damped_newton(sy, xg, rtol, min(max_iter, 30)) if last is None
-                           else _damped_newton(sy, xg, rtol, min(max_iter, 12), 1.0 / 16))
+        xn, bn, err, it = (
+            _damped_newton(sy, xg, rtol, min(max_iter, 30), chord_steps=False) if last is None
+            else _damped_newton(sy, xg, rtol, min(max_iter, 12), 1.0 / 16, chord_steps=False))
         count[0] += it
         log.debug("highspeed: continuation to %.4g of the speed: %s after %d iterations",
                   s_new, "converged" if err <= rtol else f"failed ({err:.3e})", it)
