@@ -479,6 +479,7 @@ class _Balls:
         d_ref = 1e-5 * m.D
         full_i = bool((on_i & (self.di >= d_ref)).all())
         full_o = bool((on_o & (self.do >= d_ref)).all())
+        self.full = full_i and full_o
         self.Qi = Qi = (Ki * self.di ** 1.5 if full_i
                         else np.where(on_i, Ki * np.maximum(self.di, 0.0) ** 1.5, 0.0))
         self.Qo = Qo = (Ko * self.do ** 1.5 if full_o
@@ -879,10 +880,13 @@ class _System:
         # the difference never straddles the contact edge (delta^1.5 is not smooth at 0)
         if b0 is None:
             b0 = self.balls(x)
-        d = 1e-2 * np.minimum(np.abs(b0.di), np.abs(b0.do))
         hmax, hmin = 1e-9 * self.m.D, 1e-12 * self.m.D
-        hb = np.minimum(np.maximum(d, hmin), hmax)
-        h = min(max(float(d.min()), hmin), hmax)
+        if getattr(b0, "full", False):      # every contact closed by 1e-5 D: all steps hmax
+            hb, h = np.full(Z, hmax), hmax
+        else:
+            d = 1e-2 * np.minimum(np.abs(b0.di), np.abs(b0.do))
+            hb = np.minimum(np.maximum(d, hmin), hmax)
+            h = min(max(float(d.min()), hmin), hmax)
         # one cage speed couples all balls: hold it fixed for the per-ball blocks and add
         # the rank-one coupling d(residual)/d(omega_c) x d(omega_c)/dX afterwards
         cage = self.orbital == "cage" and not self.static
