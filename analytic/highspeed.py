@@ -494,13 +494,13 @@ class _Balls:
         z = A2 == 0.0
         base = np.arctan(A1 / np.where(z, 1e-300, A2) if z.any() else A1 / A2)
         if full_i:
-            self.wgt_i = wgt_i = np.ones_like(Qi)
+            self.wgt_i = wgt_i = np.ones(Qi.shape)
             self.ai_k = ai_k = base + (self.ai - base)
         else:
             self.wgt_i = wgt_i = np.where(on_i, _smoothstep(self.di / d_ref), 0.0)
             self.ai_k = ai_k = base + wgt_i * (np.where(on_i, self.ai, base) - base)
         if full_o:
-            self.wgt_o = wgt_o = np.ones_like(Qo)
+            self.wgt_o = wgt_o = np.ones(Qo.shape)
             self.ao_k = ao_k = base + (self.ao - base)
         else:
             self.wgt_o = wgt_o = np.where(on_o, _smoothstep(self.do / d_ref), 0.0)
@@ -565,10 +565,10 @@ class _Balls:
         self.Mg = Mg = m.J * self.wR * wc * np.sin(beta)           # H&D eq. 3.108
         # friction shares (the terms of a zero share are left out: same values)
         if gyro == "none":                      # (reported, not in the equilibrium)
-            li_ = lo_ = np.zeros_like(Fc)
+            li_ = lo_ = np.zeros(Fc.shape)
             fric_i = fric_o = False
         elif all_outer:                         # lambda_i = 0, lambda_o = 2 (both rules)
-            li_, lo_ = np.zeros_like(Fc), wgt_o * 2.0
+            li_, lo_ = np.zeros(Fc.shape), wgt_o * 2.0
             fric_i, fric_o = False, True
         else:
             li_, lo_ = _lambdas(outer, gyro)
