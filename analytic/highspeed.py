@@ -873,13 +873,20 @@ class _System:
         """Central differences: all balls' X1 (then X2) at once, the cage speed (held for
         the others), then each ring DOF; all perturbed states evaluated together in one
         batch, the differences taken and scaled for all of them at once."""
+        if b0 is None:
+            b0 = self.balls(x)
+        X, wcf, steps = self._jacobian_states(x, b0)
+        return self._jacobian_from(self.balls_rows(X, wcf), steps, b0)
+
+    def _jacobian_states(self, x, b0):
+        """The perturbed states of the Jacobian at x: rows X (N, n), held cage speeds
+        (N, 1) or None, and the steps; step sizes from the state b0, the cage held at
+        b0's speed."""
         Z, nf = self.Z, self.free.size
         n = 2 * Z + nf
         # steps: 1e-9 D (1e-4 of the blend width 1e-5 D, so that the differences resolve
         # the blends to ~1e-8), but below 1 % of each contact's deflection or gap so that
         # the difference never straddles the contact edge (delta^1.5 is not smooth at 0)
-        if b0 is None:
-            b0 = self.balls(x)
         hmax, hmin = 1e-9 * self.m.D, 1e-12 * self.m.D
         if getattr(b0, "full", False):      # every contact closed by 1e-5 D: all steps hmax
             hb, h = np.full(Z, hmax), hmax
@@ -914,10 +921,18 @@ class _System:
             wcf[:4] = wc0
             wcf[4, 0], wcf[5, 0] = wc0 + hw, wc0 - hw
             inv[2] = 0.5 / hw
-        B = self.balls_rows(X, wcf)
-        C = B.ring(self.free_list)                                   # (N, Z, nf)
-        D1 = (B.R1[0::2] - B.R1[1::2]) * inv                         # (N/2, Z)
-        D2 = (B.R2[0::2] - B.R2[1::2]) * inv
+        return X, wcf, (inv, k0, cage)
+
+    def _jacobian_from(self, B, steps, b0, first=0):
+        """The Jacobian from the batch B of perturbed states (from row ``first``) of
+        _jacobian_states; the cage coupling at the state b0."""
+        Z, nf = self.Z, self.free.size
+        n = 2 * Z + nf
+        inv, k0, cage = steps
+        R1, R2 = B.R1[first:], B.R2[first:]
+        C = B.ring(self.free_list)[first:]                           # (N, Z, nf)
+        D1 = (R1[0::2] - R1[1::2]) * inv                             # (N/2, Z)
+        D2 = (R2[0::2] - R2[1::2]) * inv
         DC = (C[0::2] - C[1::2]) * inv[:, :, None]                   # (N/2, Z, nf)
         J = np.zeros((n, n))
         Jf = J.reshape(-1)
@@ -927,8 +942,10 @@ class _System:
             den = float(b0.den.sum())
             if den > 0:
                 # d(omega_c)/dX of the Q_i Q_o/(Q_i + Q_o)-weighted mean
-                dnum = (B.num[0:4:2] - B.num[1:4:2]) * inv[:2]
-                dden = (B.den[0:4:2] - B.den[1:4:2]) * inv[:2]
+                wc0 = float(b0.wc_cage)
+                num, dn = B.num[first:], B.den[first:]
+                dnum = (num[0:4:2] - num[1:4:2]) * inv[:2]
+                dden = (dn[0:4:2] - dn[1:4:2]) * inv[:2]
                 g = ((dnum - wc0 * dden) / den).reshape(2 * Z)
                 col = np.concatenate([D1[2], D2[2], -DC[2].sum(axis=0)])
                 J[:, :2 * Z] += np.multiply.outer(col, g)
