@@ -89,7 +89,9 @@ M_g (it skids), or a cage speed outside the rolling range (:data:`CAGE_RATIO_RAN
 Solution: Newton on all 2Z + (free ring DOFs) unknowns at once, the Jacobian by central
 differences exploiting the block structure (ball residuals depend only on their own
 ball, the cage speed and the ring; ring residuals are sums over balls; all perturbed
-states evaluated in one batch), with a backtracking line search on the scaled residual.
+states evaluated in one batch), with a backtracking line search on the scaled residual
+(the halved steps evaluated in one batch) and, once Newton converges quadratically,
+chord steps that reuse the last factorised Jacobian.
 Starting values come from the static solution (:func:`ballrace.analytic.loaddist.solve`):
 loaded balls on their static line of centres, unloaded balls pressed by the centrifugal
 force onto the outer race as near its groove bottom as the inner race lets them.  If
@@ -113,7 +115,6 @@ import numpy as np
 from . import hertz
 from ._checks import as_array, broadcast, check_choice, check_positive, check_range
 from .bearing import BallBearing
-from .kinematics import _kinematics_beta
 from .loaddist import ConvergenceError
 
 __all__ = [
@@ -301,6 +302,10 @@ class _Model:
     mass: float
     J: float
     cheb: tuple = (None, None)
+    rho: float = 0.0
+    cp: object = None          # cos, sin of the ball azimuths psi_j (BallBearing.azimuths(0))
+    sp: object = None
+    zero: object = None        # zeros, shape (Z,)
 
     @staticmethod
     @functools.lru_cache(maxsize=64)
@@ -319,7 +324,10 @@ class _Model:
                       ri=(b.f_inner - 0.5) * D, ro=(b.f_outer - 0.5) * D, f_i=b.f_inner,
                       Ep=b.E_prime, Ry_i=b.f_inner * D / (2 * b.f_inner - 1),
                       Ry_o=b.f_outer * D / (2 * b.f_outer - 1), mass=m, J=m * D * D / 10.0)
-        return _Model(**{**model.__dict__, "cheb": _stiffness_fit(model)})
+        psi = b.azimuths(0.0)
+        return _Model(**{**model.__dict__, "cheb": _stiffness_fit(model), "rho": D / model.dm,
+                         "cp": np.cos(psi), "sp": np.sin(psi),
+                         "zero": np.zeros(b.n_balls)})
 
 
 def _stiffness_exact(model, ci, co):
@@ -366,8 +374,11 @@ def _stiffness(model, ai, ao):
     if fi is None or fo is None:
         return _stiffness_exact(model, np.cos(ai), np.cos(ao))
     # T_k(cos a) = cos(k a): the series is a cosine series in the angle itself
-    return (np.cos(np.multiply.outer(ai, np.arange(fi.size))) @ fi,
-            np.cos(np.multiply.outer(ao, np.arange(fo.size))) @ fo)
+    return (np.cos(np.multiply.outer(ai, _ARANGE[:fi.size])) @ fi,
+            np.cos(np.multiply.outer(ao, _ARANGE[:fo.size])) @ fo)
+
+
+_ARANGE = np.arange(81.0)
 
 
 def _lambdas(outer, gyro):
@@ -388,58 +399,91 @@ _EDGE = float(np.nextafter(0.5 * np.pi, 0.0))
 
 def _smoothstep(t):
     """0 for t <= 0, 1 for t >= 1, 3t^2 - 2t^3 between (continuous slope) [-]."""
-    t = np.clip(t, 0.0, 1.0)
+    t = np.minimum(np.maximum(t, 0.0), 1.0)
     return t * t * (3.0 - 2.0 * t)
 
 
-class _Balls:
-    """Per-ball state: geometry, loads, kinematics, residuals and ring contributions."""
+def _groove_centres(m, u):
+    """Inner-groove curvature centres (A1, A2) of the balls [m] for ring displacements u
+    (..., 5) (H&D 1981 eqs. 3.93-3.95); shape (..., Z)."""
+    cp, sp = m.cp, m.sp
+    u = np.asarray(u, float)
+    if u.ndim == 1:                          # (plain floats: cheaper than (1,) arrays)
+        u0, u1, u2, u3, u4 = (float(v) for v in u)
+        tilt, off = u3 != 0.0 or u4 != 0.0, u2 != 0.0
+    else:
+        u0, u1, u2, u3, u4 = (u[..., k:k + 1] for k in range(5))
+        tilt, off = bool(u[..., 3:].any()), bool(u2.any())
+    # (terms of a zero displacement are left out: same values)
+    a1 = m.A * m.sbf + u0
+    A1 = a1 + m.Ri * (u3 * sp - u4 * cp) if tilt else a1 + m.zero
+    A2 = m.A * m.cbf + u1 * cp + u2 * sp if off else m.A * m.cbf + u1 * cp
+    return A1, A2
 
-    def __init__(self, model, psi, X1, X2, u, wi, wo, outer, gyro, static,
+
+def _static_positions(m, A1, A2):
+    """Ball centres (X1, X2) [m] of the zero-speed equilibrium for inner-groove centres
+    (A1, A2): on the line of centres, the deflection shared in the ratio of the contact
+    stiffnesses."""
+    s = np.hypot(A1, A2)
+    a = np.arctan2(A1, A2)
+    Ki, Ko = _stiffness(m, a, a)
+    wo_ = Ko ** (-2.0 / 3.0) / (Ki ** (-2.0 / 3.0) + Ko ** (-2.0 / 3.0))
+    lo_ = m.ro + wo_ * (s - m.A)
+    # (a ball whose line of groove centres points past 90 deg is unloaded, as in
+    # loaddist: it rests at the outer-groove bottom, clear of both races)
+    past = ~(A2 > 0)
+    return np.where(past, 0.0, lo_ * np.sin(a)), np.where(past, m.ro, lo_ * np.cos(a))
+
+
+class _Balls:
+    """Per-ball state: geometry, loads, kinematics, residuals and ring contributions.
+
+    Arrays X1, X2 have shape (..., Z) and u shape (..., 5): several states at once (the
+    Jacobian evaluates all its perturbed states in one batch).  Written for few NumPy
+    calls per state (the solver spends its time here): terms that vanish exactly (no
+    tilt, no inner-controlled ball) are skipped, which changes no value."""
+
+    def __init__(self, model, X1, X2, u, wi, wo, outer, gyro, static,
                  orbital="ball", wc_fixed=None):
-        # (arrays: X1, X2 (..., Z), u (..., 5): several states at once for the Jacobian)
         m = model
-        cp, sp = np.cos(psi), np.sin(psi)
-        u = np.asarray(u, float)
-        U = [u[..., k:k + 1] for k in range(5)]
-        self.A1 = m.A * m.sbf + U[0] + m.Ri * (U[3] * sp - U[4] * cp)
-        self.A2 = m.A * m.cbf + U[1] * cp + U[2] * sp
+        cp, sp = m.cp, m.sp
+        self.A1, self.A2 = A1, A2 = _groove_centres(m, u)
         if static:
-            # zero speed: ball on the line of centres, deflection shared by stiffness
-            s = np.hypot(self.A1, self.A2)
-            a = np.arctan2(self.A1, self.A2)
-            Ki, Ko = _stiffness(m, a, a)
-            wo_ = Ko ** (-2.0 / 3.0) / (Ki ** (-2.0 / 3.0) + Ko ** (-2.0 / 3.0))
-            lo_ = m.ro + wo_ * (s - m.A)
-            # (a ball whose line of groove centres points past 90 deg is unloaded, as in
-            # loaddist: it rests at the outer-groove bottom, clear of both races)
-            past = ~(self.A2 > 0)
-            self.X1s = np.where(past, 0.0, lo_ * np.sin(a))
-            self.X2s = np.where(past, m.ro, lo_ * np.cos(a))
+            self.X1s, self.X2s = _static_positions(m, A1, A2)
         self.X1, self.X2 = X1, X2
         lo = np.hypot(X1, X2)
-        e1, e2 = self.A1 - X1, self.A2 - X2
+        e1, e2 = A1 - X1, A2 - X2
         li = np.hypot(e1, e2)
         self.do = lo - m.ro
         self.di = li - m.ri
-        self.sao, self.cao = X1 / lo, X2 / lo
-        self.sai, self.cai = e1 / li, e2 / li
+        self.sao, self.cao = sao, cao = X1 / lo, X2 / lo
+        self.sai, self.cai = sai, cai = e1 / li, e2 / li
         self.ao = np.arctan2(X1, X2)
         self.ai = np.arctan2(e1, e2)
         # The grooves are half tori: a race touches the ball only where the line of
         # centres lies less than 90 deg from its groove bottom (e2 > 0 at the inner race,
         # X2 > 0 at the outer race); beyond that there is no ring material and the
         # contact carries nothing, as in the static model (loaddist._State).
-        self.on_i, self.on_o = e2 > 0, X2 > 0
+        on_i, on_o = e2 > 0, X2 > 0
         if static:
             # on the line of centres both contacts share its angle: the groove-centre
             # line itself must point outwards, as in loaddist (x > 0), so that round-off
             # at 90 deg cannot load one contact of a ball and not the other
-            self.on_i = self.on_i & (self.A2 > 0)
-            self.on_o = self.on_o & (self.A2 > 0)
+            on_i = on_i & (A2 > 0)
+            on_o = on_o & (A2 > 0)
+        self.on_i, self.on_o = on_i, on_o
         Ki, Ko = _stiffness(m, self.ai, self.ao)
-        self.Qi = np.where(self.on_i, Ki * np.maximum(self.di, 0.0) ** 1.5, 0.0)
-        self.Qo = np.where(self.on_o, Ko * np.maximum(self.do, 0.0) ** 1.5, 0.0)
+        # every contact of the race closed beyond the blend (1e-5 D, below): the blend
+        # weights are 1 and the masks all true, so those terms are left out (same values)
+        d_ref = 1e-5 * m.D
+        full_i = bool((on_i & (self.di >= d_ref)).all())
+        full_o = bool((on_o & (self.do >= d_ref)).all())
+        self.full = full_i and full_o
+        self.Qi = Qi = (Ki * self.di ** 1.5 if full_i
+                        else np.where(on_i, Ki * np.maximum(self.di, 0.0) ** 1.5, 0.0))
+        self.Qo = Qo = (Ko * self.do ** 1.5 if full_o
+                        else np.where(on_o, Ko * np.maximum(self.do, 0.0) ** 1.5, 0.0))
         # An open contact has no contact angle: for the kinematics it takes the angle of
         # the line of groove centres, blended in over a deflection of 1e-5 D (loads there
         # are ~1 N or less) so that the equations stay continuous.
@@ -447,68 +491,151 @@ class _Balls:
         # of a ring displaced by more than A cos(beta_f) does not get an angle near pi)
         # These kinematic angles set only the speeds; the forces act along the
         # mechanical angles ai, ao (|ai|, |ao| < pi/2 wherever the contact is loaded).
-        base = np.arctan(self.A1 / np.where(self.A2 == 0.0, 1e-300, self.A2))
-        d_ref = 1e-5 * m.D
-        self.wgt_i = np.where(self.on_i, _smoothstep(self.di / d_ref), 0.0)
-        self.wgt_o = np.where(self.on_o, _smoothstep(self.do / d_ref), 0.0)
-        self.ai_k = base + self.wgt_i * (np.where(self.on_i, self.ai, base) - base)
-        self.ao_k = base + self.wgt_o * (np.where(self.on_o, self.ao, base) - base)
+        z = A2 == 0.0
+        base = np.arctan(A1 / np.where(z, 1e-300, A2) if z.any() else A1 / A2)
+        if full_i:
+            self.wgt_i = wgt_i = np.ones(Qi.shape)
+            self.ai_k = ai_k = base + (self.ai - base)
+        else:
+            self.wgt_i = wgt_i = np.where(on_i, _smoothstep(self.di / d_ref), 0.0)
+            self.ai_k = ai_k = base + wgt_i * (np.where(on_i, self.ai, base) - base)
+        if full_o:
+            self.wgt_o = wgt_o = np.ones(Qo.shape)
+            self.ao_k = ao_k = base + (self.ao - base)
+        else:
+            self.wgt_o = wgt_o = np.where(on_o, _smoothstep(self.do / d_ref), 0.0)
+            self.ao_k = ao_k = base + wgt_o * (np.where(on_o, self.ao, base) - base)
         # kinematics (race control) at the current angles
-        rho = m.D / m.dm
+        rho = m.rho
         # a ball cannot be controlled by a race it does not touch: inner control fades
         # into outer control as the inner contact opens (same blend)
-        b_o = np.arctan2(np.sin(self.ao_k), np.cos(self.ao_k) + rho)
-        b_i = np.arctan2(np.sin(self.ai_k), np.cos(self.ai_k) - rho)
-        beta = np.where(outer, b_o, b_o + self.wgt_i * (b_i - b_o))
-        (self.beta, self.wc, self.wR, self.s_i, self.s_o,
-         self.r_i, self.r_o) = _kinematics_beta(rho, self.ai_k, self.ao_k, wi, wo, beta)
+        outer = np.asarray(outer, bool)
+        all_outer = bool(outer.all())
+        c_ao, c_ai = np.cos(ao_k), np.cos(ai_k)
+        b_o = np.arctan2(np.sin(ao_k), c_ao + rho)
+        if all_outer:
+            beta = b_o
+        else:
+            b_i = np.arctan2(np.sin(ai_k), c_ai - rho)
+            beta = np.where(outer, b_o, b_o + wgt_i * (b_i - b_o))
+        self.beta = beta
+        # race-control kinematics (kinematics._kinematics_beta, the speeds only)
+        co = np.cos(ao_k - beta)
+        A_o = (1.0 + rho * c_ao) / co
+        A_i = (1.0 - rho * c_ai) / np.cos(ai_k - beta)
+        wc = (wi * A_i + wo * A_o) / (A_i + A_o)
+        self.wR = (wo - wc) * A_o / rho
+        self.wc = wc
         if orbital == "cage":
             # One cage: every ball orbits at the cage speed, the mean of the balls'
             # kinematic orbital speeds weighted by Q_i Q_o / (Q_i + Q_o) (balls with an
             # open contact do not drive the cage); each ball rolls without slip on its
             # controlling race at that speed (H&D 1981 eqs. 3.76-3.77 with omega_c given).
-            q = np.where(self.Qi + self.Qo > 0,
-                         self.Qi * self.Qo / np.where(self.Qi + self.Qo > 0,
-                                                      self.Qi + self.Qo, 1.0), 0.0)
-            self.num, self.den = q * np.where(q > 0, self.wc, 0.0), q
-            sq = np.sum(q, axis=-1, keepdims=True)
-            wc = np.where(sq > 0, np.sum(self.num, axis=-1, keepdims=True)
-                          / np.where(sq > 0, sq, 1.0),
-                          # no ball drives: classical value
-                          0.5 * (wi * (1 - rho * np.cos(base)) + wo * (1 + rho * np.cos(base))))
+            sQ = Qi + Qo
+            if full_i and full_o:                # (all loaded: q > 0)
+                q = Qi * Qo / sQ
+                self.num, self.den = q * wc, q
+            else:
+                pos = sQ > 0
+                q = np.where(pos, Qi * Qo / np.where(pos, sQ, 1.0), 0.0)
+                self.num, self.den = q * np.where(q > 0, wc, 0.0), q
+            sq = q.sum(axis=-1, keepdims=True)
+            if (full_i and full_o) or (sq > 0).all():
+                wc = self.num.sum(axis=-1, keepdims=True) / sq
+            else:
+                wc = np.where(sq > 0, self.num.sum(axis=-1, keepdims=True)
+                              / np.where(sq > 0, sq, 1.0),
+                              # no ball drives: classical value
+                              0.5 * (wi * (1 - rho * np.cos(base))
+                                     + wo * (1 + rho * np.cos(base))))
             if wc_fixed is not None:      # (Jacobian: hold the cage speed; nan: do not)
                 wf = np.asarray(wc_fixed, float)
                 wc = np.where(np.isnan(wf), wc, wf)
-            self.wc = np.broadcast_to(wc, self.Qi.shape).astype(float)
-            self.wc_cage = np.mean(self.wc, axis=-1)
-            wR_o = (wo - self.wc) * (1.0 + rho * np.cos(self.ao_k)) / (
-                rho * np.cos(self.ao_k - b_o))
-            wR_i = (self.wc - wi) * (1.0 - rho * np.cos(self.ai_k)) / (
-                rho * np.cos(self.ai_k - b_i))
-            self.wR = np.where(outer, wR_o, wR_o + self.wgt_i * (wR_i - wR_o))
-        self.Fc = m.mass * (m.Roc + X2) * self.wc**2              # (1/2) m d_orbit wc^2
-        self.Mg = m.J * self.wR * self.wc * np.sin(self.beta)      # H&D eq. 3.108
+            self.wc = wc = wc + np.zeros(Qi.shape)
+            self.wc_cage = wc.sum(axis=-1) / m.Z
+            # (cos(ao_k - b_o) is co where beta = b_o)
+            wR_o = (wo - wc) * (1.0 + rho * c_ao) / (
+                rho * (co if all_outer else np.cos(ao_k - b_o)))
+            if all_outer:
+                self.wR = wR_o
+            else:
+                wR_i = (wc - wi) * (1.0 - rho * c_ai) / (rho * np.cos(ai_k - b_i))
+                self.wR = np.where(outer, wR_o, wR_o + wgt_i * (wR_i - wR_o))
+        self.Fc = Fc = m.mass * (m.Roc + X2) * wc**2              # (1/2) m d_orbit wc^2
+        self.Mg = Mg = m.J * self.wR * wc * np.sin(beta)           # H&D eq. 3.108
+        # friction shares (the terms of a zero share are left out: same values)
         if gyro == "none":                      # (reported, not in the equilibrium)
-            li_, lo_ = np.zeros_like(self.Fc), np.zeros_like(self.Fc)
+            li_ = lo_ = np.zeros(Fc.shape)
+            fric_i = fric_o = False
+        elif all_outer:                         # lambda_i = 0, lambda_o = 2 (both rules)
+            li_, lo_ = np.zeros(Fc.shape), wgt_o * 2.0
+            fric_i, fric_o = False, True
         else:
             li_, lo_ = _lambdas(outer, gyro)
             # no friction without a normal load: an open contact passes its share on
-            li_ = self.wgt_i * li_
-            lo_ = self.wgt_o * (2.0 - li_)
+            li_ = wgt_i * li_
+            lo_ = wgt_o * (2.0 - li_)
+            fric_i = fric_o = True
         self.lam_i, self.lam_o = li_, lo_
-        gi, go = li_ * self.Mg / m.D, lo_ * self.Mg / m.D
         # ball equilibrium (H&D eqs. 3.104-3.105; Harris 2001 ch. 25)
+        R1 = Qi * sai - Qo * sao
+        R2 = Qi * cai - Qo * cao
+        self.T = Qi * sai
+        self.P = Qi * cai
+        if fric_i:
+            gi = li_ * Mg / m.D
+            R1 = R1 - gi * cai
+            R2 = R2 + gi * sai
+            self.T = self.T - gi * cai
+            self.P = self.P + gi * sai
+        if fric_o:
+            go = lo_ * Mg / m.D
+            R1 = R1 + go * cao
+            R2 = R2 - go * sao
         if static:
-            self.R = np.stack([X1 - self.X1s, X2 - self.X2s], axis=-1)
+            self.R1, self.R2 = X1 - self.X1s, X2 - self.X2s
         else:
-            R1 = self.Qi * self.sai - self.Qo * self.sao - gi * self.cai + go * self.cao
-            R2 = self.Qi * self.cai - self.Qo * self.cao + gi * self.sai - go * self.sao + self.Fc
-            self.R = np.stack([R1, R2], axis=-1)
-        # forces on the inner ring (H&D eqs. 3.111-3.112, five DOFs)
-        T = self.Qi * self.sai - gi * self.cai
-        P = self.Qi * self.cai + gi * self.sai
-        Mt = m.Ri * T + m.f_i * li_ * self.Mg
-        self.C = np.stack([T, P * cp, P * sp, Mt * sp, -Mt * cp], axis=-1)
+            self.R1, self.R2 = R1, R2 + Fc
+        # forces on the inner ring (H&D eqs. 3.111-3.112, five DOFs): axial T, radial P,
+        # moment Mt about the groove centre's circle
+        self.Mt = m.Ri * self.T + m.f_i * li_ * Mg if fric_i else m.Ri * self.T
+        self._cp, self._sp = cp, sp
+
+    def ring(self, free):
+        """Per-ball forces on the inner ring in the DOFs ``free``, shape (..., Z, nf)."""
+        cols = {0: lambda: self.T, 1: lambda: self.P * self._cp, 2: lambda: self.P * self._sp,
+                3: lambda: self.Mt * self._sp, 4: lambda: -self.Mt * self._cp}
+        if len(free) == 0:
+            return np.zeros(self.T.shape + (0,))
+        return np.stack([cols[int(k)]() for k in free], axis=-1)
+
+    def ring_sum(self, free):
+        """Resultant of the ball forces on the inner ring in the DOFs ``free``, shape
+        (..., nf)."""
+        cp, sp = self._cp, self._sp
+        out = [self.T.sum(axis=-1) if k == 0 else self.P @ cp if k == 1 else
+               self.P @ sp if k == 2 else self.Mt @ sp if k == 3 else -(self.Mt @ cp)
+               for k in free]
+        return np.array(out).T if out else np.zeros(self.T.shape[:-1] + (0,))
+
+    def row(self, k):
+        """State k of a batch of states."""
+        new = object.__new__(_Balls)
+        for name, v in vars(self).items():
+            new.__dict__[name] = v[k] if isinstance(v, np.ndarray) and v.ndim >= 2 else v
+        if "wc_cage" in new.__dict__:
+            new.wc_cage = self.wc_cage[k]
+        return new
+
+    @property
+    def C(self):
+        """Per-ball forces on the inner ring (Fa, Fy, Fz, My, Mz), shape (..., Z, 5)."""
+        return self.ring(range(5))
+
+    @property
+    def R(self):
+        """Ball residuals (axial, radial), shape (..., Z, 2)."""
+        return np.stack([self.R1, self.R2], axis=-1)
 
 
 # =========================================================================== result
@@ -574,7 +701,8 @@ class HighSpeedResult:
     relative_residual : float
         ``residual`` over the load scale (max applied load, Z F_c) [-].
     iterations : int
-        Newton iterations in total.
+        Newton iterations in total (chord steps, which reuse the last Jacobian,
+        included).
     gyroscopic : str
         Treatment of the gyroscopic moment.
     friction_coefficient : float or None
@@ -699,6 +827,9 @@ class _System:
     def __init__(self, model, psi, L, free, wi, wo, gyro, static, F_ref, Q_ref,
                  orbital="cage"):
         self.m, self.psi, self.L, self.free = model, psi, L, free
+        self.Lf = L[free]
+        self.free_list = [int(k) for k in free]
+        self._diag = self._rows = None
         self.orbital = orbital
         self.wi, self.wo, self.gyro, self.static = wi, wo, gyro, static
         self.Z = model.Z
@@ -707,6 +838,9 @@ class _System:
         self.load_sc = sc[free] / F_ref             # ring residual scale (moments / R_i)
         self.ball_sc = 1.0 / Q_ref if not static else 1.0 / (1e-4 * model.D)
         self.u_sc = np.where(free >= 3, model.Ri, 1.0)
+        # (residual and step scales as vectors over all unknowns)
+        self.res_sc = np.concatenate([np.full(2 * self.Z, self.ball_sc), self.load_sc])
+        self.step_sc = np.concatenate([np.ones(2 * self.Z), self.u_sc])
         self.outer = np.ones(model.Z, bool)
 
     def unpack(self, x):
@@ -717,135 +851,260 @@ class _System:
 
     def balls(self, x, wc_fixed=None):
         X1, X2, u = self.unpack(x)
-        return _Balls(self.m, self.psi, X1, X2, u, self.wi, self.wo, self.outer, self.gyro,
+        return _Balls(self.m, X1, X2, u, self.wi, self.wo, self.outer, self.gyro,
                       self.static, self.orbital, wc_fixed)
 
     def residual(self, b):
-        ring = self.L[self.free] - b.C.sum(axis=-2)[..., self.free]
-        return np.concatenate([b.R[..., 0], b.R[..., 1], ring], axis=-1)
+        ring = self.Lf - b.ring_sum(self.free_list)
+        return np.concatenate([b.R1, b.R2, ring], axis=-1)
 
     def scaled(self, r):
+        return r * self.res_sc
+
+    def balls_rows(self, X, wc_fixed=None):
+        """States of the rows of X (k, 2Z + nf) in one batch."""
         Z = self.Z
-        return np.concatenate([r[:2 * Z] * self.ball_sc, r[2 * Z:] * self.load_sc])
+        u = np.zeros((X.shape[0], 5))
+        u[:, self.free] = X[:, 2 * Z:]
+        return _Balls(self.m, X[:, :Z], X[:, Z:2 * Z], u, self.wi, self.wo, self.outer,
+                      self.gyro, self.static, self.orbital, wc_fixed)
 
     def jacobian(self, x, b0=None):
-        """Central differences: all balls' X1 (then X2) at once, then each ring DOF; all
-        perturbed states evaluated together in one batch."""
+        """Central differences: all balls' X1 (then X2) at once, the cage speed (held for
+        the others), then each ring DOF; all perturbed states evaluated together in one
+        batch, the differences taken and scaled for all of them at once."""
+        if b0 is None:
+            b0 = self.balls(x)
+        X, wcf, steps = self._jacobian_states(x, b0)
+        return self._jacobian_from(self.balls_rows(X, wcf), steps, b0)
+
+    def _jacobian_states(self, x, b0):
+        """The perturbed states of the Jacobian at x: rows X (N, n), held cage speeds
+        (N, 1) or None, and the steps; step sizes from the state b0, the cage held at
+        b0's speed."""
         Z, nf = self.Z, self.free.size
         n = 2 * Z + nf
-        J = np.zeros((n, n))
         # steps: 1e-9 D (1e-4 of the blend width 1e-5 D, so that the differences resolve
         # the blends to ~1e-8), but below 1 % of each contact's deflection or gap so that
         # the difference never straddles the contact edge (delta^1.5 is not smooth at 0)
-        if b0 is None:
-            b0 = self.balls(x)
-        d = np.minimum(np.abs(b0.di), np.abs(b0.do))
         hmax, hmin = 1e-9 * self.m.D, 1e-12 * self.m.D
-        hb = np.clip(1e-2 * d, hmin, hmax)
-        h = float(np.clip(np.min(1e-2 * d), hmin, hmax))
-        idx = np.arange(Z)
+        if getattr(b0, "full", False):      # every contact closed by 1e-5 D: all steps hmax
+            hb, h = np.full(Z, hmax), hmax
+        else:
+            d = 1e-2 * np.minimum(np.abs(b0.di), np.abs(b0.do))
+            hb = np.minimum(np.maximum(d, hmin), hmax)
+            h = min(max(float(d.min()), hmin), hmax)
         # one cage speed couples all balls: hold it fixed for the per-ball blocks and add
         # the rank-one coupling d(residual)/d(omega_c) x d(omega_c)/dX afterwards
         cage = self.orbital == "cage" and not self.static
-        X1, X2, u = self.unpack(x)
-        N = 4 + 2 * cage + 2 * nf
-        X1s, X2s = np.tile(X1, (N, 1)), np.tile(X2, (N, 1))
-        us = np.tile(u, (N, 1))
-        wcf = np.full((N, 1), np.nan)
-        X1s[0] += hb
-        X1s[1] -= hb
-        X2s[2] += hb
-        X2s[3] -= hb
+        k0 = 4 + 2 * cage
+        N = k0 + 2 * nf
+        hu = h / self.u_sc
+        X = np.empty((N, n))
+        X[:] = x
+        X[0, :Z] += hb
+        X[1, :Z] -= hb
+        X[2, Z:2 * Z] += hb
+        X[3, Z:2 * Z] -= hb
+        rp, rm, cu = self._ring_rows(k0)
+        X[rp, cu] += hu
+        X[rm, cu] -= hu
+        wcf = None
+        # inverse steps 1/(2h) of the N/2 differences: X1, X2 per ball, cage, ring DOFs
+        inv = np.empty((N // 2, Z))
+        inv[0] = inv[1] = 0.5 / hb
+        inv[k0 // 2:] = (0.5 / hu)[:, None]
         if cage:
+            wcf = np.full((N, 1), np.nan)
             wc0 = float(b0.wc_cage)
             hw = 1e-7 * max(abs(wc0), abs(self.wi), abs(self.wo), 1e-300)
             wcf[:4] = wc0
-            wcf[4:6] = [[wc0 + hw], [wc0 - hw]]
-        k0 = 4 + 2 * cage
-        hu = h / self.u_sc
-        for j in range(nf):
-            us[k0 + 2 * j, self.free[j]] += hu[j]
-            us[k0 + 2 * j + 1, self.free[j]] -= hu[j]
-        B = _Balls(self.m, self.psi, X1s, X2s, us, self.wi, self.wo, self.outer, self.gyro,
-                   self.static, self.orbital, wcf)
-        R, C = B.R, B.C[..., self.free]
+            wcf[4, 0], wcf[5, 0] = wc0 + hw, wc0 - hw
+            inv[2] = 0.5 / hw
+        return X, wcf, (inv, k0, cage)
+
+    def _jacobian_from(self, B, steps, b0, first=0):
+        """The Jacobian from the batch B of perturbed states (from row ``first``) of
+        _jacobian_states; the cage coupling at the state b0."""
+        Z, nf = self.Z, self.free.size
+        n = 2 * Z + nf
+        inv, k0, cage = steps
+        R1, R2 = B.R1[first:], B.R2[first:]
+        C = B.ring(self.free_list)[first:]                           # (N, Z, nf)
+        D1 = (R1[0::2] - R1[1::2]) * inv                             # (N/2, Z)
+        D2 = (R2[0::2] - R2[1::2]) * inv
+        DC = (C[0::2] - C[1::2]) * inv[:, :, None]                   # (N/2, Z, nf)
+        J = np.zeros((n, n))
+        Jf = J.reshape(-1)
+        Jf[self._diag_index()] = np.concatenate([D1[0], D2[0], D1[1], D2[1]])
+        J[2 * Z:, :2 * Z] = -DC[:2].transpose(2, 0, 1).reshape(nf, 2 * Z)
         if cage:
-            rw = (R[4] - R[5]) / (2 * hw)                      # (Z, 2)
-            cw = (C[4] - C[5]).sum(axis=0) / (2 * hw)          # (nf,)
-            den = np.sum(b0.den)
-        for k in (0, 1):
-            p, q = 2 * k, 2 * k + 1
-            dR = (R[p] - R[q]) / (2 * hb[:, None])             # (Z, 2)
-            dC = (C[p] - C[q]) / (2 * hb[:, None])             # (Z, nf)
-            J[idx, k * Z + idx] = dR[:, 0]
-            J[Z + idx, k * Z + idx] = dR[:, 1]
-            J[2 * Z:, k * Z:(k + 1) * Z] = -dC.T
-            if cage and den > 0:
-                g = ((B.num[p] - B.num[q]) - wc0 * (B.den[p] - B.den[q])) / (2 * hb * den)
-                J[:Z, k * Z:(k + 1) * Z] += np.outer(rw[:, 0], g)
-                J[Z:2 * Z, k * Z:(k + 1) * Z] += np.outer(rw[:, 1], g)
-                J[2 * Z:, k * Z:(k + 1) * Z] -= np.outer(cw, g)
+            den = float(b0.den.sum())
+            if den > 0:
+                # d(omega_c)/dX of the Q_i Q_o/(Q_i + Q_o)-weighted mean
+                wc0 = float(b0.wc_cage)
+                num, dn = B.num[first:], B.den[first:]
+                dnum = (num[0:4:2] - num[1:4:2]) * inv[:2]
+                dden = (dn[0:4:2] - dn[1:4:2]) * inv[:2]
+                g = ((dnum - wc0 * dden) / den).reshape(2 * Z)
+                col = np.concatenate([D1[2], D2[2], -DC[2].sum(axis=0)])
+                J[:, :2 * Z] += np.multiply.outer(col, g)
         if nf:
-            res = self.residual(B)[k0:]
-            J[:, 2 * Z:] = ((res[0::2] - res[1::2]) / (2 * hu[:, None])).T
+            J[:Z, 2 * Z:] = D1[k0 // 2:].T
+            J[Z:2 * Z, 2 * Z:] = D2[k0 // 2:].T
+            J[2 * Z:, 2 * Z:] = -DC[k0 // 2:].sum(axis=1).T
         return J
 
+    def _ring_rows(self, k0):
+        """Rows (+h, -h) and columns of the ring-DOF perturbations in the Jacobian batch."""
+        if self._rows is None:
+            ju = np.arange(self.free.size)
+            self._rows = (k0 + 2 * ju, k0 + 1 + 2 * ju, 2 * self.Z + ju)
+        return self._rows
 
-def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39):
+    def _diag_index(self):
+        """Flat indices of the per-ball 2 x 2 blocks in the Jacobian (d R1/d X1, d R2/d X1,
+        d R1/d X2, d R2/d X2 of every ball)."""
+        if self._diag is None:
+            Z, n = self.Z, 2 * self.Z + self.free.size
+            i = np.arange(Z)
+            self._diag = np.concatenate([i * n + i, (Z + i) * n + i, i * n + Z + i,
+                                         (Z + i) * n + Z + i])
+        return self._diag
+
+
+def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39, chord_steps=True):
     """Damped Newton; returns (x, balls, scaled max residual, iterations).
 
     Stops (unconverged) when the line search needs a step below ``min_step``, or steps
     below 1/32 in 5 successive iterations (stalled: the Newton direction does not
-    describe the residual, e.g. at the kinks of the contact law or of the blends)."""
+    describe the residual, e.g. at the kinks of the contact law or of the blends).
+
+    The line search tries the full step alone, then the halved steps 1/2 ... 1/64 in one
+    batch (and so on; after a shortened step, 1 ... 1/32 in one batch), taking the
+    longest that decreases the merit enough: the steps of a plain backtracking search,
+    for fewer evaluations.  Where Newton converges
+    quadratically (a full step from a residual below _CHORD_START that reduced it
+    tenfold), the next step reuses the last factorised Jacobian (a chord step) as long as
+    that reduces the residual by _CHORD_RATE or more; chord steps are counted in the
+    iterations returned but not against ``max_iter``.  ``chord_steps=False``: Newton
+    only (the continuation in speed, whose step control counts Newton iterations)."""
     b = sysm.balls(x)
-    r = sysm.scaled(sysm.residual(b))
-    err = np.max(np.abs(r))
-    it = 0
+    r_raw = sysm.residual(b)
+    r = sysm.scaled(r_raw)
+    err = float(np.abs(r).max())
+    it = chord = 0
     step_cap = 0.05 * sysm.m.D
     short = 0
+    lu = None
+    damped = False
+    _getrf, _getrs = _lapack()
     while err > rtol and it < max_iter and short < 5:
+        if lu is not None:
+            # chord step: the Jacobian of the last Newton iteration
+            dx = _getrs(*lu, -r_raw)[0]
+            lu = None
+            if np.isfinite(dx).all() and _step_size(sysm, dx) <= step_cap:
+                xn = x + dx
+                bn = sysm.balls(xn)
+                rn_raw = sysm.residual(bn)
+                rn = sysm.scaled(rn_raw)
+                en = float(np.abs(rn).max())
+                if np.isfinite(en) and en <= _CHORD_RATE * err:
+                    chord += 1
+                    x, b, r, r_raw, err = xn, bn, rn, rn_raw, en
+                    lu = lu_last
+                    log.debug("highspeed: chord step, scaled residual %.3e", err)
+                    continue
         it += 1
         J = sysm.jacobian(x, b)
-        r_raw = sysm.residual(b)
-        try:
-            dx = np.linalg.solve(J, -r_raw)
-            if not np.all(np.isfinite(dx)):
-                raise np.linalg.LinAlgError
-        except np.linalg.LinAlgError:
+        dx = None
+        if np.isfinite(J).all():
+            lu_, piv, info = _getrf(J)
+            fac = (lu_, piv)
+            if info == 0:                                # (info > 0: exactly singular)
+                dx = _getrs(lu_, piv, -r_raw)[0]
+                if not np.isfinite(dx).all():
+                    dx = None
+        if dx is None:                                   # singular: least squares
+            fac = None
             dx = np.linalg.lstsq(J, -r_raw, rcond=1e-14)[0]
-        big = np.max(np.abs(dx[:2 * sysm.Z]), initial=0.0)
-        big = max(big, np.max(np.abs(dx[2 * sysm.Z:] * sysm.u_sc), initial=0.0))
+        big = _step_size(sysm, dx)
         if big > step_cap:
             dx *= step_cap / big
         f0 = 0.5 * float(r @ r)
+        # line search: t = 1, then 1/2 ... 1/64 in one batch, and so on (after a
+        # shortened step, 1 ... 1/32 in one batch at once)
         t = 1.0
-        while t >= min_step:
-            xn = x + t * dx
+        if not damped:
+            xn = x + dx
             bn = sysm.balls(xn)
-            rn = sysm.scaled(sysm.residual(bn))
-            if np.all(np.isfinite(rn)) and 0.5 * float(rn @ rn) <= (1.0 - 1e-4 * t) * f0:
+            rn_raw = sysm.residual(bn)
+            rn = sysm.scaled(rn_raw)
+        if damped or not (np.isfinite(rn).all()
+                          and 0.5 * float(rn @ rn) <= (1.0 - 1e-4) * f0):
+            t = 1.0 if damped else 0.5
+            while t >= min_step:
+                ts = t * _HALVINGS
+                ts = ts[ts >= min_step]
+                X = x + ts[:, None] * dx
+                B = sysm.balls_rows(X)
+                R_raw = sysm.residual(B)
+                R = sysm.scaled(R_raw)
+                with np.errstate(invalid="ignore", over="ignore"):
+                    ok = np.all(np.isfinite(R), axis=1) & (
+                        0.5 * np.einsum("ij,ij->i", R, R) <= (1.0 - 1e-4 * ts) * f0)
+                if np.any(ok):
+                    j = int(np.argmax(ok))
+                    t, xn, bn, rn_raw, rn = ts[j], X[j], B.row(j), R_raw[j], R[j]
+                    break
+                t = 0.5 * ts[-1]
+            else:
+                log.debug("highspeed: line search failed at iteration %d (residual %.3e)",
+                          it, err)
                 break
-            t *= 0.5
-        else:
-            log.debug("highspeed: line search failed at iteration %d (residual %.3e)", it, err)
-            break
-        x, b, r = xn, bn, rn
+        en = float(np.abs(rn).max())
+        if (chord_steps and fac is not None and t == 1.0 and err < _CHORD_START
+                and en < 0.1 * err):
+            lu = lu_last = fac
+        x, b, r, r_raw = xn, bn, rn, rn_raw
+        damped = t < 1.0
         short = short + 1 if t < 1.0 / 32 else 0
-        err = float(np.max(np.abs(r)))
+        err = en
         log.debug("highspeed: iteration %d, step %.3g, scaled residual %.3e", it, t, err)
-    return x, b, err, it
+    return x, b, err, it + chord
+
+
+#: Scaled residual below which a Newton iteration converging quadratically may be
+#: followed by chord steps (see :func:`_damped_newton`).
+_CHORD_START = 1e-2
+#: Residual reduction a chord step must reach to be followed by another (else Newton).
+_CHORD_RATE = 0.1
+_HALVINGS = 0.5 ** np.arange(6.0)
+
+
+@functools.lru_cache(maxsize=1)
+def _lapack():
+    """LAPACK LU factorisation and solve, dgetrf and dgetrs (what numpy.linalg.solve
+    does, without its overhead); scipy.linalg is imported on first use."""
+    import scipy.linalg
+    return scipy.linalg.get_lapack_funcs(("getrf", "getrs"), (np.zeros((2, 2)),))
+
+
+def _step_size(sysm, dx):
+    """Largest ball or ring-point displacement of a Newton step [m]."""
+    return float(np.abs(dx * sysm.step_sc).max())
 
 
 def _start(model, psi, u, wi, wo, free, static):
     """Starting ball positions from ring displacements u (static line of centres)."""
     Z = model.Z
     x = np.concatenate([np.zeros(2 * Z), u[free]])
-    b = _Balls(model, psi, np.zeros(Z), np.full(Z, model.ro), u, 0.0, 0.0, np.ones(Z, bool),
-               "none", True)
-    X1, X2 = b.X1s.copy(), b.X2s.copy()
+    A1, A2 = _groove_centres(model, u)
+    X1, X2 = _static_positions(model, A1, A2)
     if not static:
         # unloaded (static) balls: on the outer race only, pressed by the centrifugal force
-        s = np.hypot(b.A1, b.A2)
+        s = np.hypot(A1, A2)
         unl = s <= model.A * (1.0 + 1e-9)
         if np.any(unl):
             wc = 0.5 * (wi * (1 - model.D / model.dm) + wo * (1 + model.D / model.dm))
@@ -858,7 +1117,7 @@ def _start(model, psi, u, wi, wo, free, static):
             # contacts carry about F_c, and the ball is held in both directions.  (At
             # the bottom itself an angular-contact ball can overlap the inner race by up
             # to ~A sin(beta_f).)
-            a = np.arctan2(b.A1, b.A2)
+            a = np.arctan2(A1, A2)
             dc = (Fc / Ko[0]) ** (2.0 / 3.0)
             lo = model.ro + dc
             cphi = (lo**2 + s**2 - (model.ri + dc)**2) / (2.0 * lo * np.maximum(s, 1e-300))
@@ -866,8 +1125,8 @@ def _start(model, psi, u, wi, wo, free, static):
             th = np.clip(0.0, a - phi, a + phi)
             # ... unless the inner race does not hold it at the bottom (contact open there,
             # or past the inner groove's edge)
-            e2 = b.A2 - lo
-            free_ = ~((e2 > 0) & (np.hypot(b.A1, e2) > model.ri))
+            e2 = A2 - lo
+            free_ = ~((e2 > 0) & (np.hypot(A1, e2) > model.ri))
             th = np.clip(np.where(free_, 0.0, th), -0.49 * np.pi, 0.49 * np.pi)
             X1 = np.where(unl, lo * np.sin(th), X1)
             X2 = np.where(unl, lo * np.cos(th), X2)
@@ -1097,8 +1356,9 @@ def _equilibrium(model, psi, L, free, wi, wo, gyro, static, F_ref, Q_ref, orbita
         sy = system(s_new)
         # from the predictor a step converges in a few full Newton steps; a step that
         # needs heavy damping or more iterations is halved instead
-        xn, bn, err, it = (_damped_newton(sy, xg, rtol, min(max_iter, 30)) if last is None
-                           else _damped_newton(sy, xg, rtol, min(max_iter, 12), 1.0 / 16))
+        xn, bn, err, it = (
+            _damped_newton(sy, xg, rtol, min(max_iter, 30), chord_steps=False) if last is None
+            else _damped_newton(sy, xg, rtol, min(max_iter, 12), 1.0 / 16, chord_steps=False))
         count[0] += it
         log.debug("highspeed: continuation to %.4g of the speed: %s after %d iterations",
                   s_new, "converged" if err <= rtol else f"failed ({err:.3e})", it)
@@ -1107,10 +1367,10 @@ def _equilibrium(model, psi, L, free, wi, wo, gyro, static, F_ref, Q_ref, orbita
             last = (sy, xn, bn)
             if s < 1.0:                         # tangent dx/ds = -J^-1 dR/ds
                 h = 1e-6
-                dR = (system(s + h).residual(system(s + h).balls(xn))
-                      - system(s - h).residual(system(s - h).balls(xn))) / (2 * h)
+                sp_, sm_ = system(s + h), system(s - h)
+                dR = (sp_.residual(sp_.balls(xn)) - sm_.residual(sm_.balls(xn))) / (2 * h)
                 try:
-                    tangent = np.linalg.solve(sy.jacobian(xn), -dR)
+                    tangent = np.linalg.solve(sy.jacobian(xn, bn), -dR)
                 except np.linalg.LinAlgError:
                     tangent = np.zeros_like(xn)
                 if not np.all(np.isfinite(tangent)):
@@ -1246,7 +1506,8 @@ def _result(bearing, model, psi, sysm, x, b, L, wi, wo, outer, gyro, mu, iters, 
     loads = b.C.sum(axis=0)
     arrays = (b.Qi, b.Qo, b.ai_k, b.ao_k, b.di, b.do, b.X1, b.X2, b.Fc, b.Mg, b.wc, b.wR,
               b.beta, sr_i, sr_o, u, loads)
-    if not (all(np.all(np.isfinite(a)) for a in arrays) and res / F_ref <= max(1e-9, rtol)):
+    finite = np.isfinite(np.concatenate([np.ravel(a) for a in arrays])).all()
+    if not (finite and res / F_ref <= max(1e-9, rtol)):
         raise ConvergenceError(f"high-speed equilibrium: the solution is not finite or not "
                                f"balanced (relative residual {res / F_ref:.3e}) after {iters} "
                                "Newton iterations")

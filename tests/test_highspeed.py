@@ -11,6 +11,8 @@ numbers are instead checked against an independent re-implementation of Harris's
 equations (closed-form outer-race-control kinematics, scipy.optimize.fsolve) and against
 exact identities.  Tolerances are stated with each test.
 """
+import re
+
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -599,3 +601,119 @@ def test_issue21_tight_inner_loose_outer_light_preload_is_not_silent(caplog):
     assert any("orbital speed" in w and "outside the rolling range" in w for w in r.warnings)
     assert sum("highspeed:" in rec.getMessage() for rec in caplog.records) >= 2
     assert rederive_highspeed(brg, r) == []
+
+
+# ------------------------------------------------- fast paths of the solver (issue 22)
+def _near_solution_system(kw, control="outer", gyroscopic="harris", orbital="cage",
+                          tilt="fixed", seed=0):
+    """The solver's system at a state 1e-4 (relative) off a solved equilibrium."""
+    r = hs.solve(BRG, control=control, gyroscopic=gyroscopic, orbital=orbital, tilt=tilt,
+                 **kw)
+    model = hs._Model.of(BRG)
+    L = r.applied
+    free = hs._free_dofs(L, tilt)
+    sysm = hs._System(model, r.azimuths, L, free, r.speed_inner, r.speed_outer, gyroscopic,
+                      False, max(np.abs(L).max(), 1.0), r.outer_loads.max(), orbital)
+    sysm.outer = r.control == "outer"
+    X1, X2 = r.ball_positions.T
+    x = np.concatenate([X1, X2, r.displacements[free]])
+    rng = np.random.default_rng(seed)
+    return sysm, x * (1.0 + 1e-4 * rng.standard_normal(x.size))
+
+
+@pytest.mark.parametrize("kw, opts", [
+    (dict(Fa=5000.0, Fr=2000.0, speed_inner=10000 * RPM), dict()),
+    (dict(Fa=3000.0, Fr=2000.0, Fz=500.0, My=30.0, speed_inner=12000 * RPM),
+     dict(tilt="free", control="inner")),
+    (dict(Fa=3000.0, Fr=2000.0, speed_inner=12000 * RPM), dict(orbital="ball")),
+    (dict(Fa=4000.0, Fr=1000.0, speed_inner=8000 * RPM),
+     dict(control="inner", gyroscopic="controlling-race")),
+    (dict(Fa=4000.0, Fr=1000.0, speed_inner=8000 * RPM), dict(gyroscopic="none")),
+])
+def test_jacobian_equals_columnwise_central_differences(kw, opts):
+    """The solver's Jacobian (all perturbed states in one batch, per-ball 2 x 2 blocks
+    scattered by index, the cage speed held in the ball blocks and its coupling added
+    as a rank-one term) equals the plain definition: central differences of the full
+    residual vector one unknown at a time, the cage speed recomputed (step 1e-9 D, or
+    1e-9 D / R_i for a tilt).  Both are differences of the same residual, so they agree
+    to the differences' truncation and round-off: 1e-6 of the largest entry."""
+    sysm, x = _near_solution_system(kw, **opts)
+    J = sysm.jacobian(x)
+    n = x.size
+    Jref = np.empty((n, n))
+    for k in range(n):
+        h = 1e-9 * BRG.ball_diameter / (sysm.u_sc[k - 2 * sysm.Z] if k >= 2 * sysm.Z else 1)
+        e = np.zeros(n)
+        e[k] = h
+        Jref[:, k] = (sysm.residual(sysm.balls(x + e))
+                      - sysm.residual(sysm.balls(x - e))) / (2 * h)
+    # (tilt columns per metre at the groove-centre radius, like the others)
+    sc = np.r_[np.ones(2 * sysm.Z), sysm.u_sc]
+    assert np.max(np.abs((J - Jref) / sc)) <= 1e-6 * np.max(np.abs(Jref / sc))
+
+
+def test_batched_line_search_takes_the_plain_backtracking_steps(monkeypatch, caplog):
+    """The line search evaluates the halved steps 1/2 ... 1/64 in one batch and takes the
+    longest that decreases the merit enough; evaluated one at a time (plain
+    backtracking, ``_HALVINGS = [1]``) it must take the same steps: same iteration
+    count, same equilibrium to 1e-9.  A light combined load at 12,218 rpm, where the
+    first Newton steps are damped to 1/16."""
+    kw = dict(Fa=3541.685, Fr=2368.105, speed_inner=12218.0 * RPM)
+    with caplog.at_level("DEBUG", logger="ballrace.analytic.highspeed"):
+        a = hs.solve(BRG, **kw)
+    steps = [float(m.group(1)) for m in (
+        re.search(r"iteration \d+, step ([0-9.e+-]+)", rec.getMessage())
+        for rec in caplog.records) if m]
+    assert min(steps) < 0.5                       # the search did backtrack
+    monkeypatch.setattr(hs, "_HALVINGS", np.array([1.0]))
+    b = hs.solve(BRG, **kw)
+    assert a.iterations == b.iterations
+    Q = a.outer_loads.max()
+    assert np.max(np.abs(a.inner_loads - b.inner_loads)) <= 1e-9 * Q
+    assert np.max(np.abs(a.outer_loads - b.outer_loads)) <= 1e-9 * Q
+    assert np.max(np.abs(a.inner_contact_angles - b.inner_contact_angles)) <= 1e-9
+
+
+def test_batch_row_equals_single_state():
+    """A state taken from a batch evaluation (line search, Jacobian) is the state
+    evaluated alone, bit for bit in every per-ball quantity (the ring resultants to
+    1e-12: summation order).  The batch holds states with an open inner and an open
+    outer contact, so it takes the general path (blend weights, masks) while the single
+    states, all contacts closed, take the short one: this also checks that the short
+    path leaves out only terms that change nothing."""
+    sysm, x = _near_solution_system(dict(Fa=5000.0, Fr=2000.0, speed_inner=10000 * RPM))
+    X = x + np.outer([0.0, 0.5, 0.25, 0.0, 0.0], 1e-6 * x)
+    X[3, sysm.Z] += 0.01 * BRG.ball_diameter         # ball 1 pulled off the inner race
+    X[4, sysm.Z] -= 0.01 * BRG.ball_diameter         # ... and off the outer race
+    B = sysm.balls_rows(X)
+    assert B.row(3).Qi[0] == 0 and B.row(3).wgt_i[0] == 0
+    assert B.row(4).Qo[0] == 0 and B.row(4).wgt_o[0] == 0
+    for k in range(3):
+        a, b = B.row(k), sysm.balls(X[k])
+        assert np.all(b.Qi > 0) and np.all(b.Qo > 0)
+        for name in ("Qi", "Qo", "ai", "ao", "ai_k", "ao_k", "wgt_i", "wgt_o", "wc", "wR",
+                     "Fc", "Mg", "lam_i", "lam_o", "R1", "R2", "T", "P", "Mt"):
+            assert np.array_equal(getattr(a, name), getattr(b, name)), name
+        assert np.allclose(sysm.residual(a), sysm.residual(b), rtol=0,
+                           atol=1e-12 * np.max(np.abs(sysm.residual(b))))
+
+
+@pytest.mark.parametrize("kw", [dict(Fa=12478.9, Fr=941.3, speed_inner=7064.0 * RPM),
+                                dict(Fa=18766.3, Fr=2071.9, speed_inner=9821.0 * RPM),
+                                dict(Fa=4046.1, Fr=3912.3, speed_inner=8234.0 * RPM)])
+def test_chord_steps_do_not_change_the_equilibrium(kw, monkeypatch, caplog):
+    """Once Newton converges quadratically the solver reuses the last factorised
+    Jacobian (chord steps).  Without them (``_CHORD_START = 0``: a new Jacobian every
+    step) the equilibrium is the same to 1e-9 of the largest load and 1e-9 rad, and
+    both satisfy the independent re-derivation (tests/hsref.py)."""
+    with caplog.at_level("DEBUG", logger="ballrace.analytic.highspeed"):
+        a = hs.solve(BRG, **kw)
+    assert any("chord step" in rec.getMessage() for rec in caplog.records)
+    monkeypatch.setattr(hs, "_CHORD_START", 0.0)
+    b = hs.solve(BRG, **kw)
+    Q = a.outer_loads.max()
+    for name in ("inner_loads", "outer_loads"):
+        assert np.max(np.abs(getattr(a, name) - getattr(b, name))) <= 1e-9 * Q
+    for name in ("inner_contact_angles", "outer_contact_angles"):
+        assert np.max(np.abs(getattr(a, name) - getattr(b, name))) <= 1e-9
+    assert rederive_highspeed(BRG, a) == [] and rederive_highspeed(BRG, b) == []
