@@ -108,8 +108,10 @@ APPROXIMATION_ERROR = {
 
 _ALPHA_MAX = 1e8          # largest radius ratio handled (k ~ 1.2e5)
 _RTOL_K = 1e-12           # required relative accuracy of k
-_SERIES_M = 0.3           # below this m, K - E is summed as a series (_SERIES_TERMS terms)
-_SERIES_TERMS = 40        # 0.3^40 ~ 1e-21: exact to rounding for m < 0.3
+_BUILD_SERIES_M = 0.3     # table building and Newton: below this m, K - E as a series
+_BUILD_SERIES_TERMS = 40  # 0.3^40 ~ 1e-21: exact to rounding for m < 0.3
+_SERIES_M = 0.05          # the relation check: below this m, (K - E)/m as a series
+_SERIES_TERMS = 12        # 0.05^12 / 24 ~ 1e-17: exact to rounding for m < 0.05
 
 
 # --------------------------------------------------------------------------- geometry
@@ -221,10 +223,10 @@ def _ellip_parts(k: np.ndarray):
     E = special.ellipe(m)
     with np.errstate(divide="ignore", invalid="ignore"):
         D1 = np.atleast_1d((K - E) / m)
-    small = np.atleast_1d(m < _SERIES_M)
+    small = np.atleast_1d(m < _BUILD_SERIES_M)
     if np.any(small):
         ks = np.atleast_1d(k)[small]
-        D1[small] = _d1_series((ks - 1.0) * (ks + 1.0) / (ks * ks))
+        D1[small] = _d1_series((ks - 1.0) * (ks + 1.0) / (ks * ks), _BUILD_SERIES_TERMS)
     D1 = D1.reshape(np.shape(m))
     return np.log((K - D1) / (p * D1)), K, E
 
@@ -245,13 +247,14 @@ def d1_series_coefficients(n_terms: int = 17) -> np.ndarray:
     return np.array(coef[::-1])
 
 
-def _d1_series(m: np.ndarray) -> np.ndarray:
-    """(K(m) - E(m))/m by its power series (:func:`d1_series_coefficients`), m < 0.3.
+def _d1_series(m: np.ndarray, n_terms: int = _SERIES_TERMS) -> np.ndarray:
+    """(K(m) - E(m))/m by its power series (:func:`d1_series_coefficients`).
 
-    K - E loses about log10(4/(3m)) digits to cancellation; the series below m = 0.3
-    keeps Hertz's relation within a few rounding errors (1e-14 at m = 0.05 otherwise).
+    K - E loses about log10(4/(3m)) digits to cancellation; the series keeps Hertz's
+    relation within a few rounding errors where that matters: ``n_terms = 40`` for
+    m < 0.3 (building the tables), 12 for m < 0.05 (the check of :func:`_solve_k`).
     """
-    return np.polyval(d1_series_coefficients(_SERIES_TERMS), m)
+    return np.polyval(d1_series_coefficients(n_terms), m)
 
 
 _TABLE_N = 4096                       # intervals of the ln k(ln alpha) table
@@ -340,8 +343,8 @@ def _solve_k_newton(alpha: np.ndarray):
 _OCT_BITS = 6                          # 2^6 = 64 intervals per octave of alpha_r
 _SHIFT = 52 - _OCT_BITS                # float64 bits >> _SHIFT: exponent and top mantissa bits
 _FRAC_MASK = (1 << _SHIFT) - 1         # the remaining mantissa bits: position in the interval
-_FRAC_SCALE = 2.0 ** -_SHIFT
-_IDX0 = int(np.array(1.0).view(np.int64)) >> _SHIFT
+_ONE_BITS = int(np.array(1.0).view(np.int64))     # the bits of 1.0 (its low 52 bits are 0)
+_IDX0 = _ONE_BITS >> _SHIFT
 _DEG = 5                               # degree of the polynomial on each interval
 
 
@@ -357,9 +360,10 @@ def _poly_table():
     six Chebyshev points of t: the interpolation error, about (1/128)^6 / 6! relative,
     is far below rounding.  Built once, lazily (some 20 ms).
 
-    Returns (coef, s_max): ``coef[d]`` the coefficients of t^d (shape (6, n)), and
-    s_max >= d ln k / d ln alpha_r, which turns the residual of Hertz's relation into a
-    bound on the relative error in k (:func:`_solve_k`).
+    Returns (coef, s_max): ``coef[d]`` the coefficients of f^d, f = t/64 = the low 46
+    mantissa bits times 2^-52 (shape (6, n); the coefficients of t^d times 64^d, an
+    exact scaling), and s_max >= d ln k / d ln alpha_r, which turns the residual of
+    Hertz's relation into a bound on the relative error in k (:func:`_solve_k`).
     """
     n = ((int(np.array(_ALPHA_MAX).view(np.int64)) >> _SHIFT) - _IDX0) + 1
     tc = 0.5 - 0.5 * np.cos((2 * np.arange(_DEG + 1) + 1) * np.pi / (2 * _DEG + 2))
@@ -378,69 +382,90 @@ def _poly_table():
     V = np.vander(tc, _DEG + 1, increasing=True)          # k(t_c) = V coef
     coef = np.linalg.solve(V, k.T)
     coef[0, 0] = 1.0                                      # k(1) = 1 exactly (was 1 + ~1e-16)
+    coef *= np.ldexp(1.0, _OCT_BITS * np.arange(_DEG + 1))[:, None]   # t^d -> f^d
     s_max = 1.05 * float(np.max(_table()[2]))
     return np.ascontiguousarray(coef), s_max
 
 
-def _k_from_table(alpha: np.ndarray) -> np.ndarray:
-    """k(alpha_r) from :func:`_poly_table` (alpha_r: contiguous float64 in [1, 1e8])."""
+def _ellipticity_kernel(alpha, k, K, E, r, kk, m, w, idx, fbits, small):
+    """k, K, E of ``alpha`` (contiguous float64 in [1, 1e8]) and the check of Hertz's relation.
+
+    Writes into the given arrays of alpha's length: ``k`` from :func:`_poly_table`,
+    ``kk`` = k^2, ``m`` = 1 - 1/k^2, ``K`` = K(m), ``E`` = E(m) (SciPy), and ``r`` =
+    alpha_r(k) / alpha_r = (k^2 E - K) / ((K - E) alpha_r), with (K - E)/m summed as a
+    series below m = 0.05 (:func:`_d1_series`); ``w`` (float), ``idx``, ``fbits``
+    (int64) and ``small`` (bool) are work arrays.  Returns (min r, max r).
+    :func:`_solve_k_scalar` repeats these operations for one Python float.
+    """
     coef, _ = _poly_table()
     bits = alpha.view(np.int64)
-    idx = (bits >> _SHIFT) - _IDX0
-    t = (bits & _FRAC_MASK).astype(float)
-    t *= _FRAC_SCALE
-    k = coef[_DEG].take(idx)
-    for d in range(_DEG - 1, -1, -1):                    # Horner
-        k *= t
-        k += coef[d].take(idx)
-    return k
-
-
-def _relation(k: np.ndarray, alpha: np.ndarray):
-    """(K, E, alpha_r(k)/alpha_r - 1): the elliptic integrals at k and Hertz's relation.
-
-    alpha_r(k) = D2/(p D1), p = 1/k^2, D1 = (K - E)/m, D2 = K - D1 (as :func:`_ellip_parts`,
-    with the series for D1 below m = 0.05).
-    """
-    p = 1.0 / (k * k)
-    m = 1.0 - p
-    K = special.ellipkm1(p)           # K(m) with m = 1 - p; accurate as m -> 1
-    E = special.ellipe(m)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        D1 = (K - E) / m
-    small = m < _SERIES_M
+    np.subtract(bits, _ONE_BITS, out=idx)                # interval: exponent and top bits
+    np.right_shift(idx, _SHIFT, out=idx)
+    np.bitwise_and(bits, _FRAC_MASK, out=fbits)          # position: 1 + f, f in [0, 1/64)
+    np.bitwise_or(fbits, _ONE_BITS, out=fbits)
+    f = fbits.view(np.float64)
+    np.subtract(f, 1.0, out=f)                            # exact
+    np.take(coef[_DEG], idx, out=k, mode="wrap")          # Horner (indices in range)
+    for d in range(_DEG - 1, -1, -1):
+        np.multiply(k, f, out=k)
+        np.take(coef[d], idx, out=w, mode="wrap")
+        np.add(k, w, out=k)
+    np.multiply(k, k, out=kk)
+    np.divide(1.0, kk, out=m)                             # p = 1/k^2
+    special.ellipkm1(m, out=K)                            # K(1 - p), accurate as p -> 0
+    np.subtract(1.0, m, out=m)                            # m = 1 - p, exact
+    special.ellipe(m, out=E)
+    np.multiply(kk, E, out=r)                             # Hertz's relation
+    np.subtract(r, K, out=r)
+    np.subtract(K, E, out=w)
+    np.multiply(w, alpha, out=w)
+    np.divide(r, w, out=r)
+    np.less(m, _SERIES_M, out=small)
     if small.any():
-        ks = k[small]
-        D1[small] = _d1_series((ks - 1.0) * (ks + 1.0) / (ks * ks))
-    rel = (K - D1) / (p * D1 * alpha)
-    rel -= 1.0
-    return K, E, rel
+        # near the circle K - E cancels: with D1 = (K - E)/m, alpha_r(k) = k^2 (K - D1)/D1
+        i = np.flatnonzero(small)
+        D1 = _d1_series(m[i])
+        r[i] = kk[i] * (K[i] - D1) / (D1 * alpha[i])
+    return float(r.min()), float(r.max())
+
+
+def _check_relation(alpha, k, K, E, r, lo, hi):
+    """Where |alpha_r(k)/alpha_r - 1| s_max > 1e-12, k, K, E by :func:`_solve_k_newton`.
+
+    |r - 1| s_max bounds the relative error in k (it is a few 1e-16 for the table; the
+    residual itself is computed to some 1e-14 where K - E cancels, 0.05 <= m < 0.3).
+    """
+    s_max = _poly_table()[1]
+    if not max(1.0 - lo, hi - 1.0) * s_max <= _RTOL_K:
+        bad = ~(np.abs(r - 1.0) * s_max <= _RTOL_K)
+        log.debug("ellipticity: %d values polished by Newton", int(bad.sum()))
+        kb, Kb, Eb = _solve_k_newton(alpha[bad])
+        k[bad], K[bad], E[bad] = kb, Kb, Eb
 
 
 def _solve_k(alpha: np.ndarray):
     """Ellipticity k(alpha) for alpha >= 1 to 1e-12 relative; returns (k, K, E).
 
-    k from :func:`_poly_table`, then K(m), E(m) at that k and Hertz's relation checked:
-    |alpha_r(k)/alpha_r - 1| s_max bounds the relative error in k (it is a few 1e-16);
-    where it exceeds 1e-12, :func:`_solve_k_newton` takes over.
+    k from :func:`_poly_table`, then K(m), E(m) at that k and Hertz's relation checked
+    (:func:`_ellipticity_kernel`): |alpha_r(k)/alpha_r - 1| s_max bounds the relative error
+    in k (it is a few 1e-16); where it exceeds 1e-12, :func:`_solve_k_newton` takes over.
     """
     shape = np.shape(alpha)
     alpha = np.array(alpha, dtype=float, copy=None).reshape(-1)    # contiguous, 1-d
     if not alpha.flags.c_contiguous:
         alpha = alpha.copy()
-    k = _k_from_table(alpha)
-    K, E, rel = _relation(k, alpha)
-    s_max = _poly_table()[1]
-    lo, hi = float(rel.min(initial=0.0)), float(rel.max(initial=0.0))
-    if not max(-lo, hi) * s_max <= _RTOL_K:
-        bad = ~(np.abs(rel) * s_max <= _RTOL_K)
-        log.debug("ellipticity: %d values polished by Newton", int(bad.sum()))
-        kb, Kb, Eb = _solve_k_newton(alpha[bad])
-        k[bad], K[bad], E[bad] = kb, Kb, Eb
+    n = alpha.size
+    k, K, E, r, kk, m, w = np.empty((7, n))
+    idx, fbits = np.empty((2, n), dtype=np.int64)
+    with np.errstate(divide="ignore", invalid="ignore"):     # the circle, m = 0: series
+        lo, hi = _ellipticity_kernel(alpha, k, K, E, r, kk, m, w, idx, fbits,
+                                     np.empty(n, dtype=bool))
+    _check_relation(alpha, k, K, E, r, lo, hi)
     return k.reshape(shape), K.reshape(shape), E.reshape(shape)
 
 
 _FLOAT64, _INT64 = struct.Struct("d"), struct.Struct("q")
+_F_SCALE = 2.0 ** -52
 
 
 @functools.cache
@@ -457,27 +482,25 @@ def _d1_coef_list() -> list:
 def _solve_k_scalar(alpha: float):
     """:func:`_solve_k` for one Python float, the same operations in the same order
     (bit-for-bit the same result; ``tests/test_speed_paths.py``)."""
-    coef, s_max = _poly_table()
     bits = _INT64.unpack(_FLOAT64.pack(alpha))[0]
-    i = (bits >> _SHIFT) - _IDX0
-    t = float(bits & _FRAC_MASK) * _FRAC_SCALE
-    c = _poly_rows()[i]
+    c = _poly_rows()[(bits - _ONE_BITS) >> _SHIFT]
+    f = float(bits & _FRAC_MASK) * _F_SCALE              # = (1 + f) - 1 of the array path
     k = c[_DEG]
     for d in range(_DEG - 1, -1, -1):
-        k = k * t + c[d]
-    p = 1.0 / (k * k)
-    m = 1.0 - p
+        k = k * f + c[d]
+    kk = k * k
+    p = 1.0 / kk
     K = float(special.ellipkm1(p))
+    m = 1.0 - p
     E = float(special.ellipe(m))
     if m < _SERIES_M:
-        ms = (k - 1.0) * (k + 1.0) / (k * k)
         D1 = 0.0
         for cf in _d1_coef_list():
-            D1 = D1 * ms + cf
+            D1 = D1 * m + cf
+        r = kk * (K - D1) / (D1 * alpha)
     else:
-        D1 = (K - E) / m
-    rel = (K - D1) / (p * D1 * alpha) - 1.0
-    if not abs(rel) * s_max <= _RTOL_K:
+        r = (kk * E - K) / ((K - E) * alpha)
+    if not abs(r - 1.0) * _poly_table()[1] <= _RTOL_K:
         kb, Kb, Eb = _solve_k_newton(np.array([alpha]))
         return float(kb[0]), float(Kb[0]), float(Eb[0])
     return k, K, E
@@ -651,32 +674,20 @@ def _radius_ratio(Rx, Ry) -> np.ndarray:
 def _contact_from_parts(Q, Rx, Ry, Ep, method) -> HertzContact:
     r"""Internal: contact for validated, broadcast arrays.
 
-    Hamrock & Dowson (1981) eqs. 3.8-3.16, 3.33; Ricci (2009) eqs. 12-13, with one cube
-    root: b = (6 E Q R / (pi k E'))^(1/3), a = k b, and the approach
-    delta = K (9/(2 E R)) (Q/(pi k E'))^2)^(1/3) = K b^2 / (2 E R).
-    :func:`_contact_scalar` repeats these operations for one contact.
+    Hamrock & Dowson (1981) eqs. 3.8-3.16, 3.33; Ricci (2009) eqs. 12-13.  The exact
+    method runs :func:`_exact_kernel` on blocks that stay in cache; the simplified ones
+    :func:`_contact_arrays`.
     """
-    n = np.size(Q)
-    if np.ndim(Q) == 1 and n > 2 * _BLOCK:
-        # blocks that stay in cache: the temporaries of a whole 10^5-element array are
-        # fresh megabyte allocations (page faults) and cache misses
+    if method == "exact":
+        out = _contact_exact(Q, Rx, Ry, Ep)
+    elif np.ndim(Q) == 1 and np.size(Q) > 2 * _BLOCK:
+        n = np.size(Q)
         out = [np.empty(n) for _ in range(8)]
-        work = [np.empty(_BLOCK) for _ in range(7)]
-        iwork = [np.empty(_BLOCK, dtype=np.int64) for _ in range(2)]
-        try:
-            for i in range(0, n, _BLOCK):
-                j = min(i + _BLOCK, n)
-                o = [v[i:j] for v in out]
-                if method == "exact":
-                    _exact_block(Q[i:j], Rx[i:j], Ry[i:j], Ep[i:j], o,
-                                 [w[:j - i] for w in work], [w[:j - i] for w in iwork])
-                else:
-                    for dst, v in zip(o, _contact_arrays(Q[i:j], Rx[i:j], Ry[i:j], Ep[i:j],
-                                                         method)):
-                        dst[...] = v
-        except ValueError:
-            _radius_ratio(Rx, Ry)              # the message for the whole array
-            raise
+        for i in range(0, n, _BLOCK):
+            j = min(i + _BLOCK, n)
+            for dst, v in zip(out, _contact_arrays(Q[i:j], Rx[i:j], Ry[i:j], Ep[i:j],
+                                                   method)):
+                dst[...] = v
     else:
         out = _contact_arrays(Q, Rx, Ry, Ep, method)
     k, a, b, approach, p_max, stiffness, K, E = out
@@ -687,91 +698,87 @@ def _contact_from_parts(Q, Rx, Ry, Ep, method) -> HertzContact:
 
 
 _BLOCK = 8192                          # elements per block of the vectorized contact
+_PI_6 = np.pi / 6.0
+_STIFF = np.pi * math.sqrt(2.0) / 3.0   # pi k E' sqrt(2 E R / (9 K^3)) = this k E' sqrt(ER/K)/K
 
 
-def _exact_block(Q, Rx, Ry, Ep, out, w, iw):
-    """:func:`_contact_arrays` (exact method) for one block, in place.
+def _contact_exact(Q, Rx, Ry, Ep):
+    """(k, a, b, approach, p_max, stiffness, K, E) of the exact method, any shape.
 
-    The same operations in the same order, written into the output slices ``out`` =
-    (k, a, b, approach, p_max, stiffness, K, E) and the block-sized work arrays ``w``
-    (7 float) and ``iw`` (2 int64): no allocation per operation, everything in cache.
-    Bit-for-bit the result of :func:`_contact_arrays` (``tests/test_speed_paths.py``).
+    Flattened, in blocks of :data:`_BLOCK` contacts written into one preallocated output
+    (the temporaries of a whole 10^5-element array would be fresh megabyte allocations
+    and cache misses).  A modulus that is one number broadcast (zero strides) enters the
+    kernel as a Python float: the same products, without a pass for them.
+    """
+    shape = np.shape(Q)
+    n = int(np.size(Q))
+    Q, Rx, Ry = (np.reshape(x, -1) for x in (Q, Rx, Ry))
+    Ep = np.asarray(Ep)
+    ep = float(Ep.flat[0]) if not any(Ep.strides) else np.reshape(Ep, -1)
+    out = np.empty((8, n))
+    nb = min(n, _BLOCK)
+    work = np.empty((6, nb))
+    iwork = np.empty((2, nb), dtype=np.int64)
+    small = np.empty(nb, dtype=bool)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for i in range(0, n, nb):
+            j = min(i + nb, n)
+            L = j - i
+            ok = _exact_kernel(Q[i:j], Rx[i:j], Ry[i:j], ep if type(ep) is float else ep[i:j],
+                               out[:, i:j], work[:, :L], iwork[:, :L], small[:L])
+            if not ok:
+                _radius_ratio(Rx, Ry)                  # raises, worded for the whole array
+    return [v.reshape(shape) for v in out]
+
+
+def _exact_kernel(Q, Rx, Ry, ep, out, w, iw, small) -> bool:
+    r"""The exact contact of one block, in place: no allocation per operation.
+
+    Writes ``out`` = (k, a, b, approach, p_max, stiffness, K, E); ``w`` (6 float),
+    ``iw`` (2 int64), ``small`` (bool) are work arrays; ``ep`` is E' (array or float).
+    With k, K, E from :func:`_ellipticity_kernel` (checked by :func:`_check_relation`),
+    R = Rx Ry/(Rx + Ry) and one cube root,
+
+    .. math:: b = \left(\frac{6 \mathcal{E} R Q}{\pi k E'}\right)^{1/3}, \quad a = k b,
+              \quad \delta = \frac{\mathcal{K} b^2}{2 \mathcal{E} R}, \quad
+              p_{max} = \frac{3 Q}{2 \pi a b} = \frac{E' b}{4 \mathcal{E} R}, \quad
+              K_c = \pi k E' \left(\frac{2 \mathcal{E} R}{9 \mathcal{K}^3}\right)^{1/2}
+
+    (the p_max form follows from b^3; it is 0 for Q = 0 without a special case).
+    Returns False when a radius ratio exceeds 1e8 (nothing else computed).
+    :func:`_contact_scalar` repeats these operations for one contact.
     """
     k, a, b, approach, p_max, stiff, K, E = out
-    alpha, w1, w2, w3, w4, w5, w6 = w
-    np.maximum(Rx, Ry, out=alpha)                         # _radius_ratio
-    np.minimum(Rx, Ry, out=w1)
-    np.divide(alpha, w1, out=alpha)
-    if not alpha.max(initial=1.0) <= _ALPHA_MAX:
-        raise ValueError("radius ratio")                  # reworded for the whole array
-    coef, s_max = _poly_table()                           # _k_from_table
-    bits = alpha.view(np.int64)
-    idx, tb = iw
-    np.right_shift(bits, _SHIFT, out=idx)
-    np.subtract(idx, _IDX0, out=idx)
-    np.bitwise_and(bits, _FRAC_MASK, out=tb)
-    t = w1
-    t[...] = tb
-    np.multiply(t, _FRAC_SCALE, out=t)
-    np.take(coef[_DEG], idx, out=k)
-    for d in range(_DEG - 1, -1, -1):
-        np.multiply(k, t, out=k)
-        np.add(k, np.take(coef[d], idx, out=w2), out=k)
-    p, m, D1 = w2, w3, w4                                 # _relation
-    np.multiply(k, k, out=p)
-    np.divide(1.0, p, out=p)
-    np.subtract(1.0, p, out=m)
-    special.ellipkm1(p, out=K)
-    special.ellipe(m, out=E)
-    np.subtract(K, E, out=D1)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        np.divide(D1, m, out=D1)
-    small = m < _SERIES_M
-    if small.any():
-        ks = k[small]
-        D1[small] = _d1_series((ks - 1.0) * (ks + 1.0) / (ks * ks))
-    np.multiply(p, D1, out=w5)
-    np.multiply(w5, alpha, out=w5)
-    np.subtract(K, D1, out=w6)
-    np.divide(w6, w5, out=w6)                             # rel + 1
-    lo, hi = float(w6.min()) - 1.0, float(w6.max()) - 1.0
-    if not max(-lo, hi) * s_max <= _RTOL_K:
-        rel = w6 - 1.0
-        bad = ~(np.abs(rel) * s_max <= _RTOL_K)
-        log.debug("ellipticity: %d values polished by Newton", int(bad.sum()))
-        kb, Kb, Eb = _solve_k_newton(alpha[bad])
-        k[bad], K[bad], E[bad] = kb, Kb, Eb
-    R, ER, c = w1, w2, w3                                 # the contact
-    np.multiply(Rx, Ry, out=R)
-    np.add(Rx, Ry, out=w4)
-    np.divide(R, w4, out=R)
-    np.multiply(E, R, out=ER)
-    np.multiply(6.0 / np.pi, ER, out=c)
-    np.multiply(c, Q, out=c)
-    np.divide(c, Ep, out=c)
+    mx, mn, alpha, kk, m, t = w
+    np.maximum(Rx, Ry, out=mx)
+    np.minimum(Rx, Ry, out=mn)
+    np.divide(mx, mn, out=alpha)
+    if not alpha.max() <= _ALPHA_MAX:
+        return False
+    r = a                                                # a, b: work space until the end
+    lo, hi = _ellipticity_kernel(alpha, k, K, E, r, kk, m, t, iw[0], iw[1], small)
+    _check_relation(alpha, k, K, E, r, lo, hi)
+    ER, c, h = kk, m, t
+    np.multiply(mx, mn, out=ER)                          # R = Rx Ry / (Rx + Ry)
+    np.add(mx, mn, out=mx)
+    np.divide(ER, mx, out=ER)
+    np.multiply(E, ER, out=ER)                           # E R
+    np.multiply(ER, Q, out=c)
+    np.divide(c, ep * _PI_6, out=c)
     np.divide(c, k, out=c)
     np.cbrt(c, out=b)
     np.multiply(b, k, out=a)
+    np.add(ER, ER, out=h)
+    np.divide(b, h, out=h)                               # b / (2 E R)
+    np.multiply(h, ep * 0.5, out=p_max)
     np.multiply(K, b, out=approach)
-    np.multiply(approach, b, out=approach)
-    np.multiply(2.0, ER, out=w4)
-    np.divide(approach, w4, out=approach)
-    ab = w5
-    np.multiply(a, b, out=ab)
-    if (Q == 0).any():
-        with np.errstate(divide="ignore", invalid="ignore"):
-            p_max[...] = np.where(Q == 0, 0.0, (1.5 / np.pi) * Q / ab)
-    else:
-        np.multiply(1.5 / np.pi, Q, out=p_max)
-        np.divide(p_max, ab, out=p_max)
-    np.multiply(2.0 / 9.0, ER, out=w6)
-    np.multiply(K, K, out=w4)
-    np.multiply(w4, K, out=w4)
-    np.divide(w6, w4, out=w6)
-    np.sqrt(w6, out=w6)
-    np.multiply(np.pi, k, out=stiff)
-    np.multiply(stiff, Ep, out=stiff)
-    np.multiply(stiff, w6, out=stiff)
+    np.multiply(approach, h, out=approach)
+    np.divide(ER, K, out=ER)
+    np.sqrt(ER, out=ER)
+    np.divide(ER, K, out=ER)
+    np.multiply(ER, k, out=ER)
+    np.multiply(ER, ep * _STIFF, out=stiff)
+    return True
 
 
 def _contact_arrays(Q, Rx, Ry, Ep, method):
@@ -805,27 +812,25 @@ def _contact_arrays(Q, Rx, Ry, Ep, method):
 
 
 def _contact_scalar(Q: float, Rx: float, Ry: float, Ep: float) -> HertzContact:
-    """:func:`_contact_from_parts` (exact method) for one contact of Python floats.
+    """:func:`_exact_kernel` for one contact of Python floats.
 
     The same operations in the same order on Python floats (IEEE double, like NumPy's),
     NumPy's own ``cbrt`` and SciPy's elliptic integrals: bit-for-bit the array path's
     result (``tests/test_speed_paths.py``), some 20 times faster.  Inputs validated.
     """
-    alpha = (Rx if Rx > Ry else Ry) / (Ry if Rx > Ry else Rx)
+    mx, mn = (Rx, Ry) if Rx >= Ry else (Ry, Rx)
+    alpha = mx / mn
     if not alpha <= _ALPHA_MAX:
         return _contact_from_parts(*np.broadcast_arrays(Q, Rx, Ry, Ep), "exact")  # raises
     k, K, E = _solve_k_scalar(alpha)
-    R = Rx * Ry / (Rx + Ry)
-    ER = E * R
-    c = (6.0 / np.pi) * ER * Q / Ep / k
+    ER = E * (mx * mn / (mx + mn))
+    c = ER * Q / (Ep * _PI_6) / k
     b = float(_cbrt(c))
-    a = b * k
-    approach = K * b * b / (2.0 * ER)
-    p_max = (1.5 / np.pi) * Q / (a * b) if Q != 0 else 0.0
-    stiffness = (np.pi * k) * Ep * math.sqrt((2.0 / 9.0) * ER / (K * K * K))
+    h = b / (ER + ER)
     f = np.float64
-    return HertzContact(load=f(Q), Rx=f(Rx), Ry=f(Ry), E_prime=f(Ep), k=f(k), a=f(a), b=f(b),
-                        approach=f(approach), p_max=f(p_max), stiffness=f(stiffness),
+    return HertzContact(load=f(Q), Rx=f(Rx), Ry=f(Ry), E_prime=f(Ep), k=f(k), a=f(b * k),
+                        b=f(b), approach=f(K * b * h), p_max=f(h * (Ep * 0.5)),
+                        stiffness=f(math.sqrt(ER / K) / K * k * (Ep * _STIFF)),
                         ellipk=f(K), ellipe=f(E), method="exact")
 
 
