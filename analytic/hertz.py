@@ -711,14 +711,14 @@ def _contact_from_parts(Q, Rx, Ry, Ep, method) -> HertzContact:
     """
     if method == "exact":
         out = _contact_exact(Q, Rx, Ry, Ep)
-    elif np.ndim(Q) == 1 and np.size(Q) > 2 * _BLOCK:
+    elif np.ndim(Q) == 1 and np.size(Q) > 2 * _BLOCK_SIMPLIFIED:
         n = np.size(Q)
         out = [np.empty(n) for _ in range(8)]
-        for i in range(0, n, _BLOCK):
-            j = min(i + _BLOCK, n)
+        for i in range(0, n, _BLOCK_SIMPLIFIED):
+            j = min(i + _BLOCK_SIMPLIFIED, n)
             for dst, v in zip(out, _contact_arrays(Q[i:j], Rx[i:j], Ry[i:j], Ep[i:j],
                                                    method)):
-                dst[...] = v
+                dst[i:j] = v
     else:
         out = _contact_arrays(Q, Rx, Ry, Ep, method)
     k, a, b, approach, p_max, stiffness, K, E = out
@@ -728,7 +728,8 @@ def _contact_from_parts(Q, Rx, Ry, Ep, method) -> HertzContact:
                         ellipk=s(K), ellipe=s(E), method=method)
 
 
-_BLOCK = 32768                         # elements per block of the vectorized contact
+_BLOCK = 32768                         # elements per block of the exact vectorized contact
+_BLOCK_SIMPLIFIED = 8192               # the same for the simplified methods
 _PI_6 = np.pi / 6.0
 _STIFF = np.pi * math.sqrt(2.0) / 3.0   # pi k E' sqrt(2 E R / (9 K^3)) = this k E' sqrt(ER/K)/K
 _CBRT_MAGIC = 0x2A9F7893782DA1CE        # bits of a first cube root: bits(c)/3 + this
