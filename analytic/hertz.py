@@ -337,13 +337,13 @@ def _solve_k_newton(alpha: np.ndarray):
     return k, K, E
 
 
-_OCT_BITS = 6                          # 2^6 = 64 intervals per octave of alpha_r
+_OCT_BITS = 8                          # 2^8 = 256 intervals per octave of alpha_r
 _SHIFT = 52 - _OCT_BITS                # float64 bits >> _SHIFT: exponent and top mantissa bits
 _FRAC_MASK = (1 << _SHIFT) - 1         # the remaining mantissa bits: position in the interval
 _ONE_BITS = int(np.array(1.0).view(np.int64))     # the bits of 1.0 (its low 52 bits are 0)
 _IDX0 = _ONE_BITS >> _SHIFT
-_DEGREES = (5, 6, 5)                   # polynomial degree of k, E, D1 on each interval
-_TABLE_TOL = 2e-15                     # the tables' largest relative error at the midpoints
+_DEG = 4                               # polynomial degree of k, E, D1 on each interval
+_TABLE_TOL = 2e-15                     # largest relative error allowed when built
 
 
 def _ellip_e_d1(k: np.ndarray):
@@ -356,20 +356,27 @@ def _ellip_e_d1(k: np.ndarray):
     return special.ellipe(1.0 - p), special.elliprd(0.0, p, 1.0) / 3.0
 
 
-def _polish(alpha: np.ndarray, k: np.ndarray) -> np.ndarray:
-    """k polished to rounding by Newton's method on Hertz's relation in the form
-    k^2 E / D1 = 1 + alpha_r (no cancellation, no logarithm)."""
-    s = _table_lookup(np.log(alpha))[1]                  # d ln k / d ln alpha_r
-    for _ in range(3):
+def _exact_nodes(alpha: np.ndarray):
+    """k, E, D1 at radius ratios alpha > 1 to rounding (table building).
+
+    Newton's method on Hertz's relation in the form k^2 E / D1 = 1 + alpha_r (no
+    cancellation, no logarithm) from :func:`_table`'s start (~1e-14; one step reaches
+    rounding, the second is a margin); ``RuntimeError`` unless the final residual bounds
+    the relative error in k by :data:`_TABLE_TOL`.
+    """
+    u, s = _table_lookup(np.log(alpha))                  # ln k, d ln k / d ln alpha_r
+    g = s * (1.0 + alpha) / alpha                         # d ln k / d ln(1 + alpha_r)
+    k = np.exp(u)
+    for it in range(3):
         E, D1 = _ellip_e_d1(k)
         F = k * k * E / (D1 * (1.0 + alpha)) - 1.0       # relative residual in 1 + alpha_r
-        k = k - k * F * s * (1.0 + alpha) / alpha
-    return k
-
-
-def _fit_nodes(deg: int) -> np.ndarray:
-    """Chebyshev points of [0, 1) for a degree-``deg`` interpolant."""
-    return 0.5 - 0.5 * np.cos((2 * np.arange(deg + 1) + 1) * np.pi / (2 * deg + 2))
+        if it < 2:
+            k = k - k * F * g
+    err = float(np.max(np.abs(F * g)))
+    if not err <= _TABLE_TOL:
+        raise RuntimeError(f"Hertz ellipticity tables: Newton residual {err:.2e} (relative "
+                           f"in k) after 2 iterations (> {_TABLE_TOL:g})")
+    return k, E, D1
 
 
 def _interval_points(t: np.ndarray, n: int) -> np.ndarray:
@@ -382,42 +389,40 @@ def _interval_points(t: np.ndarray, n: int) -> np.ndarray:
 
 @functools.cache
 def _poly_table():
-    """Piecewise polynomials of k, E and D1 = (K - E)/m in alpha_r, 64 intervals per octave.
+    """Piecewise polynomials of k, E and D1 = (K - E)/m in alpha_r, 256 intervals per octave.
 
-    Interval i = 64 e + j covers alpha_r in [2^e (1 + j/64), 2^e (1 + (j + 1)/64)),
+    Interval i = 256 e + j covers alpha_r in [2^e (1 + j/256), 2^e (1 + (j + 1)/256)),
     1 <= alpha_r <= 1e8; it is read from the bits of the float64 alpha_r (exponent and the
-    top six mantissa bits), and the remaining mantissa bits are the position t in [0, 1)
+    top eight mantissa bits), and the remaining mantissa bits are the position t in [0, 1)
     inside it, so neither a logarithm nor an exponential is needed.  On each interval each
-    quantity is the polynomial (degrees :data:`_DEGREES`) through its exact values at
-    Chebyshev points of t: k by Newton's method on Hertz's relation polished to rounding
-    (:func:`_polish`), E(m) by SciPy's ``ellipe`` and D1 by Carlson's R_D
-    (:func:`_ellip_e_d1`), both within 3e-16 of a 30-digit reference.  Built once,
-    lazily (some 40 ms), and checked at every interval's midpoint against the same exact
-    values: ``RuntimeError`` if any is off by more than 2e-15 relative.
+    quantity is the degree-4 polynomial through its exact values at five Chebyshev points
+    of t (:func:`_exact_nodes`: k by Newton's method polished to rounding, E(m) by SciPy's
+    ``ellipe``, D1 by Carlson's R_D, both within 3e-16 of a 30-digit reference).  Built
+    once, lazily (some 50 ms), and checked at every interval's midpoint against the same
+    exact values: ``RuntimeError`` if any is off by more than 2e-15 relative (measured
+    max 1.1e-15 against 30-digit mpmath, ``tests/test_hertz_speed.py``).
 
     Returns (coefs, s_max): ``coefs`` the coefficient arrays of k, E, D1, each of shape
-    (degree + 1, n), row d the coefficients of f^d, f = t/64 = the low 46 mantissa bits
-    times 2^-52 (those of t^d times 64^d, an exact scaling); s_max >= d ln k / d ln alpha_r,
+    (5, n), row d the coefficients of f^d, f = t/256 = the low 44 mantissa bits times
+    2^-52 (those of t^d times 256^d, an exact scaling); s_max >= d ln k / d ln alpha_r,
     which turns the residual of Hertz's relation into a bound on the relative error in k
     (:func:`_check_relation`).
     """
     n = ((int(np.array(_ALPHA_MAX).view(np.int64)) >> _SHIFT) - _IDX0) + 1
+    tc = 0.5 - 0.5 * np.cos((2 * np.arange(_DEG + 1) + 1) * np.pi / (2 * _DEG + 2))
+    V = np.vander(tc, _DEG + 1, increasing=True)          # values at tc = V coef
+    scale = np.ldexp(1.0, _OCT_BITS * np.arange(_DEG + 1))[:, None]    # t^d -> f^d
+    exact = _exact_nodes(_interval_points(tc, n).ravel())
     coefs = []
-    for q, deg in enumerate(_DEGREES):
-        tc = _fit_nodes(deg)
-        alpha = _interval_points(tc, n)
-        k = _polish(alpha.ravel(), _solve_k_newton(alpha.ravel())[0])
-        y = (k, *_ellip_e_d1(k))[q].reshape(n, deg + 1)
-        c = np.linalg.solve(np.vander(tc, deg + 1, increasing=True), y.T)
-        c[0, 0] = (1.0, 0.5 * np.pi, 0.25 * np.pi)[q]    # the circle exactly: k = 1, pi/2, pi/4
-        c *= np.ldexp(1.0, _OCT_BITS * np.arange(deg + 1))[:, None]     # t^d -> f^d
-        coefs.append(np.ascontiguousarray(c))
+    for y, circle in zip(exact, (1.0, 0.5 * np.pi, 0.25 * np.pi)):
+        c = np.linalg.solve(V, y.reshape(n, _DEG + 1).T)
+        c[0, 0] = circle                                  # alpha_r = 1 exactly: k = 1, pi/2, pi/4
+        coefs.append(np.ascontiguousarray(c * scale))
     coefs = tuple(coefs)
-    alpha = _interval_points(np.array([0.5]), n).ravel()          # the check at midpoints
-    k = _polish(alpha, _solve_k_newton(alpha)[0])
+    exact = _exact_nodes(_interval_points(np.array([0.5]), n).ravel())   # the midpoints
     f = np.full(n, 0.5 * 2.0 ** -_OCT_BITS)
     idx = np.arange(n)
-    for c, y in zip(coefs, (k, *_ellip_e_d1(k))):
+    for c, y in zip(coefs, exact):
         err = float(np.max(np.abs(_horner(c, idx, f, np.empty(n), np.empty(n)) / y - 1.0)))
         if not err <= _TABLE_TOL:
             raise RuntimeError(f"Hertz ellipticity tables: relative error {err:.2e} at an "
