@@ -18,17 +18,22 @@ The exact solution needs the ellipticity k from Hertz's transcendental equation
           {\mathcal{K}(m) - \mathcal{E}(m)}, \qquad m = 1 - 1/k^2,
 
 with the complete elliptic integrals K (first kind) and E (second kind).  It is
-solved here to 1e-12 relative in k for 1 <= alpha_r <= 1e8: k is read from piecewise
-polynomials of alpha_r (64 intervals per octave, degree 5, built once, lazily, in some
-20 ms by Newton's method on the exact relation and accurate to rounding), then K and E
-are evaluated at that k and the relation is checked before anything is returned: its
-residual bounds the error in k (a few 1e-16; beyond 1e-12 Newton's method takes over,
-``RuntimeError`` with the residual and iteration count if that ever fails).  One K and
-one E per contact, no logarithm: measured max relative error 1.8e-15 against a 30-digit
-mpmath reference; throughput against scipy's ``ellipk`` + ``ellipe`` alone in
-``benchmarks/core_table.py`` (docs/performance.md).  Near the circle (m < 0.3) the
-difference K - E is summed as a series so there is no cancellation.  One contact of
-plain numbers takes a scalar path with the same operations (bit-for-bit the same result).
+solved here to 1e-12 relative in k for 1 <= alpha_r <= 1e8.  k, E and D1 = (K - E)/m
+are read from piecewise polynomials of alpha_r (256 intervals per octave, degree 4,
+indexed by the bits of the float: no logarithm), built once, lazily, in some 50 ms from
+exact values (k by Newton's method polished to rounding, E by SciPy's ``ellipe``, D1 by
+Carlson's R_D, DLMF 19.25.1) and checked at every interval's midpoint; K = E + m D1.
+Hertz's relation, in the form 1 + alpha_r = k^2 E / D1 (no cancellation anywhere, the
+circle included), is checked for every contact before anything is returned: with E
+and D1 right to rounding its residual bounds the error in k (a few 1e-16; beyond 1e-12,
+or if a table were wrong, Newton's method with SciPy's
+K and E takes over, ``RuntimeError`` with the residual and iteration count if that ever
+fails).  Measured max relative error of k, K and E against a 30-digit mpmath reference:
+1.1e-15 (``tests/test_hertz_speed.py``, a point in each interval up to alpha_r = 1e6).
+The semi-axes come from one cube root (a bit-level start, one Halley and two Newton
+steps: about one rounding error).  Throughput against SciPy's ``ellipk`` + ``ellipe``
+alone in ``benchmarks/core_table.py`` (docs/performance.md).  One contact of plain
+numbers takes a scalar path with the same operations (bit-for-bit the same result).
 
 Accuracy of the simplified formulas: maximum |relative error| against the exact
 solution over 1 <= alpha_r <= alpha_max (4001 log-spaced ratios; regenerate with
