@@ -450,12 +450,12 @@ def _horner(c: np.ndarray, idx: np.ndarray, f: np.ndarray, out: np.ndarray, w: n
 def _ellipticity_kernel(alpha, k, K, E, r, kk, D1, w, idx, fbits):
     """k, K, E of ``alpha`` (contiguous float64 in [1, 1e8]) and the check of Hertz's relation.
 
-    Writes into the given arrays of alpha's length: ``k``, ``E`` and ``D1`` = (K - E)/m
-    from :func:`_poly_table`, ``kk`` = k^2, ``K`` = E + m D1 (m = 1 - 1/k^2), and
-    ``r`` = k^2 E / (D1 (1 + alpha_r)), which is 1 by Hertz's relation
-    alpha_r = (k^2 E - K)/(K - E) (Hamrock & Dowson 1981 eq. 3.14) in the form
-    1 + alpha_r = k^2 E / D1: no cancellation anywhere, the circle included.  ``w``
-    (float), ``idx`` and ``fbits`` (int64) are work arrays.  Returns (min r, max r).
+    Writes into the given arrays of alpha's length: ``k`` and ``E`` from
+    :func:`_poly_table`, ``K`` = E + m D1 (m = 1 - 1/k^2, D1 = (K - E)/m tabulated too),
+    ``kk`` = k^2, ``w`` = 1 + alpha_r and ``r`` = k^2 E / (D1 (1 + alpha_r)), which is 1
+    by Hertz's relation alpha_r = (k^2 E - K)/(K - E) (Hamrock & Dowson 1981 eq. 3.14) in
+    the form 1 + alpha_r = k^2 E / D1: no cancellation anywhere, the circle included.
+    ``D1`` (float), ``idx`` and ``fbits`` (int64) are work arrays.  Returns (min r, max r).
     :func:`_solve_k_scalar` repeats these operations for one Python float.
     """
     ck, cE, cD = _poly_table()[0]
@@ -474,9 +474,9 @@ def _ellipticity_kernel(alpha, k, K, E, r, kk, D1, w, idx, fbits):
     np.subtract(D1, K, out=K)
     np.add(E, K, out=K)
     np.add(alpha, 1.0, out=w)                             # Hertz's relation
-    np.multiply(w, D1, out=w)
+    np.multiply(w, D1, out=D1)
     np.multiply(kk, E, out=r)
-    np.divide(r, w, out=r)
+    np.divide(r, D1, out=r)
     return float(r.min()), float(r.max())
 
 
@@ -778,7 +778,8 @@ def _exact_kernel(Q, Rx, Ry, ep, out, w, iw) -> bool:
     Writes ``out`` = (k, a, b, approach, p_max, stiffness, K, E); ``w`` (6 float) and
     ``iw`` (2 int64) are work arrays; ``ep`` is E' (array or float).  With k, K, E from
     :func:`_ellipticity_kernel` (checked by :func:`_check_relation`),
-    R = Rx Ry/(Rx + Ry) and one cube root (:func:`_cbrt_kernel`),
+    R = Rx Ry/(Rx + Ry) = max(Rx, Ry)/(1 + alpha_r) and one cube root
+    (:func:`_cbrt_kernel`),
 
     .. math:: b = \left(\frac{6 \mathcal{E} R Q}{\pi k E'}\right)^{1/3}, \quad a = k b,
               \quad \delta = \frac{\mathcal{K} b^2}{2 \mathcal{E} R}, \quad
@@ -800,9 +801,7 @@ def _exact_kernel(Q, Rx, Ry, ep, out, w, iw) -> bool:
     lo, hi = _ellipticity_kernel(alpha, k, K, E, r, kk, D1, t, iw[0], iw[1])
     _check_relation(alpha, k, K, E, r, lo, hi)
     ER, c = kk, D1
-    np.multiply(mx, mn, out=ER)                          # R = Rx Ry / (Rx + Ry)
-    np.add(mx, mn, out=mx)
-    np.divide(ER, mx, out=ER)
+    np.divide(mx, t, out=ER)                             # R = Rx Ry/(Rx + Ry) = max/(1 + alpha_r)
     np.multiply(E, ER, out=ER)                           # E R
     np.multiply(ER, Q, out=c)
     np.divide(c, ep * _PI_6, out=c)
@@ -909,7 +908,7 @@ def _contact_scalar(Q: float, Rx: float, Ry: float, Ep: float) -> HertzContact:
     if not alpha <= _ALPHA_MAX:
         return _contact_from_parts(*np.broadcast_arrays(Q, Rx, Ry, Ep), "exact")  # raises
     k, K, E = _solve_k_scalar(alpha)
-    ER = E * (mx * mn / (mx + mn))
+    ER = E * (mx / (alpha + 1.0))
     b = _cbrt_scalar(ER * Q / (Ep * _PI_6) / k)
     h = b / (ER + ER)
     f = np.float64
