@@ -407,11 +407,12 @@ def _poly_table():
     exact values: ``RuntimeError`` if any is off by more than 2e-15 relative (measured
     max 1.1e-15 against 30-digit mpmath, ``tests/test_hertz_speed.py``).
 
-    Returns (coefs, s_max): ``coefs`` the coefficient arrays of k, E, D1, each of shape
-    (5, n), row d the coefficients of f^d, f = t/256 = the low 44 mantissa bits times
-    2^-52 (those of t^d times 256^d, an exact scaling); s_max >= d ln k / d ln alpha_r,
-    which turns the residual of Hertz's relation into a bound on the relative error in k
-    (:func:`_check_relation`).
+    Returns (coefs, s_max, pair): ``coefs`` the coefficient arrays of k, E, D1, each of
+    shape (5, n), row d the coefficients of f^d, f = t/256 = the low 44 mantissa bits
+    times 2^-52 (those of t^d times 256^d, an exact scaling); s_max >= d ln k / d ln
+    alpha_r, which turns the residual of Hertz's relation into a bound on the relative
+    error in k (:func:`_check_relation`); ``pair`` those of k and D1 interleaved
+    (:func:`_pair`).
     """
     n = ((int(np.array(_ALPHA_MAX).view(np.int64)) >> _SHIFT) - _IDX0) + 1
     tc = 0.5 - 0.5 * np.cos((2 * np.arange(_DEG + 1) + 1) * np.pi / (2 * _DEG + 2))
@@ -433,7 +434,13 @@ def _poly_table():
             raise RuntimeError(f"Hertz ellipticity tables: relative error {err:.2e} at an "
                                f"interval midpoint (> {_TABLE_TOL:g})")
     s_max = 1.05 * float(np.max(_table()[2]))
-    return coefs, s_max
+    return coefs, s_max, _pair(coefs[0], coefs[2])
+
+
+def _pair(ck: np.ndarray, cD: np.ndarray) -> np.ndarray:
+    """The coefficients of k and D1 side by side, shape (5, n, 2): one gather of 16 bytes
+    per contact and degree fetches both (:func:`_ellipticity_kernel`)."""
+    return np.ascontiguousarray(np.stack([ck, cD], axis=-1))
 
 
 def _horner(c: np.ndarray, idx: np.ndarray, f: np.ndarray, out: np.ndarray, w: np.ndarray):
@@ -447,7 +454,7 @@ def _horner(c: np.ndarray, idx: np.ndarray, f: np.ndarray, out: np.ndarray, w: n
     return out
 
 
-def _ellipticity_kernel(alpha, k, K, E, r, kk, D1, w, idx, fbits):
+def _ellipticity_kernel(alpha, k, K, E, r, kk, D1, w, idx, fbits, pbuf):
     """k, K, E of ``alpha`` (contiguous float64 in [1, 1e8]) and the check of Hertz's relation.
 
     Writes into the given arrays of alpha's length: ``k`` and ``E`` from
@@ -455,10 +462,13 @@ def _ellipticity_kernel(alpha, k, K, E, r, kk, D1, w, idx, fbits):
     ``kk`` = k^2, ``w`` = 1 + alpha_r and ``r`` = k^2 E / (D1 (1 + alpha_r)), which is 1
     by Hertz's relation alpha_r = (k^2 E - K)/(K - E) (Hamrock & Dowson 1981 eq. 3.14) in
     the form 1 + alpha_r = k^2 E / D1: no cancellation anywhere, the circle included.
-    ``D1`` (float), ``idx`` and ``fbits`` (int64) are work arrays.  Returns (min r, max r).
-    :func:`_solve_k_scalar` repeats these operations for one Python float.
+    ``D1`` (float), ``idx`` and ``fbits`` (int64) and ``pbuf`` (float, 6 times alpha's
+    length) are work arrays.  k and D1 are evaluated together, on their coefficients side
+    by side (:func:`_pair`): the same operations per value as :func:`_horner`, half the
+    gathers.  Returns (min r, max r).  :func:`_solve_k_scalar` repeats these operations
+    for one Python float.
     """
-    ck, cE, cD = _poly_table()[0]
+    (_, cE, _), _, pair = _poly_table()
     bits = alpha.view(np.int64)
     np.subtract(bits, _ONE_BITS, out=idx)                # interval: exponent and top bits
     np.right_shift(idx, _SHIFT, out=idx)
@@ -466,9 +476,19 @@ def _ellipticity_kernel(alpha, k, K, E, r, kk, D1, w, idx, fbits):
     np.bitwise_or(fbits, _ONE_BITS, out=fbits)
     f = fbits.view(np.float64)
     np.subtract(f, 1.0, out=f)                            # exact
-    _horner(ck, idx, f, k, w)
+    n = alpha.size
+    acc, f2, g = (pbuf[i * 2 * n:(i + 1) * 2 * n] for i in range(3))   # (k, D1) interleaved
+    acc2, f22, g2 = (x.reshape(n, 2) for x in (acc, f2, g))
+    f22[:, 0] = f
+    f22[:, 1] = f
+    np.take(pair[_DEG], idx, axis=0, out=acc2, mode="wrap")
+    for d in range(_DEG - 1, -1, -1):
+        np.multiply(acc, f2, out=acc)
+        np.take(pair[d], idx, axis=0, out=g2, mode="wrap")
+        np.add(acc, g, out=acc)
+    np.copyto(k, acc2[:, 0])
+    np.copyto(D1, acc2[:, 1])
     _horner(cE, idx, f, E, w)
-    _horner(cD, idx, f, D1, w)
     np.multiply(k, k, out=kk)
     np.divide(D1, kk, out=K)                              # K = E + (D1 - D1/k^2)
     np.subtract(D1, K, out=K)
@@ -508,7 +528,7 @@ def _solve_k(alpha: np.ndarray):
     n = alpha.size
     k, K, E, r, kk, D1, w = np.empty((7, n))
     idx, fbits = np.empty((2, n), dtype=np.int64)
-    lo, hi = _ellipticity_kernel(alpha, k, K, E, r, kk, D1, w, idx, fbits)
+    lo, hi = _ellipticity_kernel(alpha, k, K, E, r, kk, D1, w, idx, fbits, np.empty(6 * n))
     _check_relation(alpha, k, K, E, r, lo, hi)
     return k.reshape(shape), K.reshape(shape), E.reshape(shape)
 
@@ -763,20 +783,22 @@ def _contact_exact(Q, Rx, Ry, Ep):
     nb = min(n, _BLOCK)
     work = np.empty((6, nb))
     iwork = np.empty((2, nb), dtype=np.int64)
+    pbuf = np.empty(6 * nb)
     for i in range(0, n, nb):
         j = min(i + nb, n)
         L = j - i
         if not _exact_kernel(Q[i:j], Rx[i:j], Ry[i:j], ep if type(ep) is float else ep[i:j],
-                             out[:, i:j], work[:, :L], iwork[:, :L]):
+                             out[:, i:j], work[:, :L], iwork[:, :L], pbuf[:6 * L]):
             _radius_ratio(Rx, Ry)                      # raises, worded for the whole array
     return [v.reshape(shape) for v in out]
 
 
-def _exact_kernel(Q, Rx, Ry, ep, out, w, iw) -> bool:
+def _exact_kernel(Q, Rx, Ry, ep, out, w, iw, pbuf) -> bool:
     r"""The exact contact of one block, in place: no allocation per operation.
 
-    Writes ``out`` = (k, a, b, approach, p_max, stiffness, K, E); ``w`` (6 float) and
-    ``iw`` (2 int64) are work arrays; ``ep`` is E' (array or float).  With k, K, E from
+    Writes ``out`` = (k, a, b, approach, p_max, stiffness, K, E); ``w`` (6 float),
+    ``iw`` (2 int64) and ``pbuf`` (float, 6 times the block) are work arrays; ``ep`` is E'
+    (array or float).  With k, K, E from
     :func:`_ellipticity_kernel` (checked by :func:`_check_relation`),
     R = Rx Ry/(Rx + Ry) = max(Rx, Ry)/(1 + alpha_r) and one cube root
     (:func:`_cbrt_kernel`),
@@ -798,7 +820,7 @@ def _exact_kernel(Q, Rx, Ry, ep, out, w, iw) -> bool:
     if not alpha.max() <= _ALPHA_MAX:
         return False
     r = a                                                # a, b: work space until the end
-    lo, hi = _ellipticity_kernel(alpha, k, K, E, r, kk, D1, t, iw[0], iw[1])
+    lo, hi = _ellipticity_kernel(alpha, k, K, E, r, kk, D1, t, iw[0], iw[1], pbuf)
     _check_relation(alpha, k, K, E, r, lo, hi)
     ER, c = kk, D1
     np.divide(mx, t, out=ER)                             # R = Rx Ry/(Rx + Ry) = max/(1 + alpha_r)

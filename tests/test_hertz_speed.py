@@ -90,11 +90,12 @@ def test_ellipticity_function_matches_mpmath_densely(dense_reference):
 def test_relation_check_catches_a_corrupted_table(monkeypatch):
     # spoil k on one interval (alpha_r in [10, 10.15625)) by 1e-9 relative: the check of
     # Hertz's relation must see it and Newton's method must answer, in both paths
-    coefs, s_max = hertz._poly_table()
+    coefs, s_max, _ = hertz._poly_table()
     i = (int(np.array(10.0).view(np.int64)) >> hertz._SHIFT) - hertz._IDX0
     bad_k = coefs[0].copy()
     bad_k[0, i] *= 1 + 1e-9
-    monkeypatch.setattr(hertz, "_poly_table", lambda: ((bad_k, coefs[1], coefs[2]), s_max))
+    bad = ((bad_k, coefs[1], coefs[2]), s_max, hertz._pair(bad_k, coefs[2]))
+    monkeypatch.setattr(hertz, "_poly_table", lambda: bad)
     monkeypatch.setattr(hertz, "_poly_rows", lambda: tuple(c.T.tolist() for c in
                                                            (bad_k, coefs[1], coefs[2])))
     alpha = np.array([10.0, 10.05, 10.1, 3.0])
