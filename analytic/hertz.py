@@ -527,6 +527,8 @@ def _solve_k(alpha: np.ndarray):
         alpha = alpha.copy()
     n = alpha.size
     k, K, E, r, kk, D1, w = np.empty((7, n))
+    if n == 0:
+        return k.reshape(shape), K.reshape(shape), E.reshape(shape)
     idx, fbits = np.empty((2, n), dtype=np.int64)
     lo, hi = _ellipticity_kernel(alpha, k, K, E, r, kk, D1, w, idx, fbits, np.empty(6 * n))
     _check_relation(alpha, k, K, E, r, lo, hi)
@@ -776,6 +778,8 @@ def _contact_exact(Q, Rx, Ry, Ep):
     """
     shape = np.shape(Q)
     n = int(np.size(Q))
+    if n == 0:
+        return [np.empty(shape) for _ in range(8)]
     Q, Rx, Ry = (np.reshape(x, -1) for x in (Q, Rx, Ry))
     Ep = np.asarray(Ep)
     ep = float(Ep.flat[0]) if not any(Ep.strides) else np.reshape(Ep, -1)

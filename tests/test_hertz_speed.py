@@ -192,3 +192,13 @@ def test_plain_float64_path_equals_generic_path():
     for f in ("k", "a", "b", "approach", "p_max", "stiffness", "ellipk", "ellipe"):
         assert np.array_equal(getattr(a, f), getattr(b, f)), f
         assert np.array_equal(getattr(c, f)[1:], getattr(b, f)), f
+
+
+def test_empty_arrays():
+    # no contact in, no contact out (the kernels' reductions have nothing to reduce)
+    c = hertz.elliptical_contact(np.array([]), 0.01, 0.02, 2e11)
+    assert c.a.shape == (0,) and c.k.shape == (0,) and c.stiffness.shape == (0,)
+    c = hertz.elliptical_contact(1.0, np.empty((0, 3)), 0.02, 2e11)
+    assert c.p_max.shape == (0, 3) and c.ellipk.shape == (0, 3)
+    assert hertz.ellipticity(np.array([]))[0].shape == (0,)
+    assert hertz.contact_stiffness(np.array([]), 0.1, 2e11).shape == (0,)
