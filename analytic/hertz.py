@@ -539,30 +539,33 @@ _FLOAT64, _INT64 = struct.Struct("d"), struct.Struct("q")
 _F_SCALE = 2.0 ** -52
 
 
+def _scalar_rows(coefs, s_max):
+    """The tables as Python floats for :func:`_solve_k_scalar`: per interval one tuple of
+    the coefficients c0 ... c4 of k, E and D1 (15 floats), and the check's tolerance."""
+    return ([tuple(r) for r in np.concatenate(coefs, axis=0).T.tolist()],
+            _RTOL_K / (2.0 * s_max))
+
+
 @functools.cache
-def _poly_rows() -> tuple:
-    """:func:`_poly_table`'s coefficients as Python floats: for k, E, D1 one list per interval."""
-    return tuple(c.T.tolist() for c in _poly_table()[0])
+def _scalar_table():
+    coefs, s_max, _ = _poly_table()
+    return _scalar_rows(coefs, s_max)
 
 
 def _solve_k_scalar(alpha: float):
     """:func:`_solve_k` for one Python float, the same operations in the same order
-    (bit-for-bit the same result; ``tests/test_speed_paths.py``)."""
+    (Horner's rule unrolled for degree 4; bit-for-bit the same result,
+    ``tests/test_speed_paths.py``)."""
     bits = _INT64.unpack(_FLOAT64.pack(alpha))[0]
-    i = (bits - _ONE_BITS) >> _SHIFT
     f = float(bits & _FRAC_MASK) * _F_SCALE              # = (1 + f) - 1 of the array path
-    v = []
-    for rows in _poly_rows():
-        c = rows[i]
-        y = c[-1]
-        for d in range(len(c) - 2, -1, -1):
-            y = y * f + c[d]
-        v.append(y)
-    k, E, D1 = v
+    rows, tol = _scalar_table()
+    k0, k1, k2, k3, k4, e0, e1, e2, e3, e4, d0, d1, d2, d3, d4 = rows[(bits - _ONE_BITS) >> _SHIFT]
+    k = (((k4 * f + k3) * f + k2) * f + k1) * f + k0
+    E = (((e4 * f + e3) * f + e2) * f + e1) * f + e0
+    D1 = (((d4 * f + d3) * f + d2) * f + d1) * f + d0
     kk = k * k
     K = E + (D1 - D1 / kk)
     r = kk * E / ((alpha + 1.0) * D1)
-    tol = _RTOL_K / (2.0 * _poly_table()[1])
     if not (1.0 - r <= tol and r - 1.0 <= tol):
         kb, Kb, Eb = _solve_k_newton(np.array([alpha]))
         return float(kb[0]), float(Kb[0]), float(Eb[0])

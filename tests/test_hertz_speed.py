@@ -96,8 +96,8 @@ def test_relation_check_catches_a_corrupted_table(monkeypatch):
     bad_k[0, i] *= 1 + 1e-9
     bad = ((bad_k, coefs[1], coefs[2]), s_max, hertz._pair(bad_k, coefs[2]))
     monkeypatch.setattr(hertz, "_poly_table", lambda: bad)
-    monkeypatch.setattr(hertz, "_poly_rows", lambda: tuple(c.T.tolist() for c in
-                                                           (bad_k, coefs[1], coefs[2])))
+    rows = hertz._scalar_rows(bad[0], s_max)
+    monkeypatch.setattr(hertz, "_scalar_table", lambda: rows)
     alpha = np.array([10.0, 10.05, 10.1, 3.0])
     k, K, E = hertz._solve_k(alpha)
     for a, kk, KK, EE in zip(alpha, k, K, E):
