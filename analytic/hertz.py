@@ -26,14 +26,14 @@ Carlson's R_D, DLMF 19.25.1) and checked at every interval's midpoint; K = E + m
 Hertz's relation, in the form 1 + alpha_r = k^2 E / D1 (no cancellation anywhere, the
 circle included), is checked for every contact before anything is returned: with E
 and D1 right to rounding its residual bounds the error in k (a few 1e-16; beyond 1e-12,
-or if a table were wrong, Newton's method with SciPy's
-K and E takes over, ``RuntimeError`` with the residual and iteration count if that ever
-fails).  Measured max relative error of k, K and E against a 30-digit mpmath reference:
-1.1e-15 (``tests/test_hertz_speed.py``, a point in each interval up to alpha_r = 1e6).
-The semi-axes come from one cube root (a bit-level start, one Halley and two Newton
-steps: about one rounding error).  Throughput against SciPy's ``ellipk`` + ``ellipe``
-alone in ``benchmarks/core_table.py`` (docs/performance.md).  One contact of plain
-numbers takes a scalar path with the same operations (bit-for-bit the same result).
+or if a table were wrong, Newton's method with SciPy's K and E takes over,
+``RuntimeError`` with the residual and iteration count if that ever fails).  Measured
+max relative error of k, K and E against a 30-digit mpmath reference: 1.1e-15
+(``tests/test_hertz_speed.py``, a point in each interval up to alpha_r = 1e6).  The
+semi-axes come from one cube root (a bit-level start, one Halley and two Newton steps:
+about one rounding error).  Throughput against SciPy's ``ellipk`` + ``ellipe`` alone in
+``benchmarks/core_table.py`` (docs/performance.md).  One contact of plain numbers takes
+a scalar path with the same operations (bit-for-bit the same result).
 
 Accuracy of the simplified formulas: maximum |relative error| against the exact
 solution over 1 <= alpha_r <= alpha_max (4001 log-spaced ratios; regenerate with
@@ -313,8 +313,8 @@ def _solve_k_newton(alpha: np.ndarray):
     """Ellipticity k(alpha) for alpha >= 1 by Newton's method from the Hermite table.
 
     One Newton step from :func:`_table`'s start, then more while the residual says the
-    relative error in k exceeds 1e-12.  Builds :func:`_poly_table` and is the fallback of
-    :func:`_solve_k` (never needed so far).  Returns (k, K, E).
+    relative error in k exceeds 1e-12.  The fallback of :func:`_solve_k` where the check
+    of Hertz's relation fails (never so far).  Returns (k, K, E).
     """
     v = np.log(alpha)
     u, s = _table_lookup(v)
@@ -472,7 +472,7 @@ def _ellipticity_kernel(alpha, k, K, E, r, kk, D1, w, idx, fbits, pbuf):
     bits = alpha.view(np.int64)
     np.subtract(bits, _ONE_BITS, out=idx)                # interval: exponent and top bits
     np.right_shift(idx, _SHIFT, out=idx)
-    np.bitwise_and(bits, _FRAC_MASK, out=fbits)          # position: 1 + f, f in [0, 1/64)
+    np.bitwise_and(bits, _FRAC_MASK, out=fbits)          # position: 1 + f, f in [0, 1/256)
     np.bitwise_or(fbits, _ONE_BITS, out=fbits)
     f = fbits.view(np.float64)
     np.subtract(f, 1.0, out=f)                            # exact
