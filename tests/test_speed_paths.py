@@ -83,11 +83,11 @@ def test_tabulated_ellipticity_equals_newton(v):
     assert hertz._solve_k_scalar(float(alpha[0])) == (k[0], K[0], E[0])
 
 
-@pytest.mark.parametrize("alpha", [1.0, 1.0 + 2**-40, 1.04, 1.3, 2.0 - 2**-45, 7.5, 1e3, 99999.9,
-                                   1e8])
+@pytest.mark.parametrize("alpha", [1.0, 1.0 + 2**-40, 1.0 + 2**-8, 1.0 + 2**-8 - 2**-52, 1.04,
+                                   1.3, 2.0 - 2**-45, 7.5, 1e3, 99999.9, 1e8])
 def test_tabulated_ellipticity_at_interval_edges_matches_mpmath(alpha):
-    # 30-digit mpmath reference; near m = 0.05 the direct K - E lost 1e-14 before the
-    # series range was widened to m < 0.3
+    # 30-digit mpmath reference at the circle, the tables' interval edges (1 + 2^-8 is the
+    # second interval's start) and the range's end
     k, _, _ = hertz._solve_k(np.array([alpha]))
     assert k[0] == pytest.approx(k_exact(alpha), rel=5e-15, abs=0)
 
