@@ -766,7 +766,7 @@ def _contact_from_parts(Q, Rx, Ry, Ep, method) -> HertzContact:
 
 _BLOCK = 32768                         # elements per block of the exact vectorized contact
 _BLOCK_SIMPLIFIED = 8192               # the same for the simplified methods
-_SMALL = 8                             # arrays up to this size: the scalar path per contact
+_SMALL = 16                            # arrays up to this size: the scalar path per contact
 _PI_6 = np.pi / 6.0
 _STIFF = np.pi * math.sqrt(2.0) / 3.0   # pi k E' sqrt(2 E R / (9 K^3)) = this k E' sqrt(ER/K)/K
 _CBRT_MAGIC = 0x2A9F7893782DA1CE        # bits of a first cube root: bits(c)/3 + this
