@@ -779,8 +779,9 @@ def _contact_exact(Q, Rx, Ry, Ep):
     Flattened, in blocks of :data:`_BLOCK` contacts written into one preallocated output
     (the temporaries of a whole 10^5-element array would be fresh megabyte allocations
     and cache misses); up to :data:`_SMALL` contacts one by one with
-    :func:`_exact_scalar` (the same bits, without the kernel's hundred NumPy calls).  A modulus that is one number broadcast (zero strides) enters the
-    kernel as a Python float: the same products, without a pass for them.
+    :func:`_exact_scalar` (the same bits, without the kernel's hundred NumPy calls).  A
+    modulus that is one number broadcast (zero strides) enters the kernel as a Python
+    float: the same products, without a pass for them.
     """
     shape = np.shape(Q)
     n = int(np.size(Q))
