@@ -1011,9 +1011,9 @@ def elliptical_contact(load, Rx, Ry, E_prime, method: str = "exact") -> HertzCon
                 and _load_ok(q) and _size_ok(x) and _size_ok(y) and _size_ok(e)):
             return _contact_scalar(q, x, y, e)
     check_choice(method, "method", METHODS)
-    if _plain_ok(load) and _plain_ok(Rx) and _plain_ok(Ry) and _plain_ok(E_prime):
-        # float64 arrays or floats, all in [1e-30, 1e30]: what the checks below accept
-        # (but for zero loads), decided by two reductions per array instead of five
+    if _plain_ok(load, True) and _plain_ok(Rx) and _plain_ok(Ry) and _plain_ok(E_prime):
+        # float64 arrays or floats, all in [1e-30, 1e30] (loads also 0): what the checks
+        # below accept, decided by two reductions per array instead of five
         Q, Rx, Ry, Ep = (np.asarray(x) for x in (load, Rx, Ry, E_prime))
     else:
         Q = check_nonnegative(load, "load", "N", bounded=True)
@@ -1037,14 +1037,21 @@ def _real(x):
     return None
 
 
-def _plain_ok(x) -> bool:
+def _plain_ok(x, zero_ok: bool = False) -> bool:
     """``x`` is a non-empty float64 array, a float or a NumPy float64 with every entry in
-    [1e-30, 1e30] (min and max: NaN and inf fail the comparisons)."""
+    [1e-30, 1e30], or 0 with ``zero_ok`` (min and max: NaN and inf fail the comparisons;
+    with zeros, a third reduction over the positive entries)."""
     t = type(x)
     if t is np.ndarray:
-        return (x.dtype == np.float64 and x.size > 0 and MIN_MAGNITUDE <= _MIN(x, None)
-                and _MAX(x, None) <= MAX_MAGNITUDE)
-    return (t is float or t is np.float64) and MIN_MAGNITUDE <= x <= MAX_MAGNITUDE
+        if not (x.dtype == np.float64 and x.size > 0 and _MAX(x, None) <= MAX_MAGNITUDE):
+            return False
+        lo = _MIN(x, None)
+        if zero_ok and lo == 0.0:
+            lo = _MIN(x, None, initial=np.inf, where=x > 0.0)
+        return MIN_MAGNITUDE <= lo
+    if t is float or t is np.float64:
+        return MIN_MAGNITUDE <= x <= MAX_MAGNITUDE or (zero_ok and x == 0.0)
+    return False
 
 
 def _load_ok(q: float) -> bool:
