@@ -44,14 +44,16 @@ def _reference(alpha: float, k0: float):
 
 def _dense_ratios():
     """A random point in each of the table's 5100 intervals up to alpha_r = 1e6, plus
-    ratios within 1e-15 ... 1e-1 of the circle and the circle itself."""
+    ratios within 1e-15 ... 1e-1 of the circle, the circle itself, and 100 ratios 1e6 ...
+    1e8."""
     rng = np.random.default_rng(2024)
     n = ((int(np.array(1e6).view(np.int64)) >> hertz._SHIFT) - hertz._IDX0) + 1
     alpha = hertz._interval_points(np.array([0.0]), n).ravel()
     width = np.ldexp(1.0, (np.arange(n) >> hertz._OCT_BITS) - hertz._OCT_BITS)
     pts = [alpha + width * rng.random(n)]
     pts.append(1.0 + 10 ** rng.uniform(-15, -1, 200))
-    pts.append([1.0, 1e6])
+    pts.append(10 ** rng.uniform(6, 8, 100))                # sparser to the range's end
+    pts.append([1.0, 1e6, 1e8])
     return np.concatenate([np.ravel(p) for p in pts])
 
 
