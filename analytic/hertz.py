@@ -20,7 +20,7 @@ The exact solution needs the ellipticity k from Hertz's transcendental equation
 with the complete elliptic integrals K (first kind) and E (second kind).  It is
 solved here to 1e-12 relative in k for 1 <= alpha_r <= 1e8.  k, E and D1 = (K - E)/m
 are read from piecewise polynomials of alpha_r (256 intervals per octave, degree 4,
-indexed by the bits of the float: no logarithm), built once, lazily, in some 50 ms from
+indexed by the bits of the float: no logarithm), built once, lazily, in some 20 ms from
 exact values (k by Newton's method polished to rounding, E by SciPy's ``ellipe``, D1 by
 Carlson's R_D, DLMF 19.25.1) and checked at every interval's midpoint; K = E + m D1.
 Hertz's relation, in the form 1 + alpha_r = k^2 E / D1 (no cancellation anywhere, the
@@ -355,33 +355,39 @@ _TABLE_TOL = 2e-15                     # largest relative error allowed when bui
 def _ellip_e_d1(k: np.ndarray):
     """E(m) and D1 = (K(m) - E(m))/m at m = 1 - 1/k^2, both to a few rounding errors.
 
-    D1 = R_D(0, 1 - m, 1)/3 (Carlson's symmetric integral; DLMF 19.25.1: K - E =
-    (m/3) R_D(0, 1 - m, 1)), with no cancellation at any m.
+    Below m = 0.9 (k < 3.2), where K - E cancels, D1 = R_D(0, 1 - m, 1)/3 (Carlson's
+    symmetric integral; DLMF 19.25.1: K - E = (m/3) R_D(0, 1 - m, 1)); above, (K - E)/m
+    loses at most a bit and costs a tenth.
     """
     p = 1.0 / (k * k)
-    return special.ellipe(1.0 - p), special.elliprd(0.0, p, 1.0) / 3.0
+    m = 1.0 - p
+    E = special.ellipe(m)
+    D1 = (special.ellipkm1(p) - E) / m
+    near = m < 0.9
+    D1[near] = special.elliprd(0.0, p[near], 1.0) / 3.0
+    return E, D1
 
 
 def _exact_nodes(alpha: np.ndarray):
     """k, E, D1 at radius ratios alpha > 1 to rounding (table building).
 
     Newton's method on Hertz's relation in the form k^2 E / D1 = 1 + alpha_r (no
-    cancellation, no logarithm) from :func:`_table`'s start (~1e-14; one step reaches
-    rounding, the second is a margin); ``RuntimeError`` unless the final residual bounds
-    the relative error in k by :data:`_TABLE_TOL`.
+    cancellation, no logarithm) from :func:`_table`'s start (~1e-14: one step reaches
+    rounding); ``RuntimeError`` unless the final residual bounds the relative error in k
+    by :data:`_TABLE_TOL`.
     """
     u, s = _table_lookup(np.log(alpha))                  # ln k, d ln k / d ln alpha_r
     g = s * (1.0 + alpha) / alpha                         # d ln k / d ln(1 + alpha_r)
     k = np.exp(u)
-    for it in range(3):
+    for it in range(2):
         E, D1 = _ellip_e_d1(k)
         F = k * k * E / (D1 * (1.0 + alpha)) - 1.0       # relative residual in 1 + alpha_r
-        if it < 2:
+        if it == 0:
             k = k - k * F * g
     err = float(np.max(np.abs(F * g)))
     if not err <= _TABLE_TOL:
         raise RuntimeError(f"Hertz ellipticity tables: Newton residual {err:.2e} (relative "
-                           f"in k) after 2 iterations (> {_TABLE_TOL:g})")
+                           f"in k) after one step (> {_TABLE_TOL:g})")
     return k, E, D1
 
 
@@ -404,7 +410,7 @@ def _poly_table():
     quantity is the degree-4 polynomial through its exact values at five Chebyshev points
     of t (:func:`_exact_nodes`: k by Newton's method polished to rounding, E(m) by SciPy's
     ``ellipe``, D1 by Carlson's R_D, both within 3e-16 of a 30-digit reference).  Built
-    once, lazily (some 50 ms), and checked at every interval's midpoint against the same
+    once, lazily (some 20 ms), and checked at every interval's midpoint against the same
     exact values: ``RuntimeError`` if any is off by more than 2e-15 relative (measured
     max 1.1e-15 against 30-digit mpmath, ``tests/test_hertz_speed.py``).
 
