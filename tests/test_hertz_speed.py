@@ -89,9 +89,10 @@ def test_ellipticity_function_matches_mpmath_densely(dense_reference):
             assert abs(float(mp.mpf(float(got)) / ref - 1)) <= 2e-15, ALPHA[j]
 
 
-def test_relation_check_catches_a_corrupted_table(monkeypatch):
-    # spoil k on one interval (alpha_r in [10, 10.15625)) by 1e-9 relative: the check of
+def test_relation_check_catches_a_corrupted_table(monkeypatch, caplog):
+    # spoil k on one interval (alpha_r in [10, 10.03125)) by 1e-9 relative: the check of
     # Hertz's relation must see it and Newton's method must answer, in both paths
+    caplog.set_level("DEBUG", logger="ballrace.analytic.hertz")
     coefs, s_max, _ = hertz._poly_table()
     i = (int(np.array(10.0).view(np.int64)) >> hertz._SHIFT) - hertz._IDX0
     bad_k = coefs[0].copy()
@@ -100,8 +101,9 @@ def test_relation_check_catches_a_corrupted_table(monkeypatch):
     monkeypatch.setattr(hertz, "_poly_table", lambda: bad)
     rows = hertz._scalar_rows(bad[0], s_max)
     monkeypatch.setattr(hertz, "_scalar_table", lambda: rows)
-    alpha = np.array([10.0, 10.05, 10.1, 3.0])
+    alpha = np.array([10.0, 10.01, 10.03, 3.0])
     k, K, E = hertz._solve_k(alpha)
+    assert "ellipticity: 3 values polished by Newton" in caplog.text
     for a, kk, KK, EE in zip(alpha, k, K, E):
         rk, rK, rE = _reference(a, kk)
         assert abs(float(mp.mpf(kk) / rk - 1)) < 1e-12
