@@ -211,3 +211,27 @@ def test_empty_arrays():
     assert c.p_max.shape == (0, 3) and c.ellipk.shape == (0, 3)
     assert hertz.ellipticity(np.array([]))[0].shape == (0,)
     assert hertz.contact_stiffness(np.array([]), 0.1, 2e11).shape == (0,)
+
+
+def test_kernel_results_satisfy_their_equations():
+    # the kernel's shortcuts (p_max = E' b/(4 E R), delta = K b h, R = max/(1 + alpha_r))
+    # against the textbook forms (Hamrock & Dowson 1981 eqs. 3.8-3.16, 3.33) on 5000 contacts
+    rng = np.random.default_rng(15)
+    n = 5000
+    Rx = 10 ** rng.uniform(-4, 0, n)
+    Ry = Rx * 10 ** rng.uniform(-6, 6, n)
+    Q = 10 ** rng.uniform(-3, 6, n)
+    Ep = 10 ** rng.uniform(9, 12, n)
+    c = hertz.elliptical_contact(Q, Rx, Ry, Ep)
+    R = Rx * Ry / (Rx + Ry)
+    b = np.cbrt(6 * c.ellipe * Q * R / (np.pi * c.k * Ep))
+    rel = {
+        "b": c.b / b - 1,
+        "a = k b": c.a / (c.k * c.b) - 1,
+        "p_max": c.p_max / (3 * Q / (2 * np.pi * c.a * c.b)) - 1,
+        "approach": c.approach / (c.ellipk * np.cbrt(4.5 / (c.ellipe * R)
+                                                     * (Q / (np.pi * c.k * Ep)) ** 2)) - 1,
+        "Q = K delta^1.5": c.stiffness * c.approach**1.5 / Q - 1,
+    }
+    worst = {q: float(np.max(np.abs(v))) for q, v in rel.items()}
+    assert max(worst.values()) < 1e-14, worst
