@@ -9,6 +9,9 @@
   (SciPy's integrals) answers instead.
 * The cube root (bit-level start, Halley, Newton) against mpmath, exactly 0 at 0, and its
   scalar twin bit for bit.
+* The kernel's results satisfy the textbook formulas; small arrays (contact by contact)
+  and a broadcast modulus give the kernel's bits; empty arrays give empty results.
+* Plain float64 inputs, accepted by a few reductions, keep every documented error.
 * The simplified methods are unchanged by the blocking of large arrays.
 """
 import mpmath as mp
