@@ -547,10 +547,10 @@ _F_SCALE = 2.0 ** -52
 
 
 def _scalar_rows(coefs, s_max):
-    """The tables as Python floats for :func:`_solve_k_scalar`: per interval one tuple of
-    the coefficients c0 ... c4 of k, E and D1 (15 floats), and the check's tolerance."""
-    return ([tuple(r) for r in np.concatenate(coefs, axis=0).T.tolist()],
-            _RTOL_K / (2.0 * s_max))
+    """The tables for :func:`_solve_k_scalar`: per interval the coefficients c0 ... c4 of
+    k, E and D1 in one row (shape (n, 15)), an empty cache of those rows as tuples of
+    Python floats (filled as intervals are used), and the check's tolerance."""
+    return np.ascontiguousarray(np.concatenate(coefs, axis=0).T), {}, _RTOL_K / (2.0 * s_max)
 
 
 @functools.cache
@@ -565,8 +565,12 @@ def _solve_k_scalar(alpha: float):
     ``tests/test_speed_paths.py``)."""
     bits = _INT64.unpack(_FLOAT64.pack(alpha))[0]
     f = float(bits & _FRAC_MASK) * _F_SCALE              # = (1 + f) - 1 of the array path
-    rows, tol = _scalar_table()
-    k0, k1, k2, k3, k4, e0, e1, e2, e3, e4, d0, d1, d2, d3, d4 = rows[(bits - _ONE_BITS) >> _SHIFT]
+    table, rows, tol = _scalar_table()
+    i = (bits - _ONE_BITS) >> _SHIFT
+    row = rows.get(i)
+    if row is None:
+        row = rows[i] = tuple(table[i].tolist())
+    k0, k1, k2, k3, k4, e0, e1, e2, e3, e4, d0, d1, d2, d3, d4 = row
     k = (((k4 * f + k3) * f + k2) * f + k1) * f + k0
     E = (((e4 * f + e3) * f + e2) * f + e1) * f + e0
     D1 = (((d4 * f + d3) * f + d2) * f + d1) * f + d0
