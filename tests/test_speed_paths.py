@@ -1,8 +1,9 @@
 """Fast paths give the same answers as the general ones.
 
 * One contact of plain numbers (``hertz.point_contact`` / ``elliptical_contact`` with
-  floats) runs a scalar path: bit-for-bit the 1-element-array result (same operations
-  in the same order; IEEE double arithmetic is the same in Python and NumPy).
+  floats), and each contact of an array of up to ``hertz._SMALL``, runs a scalar path:
+  bit-for-bit the vectorised kernel's result (same operations in the same order; IEEE
+  double arithmetic is the same in Python and NumPy).
 * The piecewise-polynomial ellipticity (``hertz._solve_k``) against the Newton solution
   it was built from, and against the 30-digit mpmath reference (tests/mpref.py).
 * The single-case load-distribution driver against the vectorized one, and the
@@ -30,8 +31,17 @@ def _same(c_scalar, c_array):
     for f in FIELDS:
         s, a = getattr(c_scalar, f), getattr(c_array, f)
         assert np.shape(s) == () and type(s) is np.float64, f
-        assert a.shape == (1,)
-        assert s == a[0], (f, s, a[0])          # bit for bit
+        assert a.shape == (N_KERNEL,)
+        assert np.all(s == a), (f, s, a[0])     # bit for bit
+
+
+# arrays above hertz._SMALL contacts run the vectorised kernel (smaller ones the scalar
+# path contact by contact): the scalar path is compared with the kernel
+N_KERNEL = hertz._SMALL + 3
+
+
+def _rep(x):
+    return np.full(N_KERNEL, x)
 
 
 @settings(max_examples=300, deadline=None)
@@ -40,7 +50,7 @@ def _same(c_scalar, c_array):
 def test_elliptical_contact_scalar_equals_array(Q, Rx, ratio, Ep):
     Ry = Rx * 10.0**ratio
     _same(hertz.elliptical_contact(Q, Rx, Ry, Ep),
-          hertz.elliptical_contact(np.array([Q]), np.array([Rx]), np.array([Ry]), Ep))
+          hertz.elliptical_contact(_rep(Q), _rep(Rx), _rep(Ry), Ep))
 
 
 @pytest.mark.filterwarnings("ignore:point_contact. a / R:UserWarning")   # any size here
@@ -52,7 +62,7 @@ def test_point_contact_scalar_equals_array(Q, r1, r2, g1, g2, flat):
     rx2 = np.inf if flat else r1 / g1
     ry2 = r2 / g2
     c_s = hertz.point_contact(Q, r1, r2, rx2, ry2, STEEL)
-    c_a = hertz.point_contact(np.array([Q]), r1, r2, rx2, ry2, STEEL)
+    c_a = hertz.point_contact(_rep(Q), r1, r2, rx2, ry2, STEEL)
     _same(c_s, c_a)
 
 
@@ -83,11 +93,11 @@ def test_tabulated_ellipticity_equals_newton(v):
     assert hertz._solve_k_scalar(float(alpha[0])) == (k[0], K[0], E[0])
 
 
-@pytest.mark.parametrize("alpha", [1.0, 1.0 + 2**-40, 1.04, 1.3, 2.0 - 2**-45, 7.5, 1e3, 99999.9,
-                                   1e8])
+@pytest.mark.parametrize("alpha", [1.0, 1.0 + 2**-40, 1.0 + 2**-8, 1.0 + 2**-8 - 2**-52, 1.04,
+                                   1.3, 2.0 - 2**-45, 7.5, 1e3, 99999.9, 1e8])
 def test_tabulated_ellipticity_at_interval_edges_matches_mpmath(alpha):
-    # 30-digit mpmath reference; near m = 0.05 the direct K - E lost 1e-14 before the
-    # series range was widened to m < 0.3
+    # 30-digit mpmath reference at the circle, the tables' interval edges (1 + 2^-8 is the
+    # second interval's start) and the range's end
     k, _, _ = hertz._solve_k(np.array([alpha]))
     assert k[0] == pytest.approx(k_exact(alpha), rel=5e-15, abs=0)
 
