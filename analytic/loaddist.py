@@ -827,18 +827,25 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
         t = 1.0
         local = err < 1e-6
         if arm == "groove":
+            # the full step's state gives its frozen-stiffness potential (same approaches
+            # as _potential); backtrack with _potential only if it is rejected
+            unew = [u[i] + du[i] for i in range(5)]
+            snew = _State(model, geo, np.array(unew)[None], arm)
             if not local:
                 d = st.delta
                 phi0 = 0.4 * float((st.Kn * d * d * np.sqrt(d)).sum()) - dot(F, u)
-                ua, dua = np.array(u), np.array(du)
-                for _ in range(60):
-                    ph = float(_potential(model, geo, (ua + t * dua)[None], st.Kn,
-                                          Farr[None])[0])
-                    if ph <= phi0 + 1e-4 * t * g:
-                        break
-                    t *= 0.5
-            unew = [u[i] + t * du[i] for i in range(5)]
-            snew = _State(model, geo, np.array(unew)[None], arm)
+                d = snew.delta
+                ph = 0.4 * float((st.Kn * d * d * np.sqrt(d)).sum()) - dot(F, unew)
+                if not ph <= phi0 + 1e-4 * g:
+                    ua, dua = np.array(u), np.array(du)
+                    for _ in range(59):
+                        t *= 0.5
+                        ph = float(_potential(model, geo, (ua + t * dua)[None], st.Kn,
+                                              Farr[None])[0])
+                        if ph <= phi0 + 1e-4 * t * g:
+                            break
+                    unew = [u[i] + t * du[i] for i in range(5)]
+                    snew = _State(model, geo, np.array(unew)[None], arm)
             Rn, en, qn = residual(snew)
         else:
             m0 = dot(R, R)
