@@ -452,7 +452,15 @@ class _State:
         self.beta = np.arctan2(o.z, o.x)[None]
         self.delta, self.Kn, self.dlnK, self.Q = o.delta[None], o.Kn[None], o.dlnK[None], o.Q[None]
         self.F = np.array([[Fs[i] * sc[i] for i in range(5)]])
-        self.J = np.array([[[Js[i][j] * (sc[i] * sc[j]) for j in range(5)] for i in range(5)]])
+        self.J = _unscaled_J(Js, Ri)[None]
+
+
+def _unscaled_J(Js, Ri):
+    """The (5, 5) array J = J_s (sc sc^T) of a scaled Jacobian (nested list) [SI]."""
+    J = np.array(Js)
+    J[3:] *= Ri
+    J[:, 3:] *= Ri
+    return J
 
 
 #: Weights of the one-case kernel as combinations of the 20 products p_a t_b of
@@ -878,7 +886,7 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
     minimiser of the frozen potential along it with the approaches linearised,
     t^(3/2) = F.du / sum K_n <b_j>^(5/2), b_j = d(approach_j)/du . du (the homogeneous
     Hertz law), instead of halving from the trust radius.  ``tests/test_loaddist.py``
-    checks that both drivers agree.  Returns (u (1,5), iterations (1,), final _State).
+    checks that both drivers agree.  Returns (u (1,5), iterations (1,), final _OneCase).
     """
     Ri = float(model.Ri)
     sc = (1.0, 1.0, 1.0, Ri, Ri)
@@ -1007,7 +1015,7 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
             break
     if it:
         log.debug("load distribution: converged in %d Newton iterations", it)
-    return np.array(u)[None], np.array([it]), _State.of_one(model, st)
+    return np.array(u)[None], np.array([it]), st
 
 
 # =========================================================================== results
@@ -1265,6 +1273,9 @@ def _result(bearing, model, psi, x0, z0, Pd, u, applied, imposed, arm, iters, sh
     load-deflection range.  Unloaded balls report the angle of the line of groove centres
     folded into (-pi/2, pi/2] (the line, not its direction).
     """
+    if type(state) is _OneCase:
+        return _result_one(bearing, model, psi, z0, Pd, u, applied, imposed, arm, iters, shape,
+                           method, state, rtol, what)
     st = _State(model, _Geo(model, psi, x0, z0), u, arm) if state is None else state
     Z = model.Z
     app = np.where(imposed, 0.0, applied)
@@ -1294,6 +1305,43 @@ def _result(bearing, model, psi, x0, z0, Pd, u, applied, imposed, arm, iters, sh
         ball_loads=st.Q.reshape(shape + (Z,)), contact_angles=beta.reshape(shape + (Z,)),
         stiffness=st.J.reshape(shape + (5, 5)), clearance=float(Pd), axial_offset=float(z0),
         moment_arm=arm, iterations=int(np.max(iters, initial=0)), method=method)
+
+
+def _result_one(bearing, model, psi, z0, Pd, u, applied, imposed, arm, iters, shape, method,
+                o, rtol, what):
+    """:func:`_result` for one case solved by :func:`_newton_one` (its final _OneCase
+    ``o``): the same checks and the same LoadDistribution, on Python floats."""
+    Ri = model.Ri
+    sc = (1.0, 1.0, 1.0, Ri, Ri)
+    imp = imposed.reshape(5).tolist()
+    app = [0.0 if imp[i] else v for i, v in enumerate(applied.reshape(5).tolist())]
+    Fs, Jl, ul = o.F, o.J, u.reshape(5).tolist()
+    Ql = o.Q.tolist()
+    res = max(0.0 if imp[i] else abs(Fs[i] - app[i] / sc[i]) for i in range(5))
+    scale = max(max(abs(app[i] / sc[i]) for i in range(5)), max(Ql))
+    rel = res / scale if scale > 0 else res
+    finite = math.isfinite(sum(ul) + sum(Fs) + sum(Ql) + sum(sum(r) for r in Jl))
+    tol = max(_FLOOR_CAP, 100.0 * rtol)
+    dmax = max(o.delta.tolist()) if finite else 0.0
+    if dmax > MAX_APPROACH_RATIO * model.D:
+        _overload(model, dmax, np.array(app))
+    if not (finite and rel <= tol):
+        raise ConvergenceError(
+            f"{what} did not reach equilibrium: relative residual {rel:.3e} "
+            f"(> {tol:g}) after {int(np.max(iters, initial=0))} iterations in load case 0; "
+            f"loads {app}, displacements {ul}")
+    beta = np.arctan2(o.z, o.x)
+    if not (min(beta.tolist()) > -0.5 * np.pi and max(beta.tolist()) <= 0.5 * np.pi):
+        beta = _fold_unloaded(beta, o.Q)
+    J = _unscaled_J(Jl, Ri)
+    Z = model.Z
+    return LoadDistribution(
+        bearing=bearing, azimuths=psi, displacements=u.reshape(shape + (5,)),
+        loads=np.array([Fs[0], Fs[1], Fs[2], Fs[3] * Ri, Fs[4] * Ri]).reshape(shape + (5,)),
+        applied=np.array(app).reshape(shape + (5,)), imposed=imposed.reshape(shape + (5,)),
+        ball_loads=o.Q.reshape(shape + (Z,)), contact_angles=beta.reshape(shape + (Z,)),
+        stiffness=J.reshape(shape + (5, 5)), clearance=float(Pd), axial_offset=float(z0),
+        moment_arm=arm, iterations=int(iters[0]), method=method)
 
 
 def solve(bearing: BallBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *, displacements=None,
