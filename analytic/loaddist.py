@@ -1954,15 +1954,84 @@ def eccentric_thrust(bearing: BallBearing, Fa, e, *, rtol: float = 1e-12,
     Lc = np.zeros(F.shape + (5,))
     Lc[..., 0], Lc[..., 4] = F, -e_ * F
     _check_loads(model, Lc.reshape(-1, 5))
-    # start: the pure-thrust solution (all balls at one angle, no tilt; H&D eq. 3.60)
-    bt = _thrust_angle(model, F.ravel(), 1e-14, 100)
-    u0 = np.zeros(F.shape + (5,))
-    u0[..., 0] = (model.A * np.sin(bt - model.beta_f) / np.cos(bt)).reshape(F.shape)
+    u0 = _eccentric_start(model, F, e_)
     d = np.array([np.nan, 0.0, 0.0, 0.0, np.nan])
     res = solve(bearing, Fa=F, Mz=-e_ * F, displacements=d, moment_arm="contact", rtol=rtol,
                 max_iter=max_iter, initial=u0, _contact_direct=True)
     log.debug("eccentric thrust: converged in %d Newton iterations", res.iterations)
     return res
+
+
+@functools.lru_cache(maxsize=64)
+def _eccentric_grid(Z):
+    """(rho, g(rho), S(rho)) on a grid of rho in (-1, 50]: g = sum <rho + cos psi_j>^1.5
+    cos psi_j / S, S = sum <rho + cos psi_j>^1.5, psi_j = 2 pi j / Z (g decreasing)."""
+    cp = np.cos(2.0 * np.pi * np.arange(Z) / Z)
+    rho = np.concatenate([-np.cos(np.linspace(0.0, np.pi, 97)[1:]), np.geomspace(1.02, 50.0, 48)])
+    w = np.maximum(rho[:, None] + cp, 0.0)
+    w = w * np.sqrt(w)
+    S = w.sum(1)
+    return rho, w @ cp / S, S
+
+
+def _eccentric_start(model, Fa, e):
+    r"""Start (delta_a, 0, 0, 0, theta_z) of :func:`eccentric_thrust` (shape Fa.shape + (5,)).
+
+    The constant-angle, linearised model: ball j's approach sin(beta_f) (a + b cos psi_j)
+    with a = delta_a, b = -R_i theta_z, K_n and the contact radius r_f = (d_e - D cos
+    beta_f)/2 at the free angle, so that
+
+    .. math:: \frac{e}{r_f} = \frac{\sum\langle\rho + \cos\psi_j\rangle^{3/2}\cos\psi_j}
+              {\sum\langle\rho + \cos\psi_j\rangle^{3/2}}, \qquad
+              F_a = K_n \sin^{5/2}\beta_f\, b^{3/2} \sum\langle\rho + \cos\psi_j\rangle^{3/2}
+
+    (rho = a / b; the discrete form of Harris's J-integrals), rho interpolated from a
+    tabulated grid, then a + b scaled so that the most loaded ball has that approach on the
+    exact geometry.  Only a start: Newton on the exact equations follows.  For
+    e / r_f >= ``_ECC_LINEAR`` (the model has no solution at e >= r_f) the pure-thrust
+    solution is the start.
+    """
+    rho_g, g_g, S_g = _eccentric_grid(model.Z)
+    sf = math.sin(model.beta_f)
+    C = model.Kn_free * max(sf, 1e-3) ** 2.5
+    rf = 0.5 * (model.dm - model.D * math.cos(model.beta_f))
+    Fa = np.asarray(Fa, float)
+    tau = np.broadcast_to(np.asarray(e, float) / rf, Fa.shape)
+    far = ~(tau < _ECC_LINEAR)
+    if np.all(far):
+        return _thrust_start(model, Fa)
+    tau = np.minimum(tau, g_g[0])
+    rho = np.interp(tau, g_g[::-1], rho_g[::-1])
+    S = np.interp(tau, g_g[::-1], S_g[::-1])
+    b = (Fa / (C * S)) ** (2.0 / 3.0)
+    # the most loaded ball (psi = 0) at the approach the linear model gives it,
+    # sin(beta_f) (a + b), on the exact geometry: a + b = sqrt((A + delta)^2 - x0^2) - z0
+    A, x0, z0 = model.A, model.A * math.cos(model.beta_f), model.A * sf
+    d1 = np.minimum(sf * (rho + 1.0) * b, MAX_APPROACH_RATIO * model.D)
+    top = np.sqrt((A + d1 - x0) * (A + d1 + x0)) - z0
+    with np.errstate(invalid="ignore", divide="ignore"):
+        f = np.where(b > 0, top / ((rho + 1.0) * b), 0.0)
+    b = np.minimum(b * f, model.D)
+    u0 = np.zeros(Fa.shape + (5,))
+    u0[..., 0] = np.clip(rho * b, -model.D, model.D)
+    u0[..., 4] = -b / model.Ri
+    if np.any(far):
+        u0[far] = _thrust_start(model, Fa[far])
+    return u0
+
+
+def _thrust_start(model, Fa):
+    """(delta_t, 0, 0, 0, 0) of the pure-thrust solution (H&D eq. 3.60), shape Fa.shape + (5,)."""
+    bt = _thrust_angle(model, Fa.ravel(), 1e-14, 100)
+    u0 = np.zeros(Fa.shape + (5,))
+    u0[..., 0] = (model.A * np.sin(bt - model.beta_f) / np.cos(bt)).reshape(Fa.shape)
+    return u0
+
+
+#: Largest e / r_f (r_f the contact radius at the free angle) for which eccentric_thrust
+#: starts from the linearised model (:func:`_eccentric_start`); beyond it the ring tips
+#: onto few balls at angles far from beta_f and the pure-thrust start serves better.
+_ECC_LINEAR = 0.9
 
 
 # =========================================================================== approximations
