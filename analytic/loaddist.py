@@ -1988,8 +1988,8 @@ def _eccentric_start(model, Fa, e):
     (rho = a / b; the discrete form of Harris's J-integrals), rho interpolated from a
     tabulated grid, then a + b scaled so that the most loaded ball has that approach on the
     exact geometry.  Only a start: Newton on the exact equations follows.  For
-    e / r_f >= ``_ECC_LINEAR`` (the model has no solution at e >= r_f) the pure-thrust
-    solution is the start.
+    e / r_f >= ``_ECC_LINEAR`` (the model has no solution at e >= r_f) or beta_f below
+    ``_ECC_MIN_ANGLE`` the pure-thrust solution is the start.
     """
     rho_g, g_g, S_g = _eccentric_grid(model.Z)
     sf = math.sin(model.beta_f)
@@ -1997,7 +1997,7 @@ def _eccentric_start(model, Fa, e):
     rf = 0.5 * (model.dm - model.D * math.cos(model.beta_f))
     Fa = np.asarray(Fa, float)
     tau = np.broadcast_to(np.asarray(e, float) / rf, Fa.shape)
-    far = ~(tau < _ECC_LINEAR)
+    far = ~(tau < _ECC_LINEAR) | (model.beta_f < _ECC_MIN_ANGLE)
     if np.all(far):
         return _thrust_start(model, Fa)
     tau = np.minimum(tau, g_g[0])
@@ -2011,9 +2011,9 @@ def _eccentric_start(model, Fa, e):
     top = np.sqrt((A + d1 - x0) * (A + d1 + x0)) - z0
     with np.errstate(invalid="ignore", divide="ignore"):
         f = np.where(b > 0, top / ((rho + 1.0) * b), 0.0)
-    b = np.minimum(b * f, model.D)
+    b = np.minimum(b * f, 0.5 * model.D)
     u0 = np.zeros(Fa.shape + (5,))
-    u0[..., 0] = np.clip(rho * b, -model.D, model.D)
+    u0[..., 0] = np.clip(rho * b, -0.5 * model.D, 0.5 * model.D)
     u0[..., 4] = -b / model.Ri
     if np.any(far):
         u0[far] = _thrust_start(model, Fa[far])
@@ -2031,7 +2031,10 @@ def _thrust_start(model, Fa):
 #: Largest e / r_f (r_f the contact radius at the free angle) for which eccentric_thrust
 #: starts from the linearised model (:func:`_eccentric_start`); beyond it the ring tips
 #: onto few balls at angles far from beta_f and the pure-thrust start serves better.
-_ECC_LINEAR = 0.9
+_ECC_LINEAR = 0.95
+#: Smallest free contact angle [rad] for that start: near beta_f = 0 the axial approach
+#: is quadratic in the axial shift, not linear.
+_ECC_MIN_ANGLE = 0.15
 
 
 # =========================================================================== approximations
