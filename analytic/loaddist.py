@@ -1939,10 +1939,19 @@ def eccentric_thrust(bearing: BallBearing, Fa, e, *, rtol: float = 1e-12,
     if not isinstance(bearing, BallBearing):
         raise TypeError(f"bearing must be a ballrace.BallBearing; got {type(bearing).__name__}")
     model = _Model.of(bearing)
+    e_max = 0.5 * model.dm
+    if _plain(Fa) and _plain(e) and Fa >= 0 and 0 <= e < e_max:
+        # one case of plain numbers (what the checks below would accept): no arrays
+        F1, e1 = float(Fa), float(e)
+        res = solve(bearing, Fa=F1, Mz=-e1 * F1, displacements=_ECC_FREE, moment_arm="contact",
+                    rtol=rtol, max_iter=max_iter,
+                    initial=_eccentric_start_one(model, F1, e1),
+                    _contact_direct=True)
+        log.debug("eccentric thrust: converged in %d Newton iterations", res.iterations)
+        return res
     F0 = check_nonnegative(Fa, "Fa", "N", bounded=True, tiny_ok=True)
     e0 = check_nonnegative(e, "e", "m")
     Fa_, e_ = broadcast(Fa=F0, e=e0)
-    e_max = 0.5 * model.dm
     if np.any(e_ >= e_max):
         bad = float(e_[e_ >= e_max].ravel()[0])
         raise ValueError(
@@ -1955,11 +1964,15 @@ def eccentric_thrust(bearing: BallBearing, Fa, e, *, rtol: float = 1e-12,
     Lc[..., 0], Lc[..., 4] = F, -e_ * F
     _check_loads(model, Lc.reshape(-1, 5))
     u0 = _eccentric_start(model, F, e_)
-    d = np.array([np.nan, 0.0, 0.0, 0.0, np.nan])
-    res = solve(bearing, Fa=F, Mz=-e_ * F, displacements=d, moment_arm="contact", rtol=rtol,
+    res = solve(bearing, Fa=F, Mz=-e_ * F, displacements=_ECC_FREE, moment_arm="contact", rtol=rtol,
                 max_iter=max_iter, initial=u0, _contact_direct=True)
     log.debug("eccentric thrust: converged in %d Newton iterations", res.iterations)
     return res
+
+
+#: The DOFs of eccentric_thrust: axial and tilt about z free, the rest held at 0.
+_ECC_FREE = np.array([np.nan, 0.0, 0.0, 0.0, np.nan])
+_ECC_FREE.flags.writeable = False
 
 
 @functools.lru_cache(maxsize=64)
@@ -1971,7 +1984,8 @@ def _eccentric_grid(Z):
     w = np.maximum(rho[:, None] + cp, 0.0)
     w = w * np.sqrt(w)
     S = w.sum(1)
-    return rho, w @ cp / S, S
+    g = w @ cp / S
+    return rho, g, S, g[::-1].copy(), rho[::-1].copy(), S[::-1].copy()
 
 
 def _eccentric_start(model, Fa, e):
@@ -1991,7 +2005,7 @@ def _eccentric_start(model, Fa, e):
     e / r_f >= ``_ECC_LINEAR`` (the model has no solution at e >= r_f) or beta_f below
     ``_ECC_MIN_ANGLE`` the pure-thrust solution is the start.
     """
-    rho_g, g_g, S_g = _eccentric_grid(model.Z)
+    rho_g, g_g, S_g, g_r, rho_r, S_r = _eccentric_grid(model.Z)
     sf = math.sin(model.beta_f)
     C = model.Kn_free * max(sf, 1e-3) ** 2.5
     rf = 0.5 * (model.dm - model.D * math.cos(model.beta_f))
@@ -2001,8 +2015,8 @@ def _eccentric_start(model, Fa, e):
     if np.all(far):
         return _thrust_start(model, Fa)
     tau = np.minimum(tau, g_g[0])
-    rho = np.interp(tau, g_g[::-1], rho_g[::-1])
-    S = np.interp(tau, g_g[::-1], S_g[::-1])
+    rho = np.interp(tau, g_r, rho_r)
+    S = np.interp(tau, g_r, S_r)
     b = (Fa / (C * S)) ** (2.0 / 3.0)
     # the most loaded ball (psi = 0) at the approach the linear model gives it,
     # sin(beta_f) (a + b), on the exact geometry: a + b = sqrt((A + delta)^2 - x0^2) - z0
@@ -2018,6 +2032,27 @@ def _eccentric_start(model, Fa, e):
     if np.any(far):
         u0[far] = _thrust_start(model, Fa[far])
     return u0
+
+
+def _eccentric_start_one(model, Fa, e):
+    """:func:`_eccentric_start` for one case of floats (the same operations on floats)."""
+    rho_g, g_g, S_g, g_r, rho_r, S_r = _eccentric_grid(model.Z)
+    sf = math.sin(model.beta_f)
+    rf = 0.5 * (model.dm - model.D * math.cos(model.beta_f))
+    tau = e / rf
+    if not tau < _ECC_LINEAR or model.beta_f < _ECC_MIN_ANGLE:
+        return _thrust_start(model, np.array(Fa))
+    C = model.Kn_free * max(sf, 1e-3) ** 2.5
+    tau = min(tau, float(g_g[0]))
+    rho = float(np.interp(tau, g_r, rho_r))
+    b = (Fa / (C * float(np.interp(tau, g_r, S_r)))) ** (2.0 / 3.0)
+    A, x0, z0 = model.A, model.A * math.cos(model.beta_f), model.A * sf
+    d1 = min(sf * (rho + 1.0) * b, MAX_APPROACH_RATIO * model.D)
+    top = math.sqrt((A + d1 - x0) * (A + d1 + x0)) - z0
+    f = top / ((rho + 1.0) * b) if b > 0 else 0.0
+    b = min(b * f, 0.5 * model.D)
+    return np.array([min(max(rho * b, -0.5 * model.D), 0.5 * model.D), 0.0, 0.0, 0.0,
+                     -b / model.Ri])
 
 
 def _thrust_start(model, Fa):
