@@ -894,22 +894,23 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
     anyfixed = any(fx)
     n_free = max(5 - sum(fx), 1)
     F = [0.0 if fx[i] else float(v) for i, v in enumerate(F[0])]
-    Fsx = [F[i] / sc[i] for i in range(5)]                  # applied, scaled
-    Fs_ext = max(abs(v) for v in Fsx)
+    Fsx = [F[0], F[1], F[2], F[3] / Ri, F[4] / Ri]            # applied, scaled
+    Fs_ext = max(abs(Fsx[0]), abs(Fsx[1]), abs(Fsx[2]), abs(Fsx[3]), abs(Fsx[4]))
     step_max = 0.25 * model.A
     lev = 1e-6 / model.A
-    Farr = np.array(F)
     R5 = range(5)
 
     def residual(o):
         Fo = o.F
-        R = [0.0 if fx[i] else Fo[i] - Fsx[i] for i in R5]
+        R = [Fo[0] - Fsx[0], Fo[1] - Fsx[1], Fo[2] - Fsx[2], Fo[3] - Fsx[3], Fo[4] - Fsx[4]]
+        if anyfixed:
+            R = [0.0 if fx[i] else R[i] for i in R5]
         qmax = max(o.Q.tolist())
         return R, max(abs(R[0]), abs(R[1]), abs(R[2]), abs(R[3]), abs(R[4])) / \
             max(Fs_ext, qmax, 1e-300), qmax
 
-    def scaled(Js, mu):
-        Js = [row[:] for row in Js]
+    def scaled(J, mu):
+        Js = [J[0][:], J[1][:], J[2][:], J[3][:], J[4][:]]
         if anyfixed:
             for i in R5:
                 for j in R5:
@@ -918,12 +919,23 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
         if mu is None:                                    # Levenberg floor (see _newton)
             mu = max(1e-12 * abs(Js[0][0] + Js[1][1] + Js[2][2] + Js[3][3] + Js[4][4]) / n_free,
                      lev * max(Fs_ext, qmax))
-        for i in R5:
-            Js[i][i] += 1.0 if fx[i] else mu
+        if anyfixed:
+            for i in R5:
+                Js[i][i] += 1.0 if fx[i] else mu
+        else:
+            Js[0][0] += mu
+            Js[1][1] += mu
+            Js[2][2] += mu
+            Js[3][3] += mu
+            Js[4][4] += mu
         return Js, mu
 
     def dot(a, b):
         return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] + a[4] * b[4]
+
+    def step(u, t, d):
+        return [u[0] + t * d[0], u[1] + t * d[1], u[2] + t * d[2], u[3] + t * d[3],
+                u[4] + t * d[4]]
 
     cap = max(_FLOOR_CAP, 100.0 * rtol)
     u = u0[0].tolist()
@@ -946,16 +958,17 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
                 f"displacements {u}")
         it += 1
         Js, mu = scaled(st.J, None)
-        dS = [-v for v in _gesv(Js, R)]
+        x = _gesv(Js, R)
+        dS = [-x[0], -x[1], -x[2], -x[3], -x[4]]
         if arm == "groove" and not dot(R, dS) < 0.0:
             sb = _State(model, geo, np.array(u)[None], arm, Kn=st.Kn[None])
             Jsym = (0.5 * (sb.J[0] + sb.J[0].T)).tolist()
             Jb, _ = scaled([[Jsym[i][j] / (sc[i] * sc[j]) for j in R5] for i in R5], mu)
             dS = [-v for v in _gesv(Jb, R)]
-        size = max(abs(v) for v in dS)
+        size = max(abs(dS[0]), abs(dS[1]), abs(dS[2]), abs(dS[3]), abs(dS[4]))
         if seat and it == 1:
             # exact line minimiser of the linearised frozen potential (see above)
-            du = [dS[i] / sc[i] for i in R5]
+            du = [dS[0], dS[1], dS[2], dS[3] / Ri, dS[4] / Ri]
             dxz = np.dot(geo.G2, du)
             Z = st.c.size
             b = np.maximum(dxz[:Z] * st.c + dxz[Z:] * st.sn, 0.0)
@@ -969,10 +982,10 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
             f = step_max / size
             dS = [v * f for v in dS]
         g = dot(R, dS)
-        du = [dS[i] / sc[i] for i in R5]
+        du = [dS[0], dS[1], dS[2], dS[3] / Ri, dS[4] / Ri]
         t = 1.0
         local = err < 1e-6
-        unew = [u[i] + du[i] for i in R5]
+        unew = step(u, 1.0, du)
         snew = _one_case(model, geo, unew, arm)
         if arm == "groove":
             # the full step's state gives its frozen-stiffness potential (the same
@@ -983,14 +996,13 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
                 dn = snew.delta
                 ph = 0.4 * float(np.dot(Kf, dn * dn * np.sqrt(dn))) - dot(F, unew)
                 if not ph <= phi0 + 1e-4 * g:
-                    ua, dua = np.array(u), np.array(du)
+                    ua, dua, Fa = np.array(u), np.array(du), np.array(F)[None]
                     for _ in range(59):
                         t *= 0.5
-                        ph = float(_potential(model, geo, (ua + t * dua)[None], Kf[None],
-                                              Farr[None])[0])
+                        ph = float(_potential(model, geo, (ua + t * dua)[None], Kf[None], Fa)[0])
                         if ph <= phi0 + 1e-4 * t * g:
                             break
-                    unew = [u[i] + t * du[i] for i in R5]
+                    unew = step(u, t, du)
                     snew = _one_case(model, geo, unew, arm)
             Rn, en, qn = residual(snew)
         else:
@@ -1000,11 +1012,12 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
                 if dot(Rn, Rn) <= m0:
                     break
                 t *= 0.5
-                unew = [u[i] + t * du[i] for i in R5]
+                unew = step(u, t, du)
                 snew = _one_case(model, geo, unew, arm)
                 Rn, en, qn = residual(snew)
         dmx = max(snew.delta.tolist())                                     # _floor
-        umx = max(abs(unew[i] * sc[i]) for i in R5)
+        umx = max(abs(unew[0]), abs(unew[1]), abs(unew[2]), abs(unew[3] * Ri),
+                  abs(unew[4] * Ri))
         fl = min(max(100.0 * rtol, _EPS20 * umx / dmx), cap) if dmx > 0 else 0.0
         floor = fl >= en > 0.5 * err
         u, st, R, err, qmax = unew, snew, Rn, en, qn
