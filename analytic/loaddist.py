@@ -1266,8 +1266,12 @@ def _check_loads(model, L):
     over the largest arm, max(R_i, (d_e + D)/2)).
     """
     arm = max(model.Ri, 0.5 * (model.dm + model.D))
-    Fm = np.abs(np.asarray(L, float) / np.array([1.0, 1.0, 1.0, arm, arm])).max(-1)
     cap = model.capacity
+    if type(L) is np.ndarray and L.shape == (1, 5):          # one case: Python floats
+        a, b, c, d, e = L[0].tolist()
+        if max(abs(a), abs(b), abs(c), abs(d) / arm, abs(e) / arm) <= cap:
+            return
+    Fm = np.abs(np.asarray(L, float) / np.array([1.0, 1.0, 1.0, arm, arm])).max(-1)
     if np.any(Fm > cap):
         i = int(np.argmax(Fm))
         raise ValueError(
