@@ -1489,8 +1489,15 @@ def solve(bearing: BallBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *, displ
         u0 = np.where(imposed, np.nan_to_num(D), u0)
     if not (type(rtol) is float and 0.0 < rtol <= 1e-3):
         rtol = float(check_range(rtol, "rtol", 0.0, 1e-3, high_inclusive=True, unit="-"))
+    return _solve_checked(bearing, model, geo, psi, x0, z0, Pd, L, imposed, u0, shape,
+                          moment_arm, rtol, max_iter, moment_arm == "contact" and _contact_direct)
+
+
+def _solve_checked(bearing, model, geo, psi, x0, z0, Pd, L, imposed, u0, shape, moment_arm,
+                   rtol, max_iter, direct):
+    """The drivers of :func:`solve` on checked inputs: loads L (N, 5), imposed (N, 5),
+    start u0 (N, 5) (imposed values in place), result shape ``shape``."""
     st = None
-    direct = moment_arm == "contact" and _contact_direct
     if L.shape[0] == 1:
         try:
             st = None
@@ -1957,15 +1964,23 @@ def eccentric_thrust(bearing: BallBearing, Fa, e, *, rtol: float = 1e-12,
         raise TypeError(f"bearing must be a ballrace.BallBearing; got {type(bearing).__name__}")
     model = _Model.of(bearing)
     e_max = 0.5 * model.dm
-    if _plain(Fa) and _plain(e) and Fa >= 0 and 0 <= e < e_max:
-        # one case of plain numbers (what the checks below would accept): no arrays
+    if _plain(Fa) and _plain(e) and Fa >= 0 and 0 <= e < e_max and type(rtol) is float and \
+            0.0 < rtol <= 1e-3:
+        # one case of plain numbers (what the checks below would accept): what
+        # solve(Fa, Mz=-e Fa, displacements=_ECC_FREE, initial=start) does, without arrays
         F1, e1 = float(Fa), float(e)
-        res = solve(bearing, Fa=F1, Mz=-e1 * F1, displacements=_ECC_FREE, moment_arm="contact",
-                    rtol=rtol, max_iter=max_iter,
-                    initial=_eccentric_start_one(model, F1, e1),
-                    _contact_direct=True)
-        log.debug("eccentric thrust: converged in %d Newton iterations", res.iterations)
-        return res
+        L = np.array([[F1, 0.0, 0.0, 0.0, -e1 * F1]])
+        _check_loads(model, L)
+        u0 = _eccentric_start_one(model, F1, e1)
+        lim = model.D / model.Ri
+        if abs(u0[0]) <= model.D and abs(u0[4]) <= lim:
+            Pd, x0, z0 = _reference(model, None, False)
+            geo = _geo(model, bearing, 0.0, x0, z0)
+            res = _solve_checked(bearing, model, geo, geo.psi.copy(), x0, z0, Pd, L,
+                                 _ECC_IMPOSED.copy(), u0[None], (), "contact", rtol, max_iter,
+                                 True)
+            log.debug("eccentric thrust: converged in %d Newton iterations", res.iterations)
+            return res
     F0 = check_nonnegative(Fa, "Fa", "N", bounded=True, tiny_ok=True)
     e0 = check_nonnegative(e, "e", "m")
     Fa_, e_ = broadcast(Fa=F0, e=e0)
@@ -1990,6 +2005,8 @@ def eccentric_thrust(bearing: BallBearing, Fa, e, *, rtol: float = 1e-12,
 #: The DOFs of eccentric_thrust: axial and tilt about z free, the rest held at 0.
 _ECC_FREE = np.array([np.nan, 0.0, 0.0, 0.0, np.nan])
 _ECC_FREE.flags.writeable = False
+_ECC_IMPOSED = ~np.isnan(_ECC_FREE)[None]
+_ECC_IMPOSED.flags.writeable = False
 
 
 @functools.lru_cache(maxsize=64)
