@@ -437,13 +437,6 @@ class _State:
         """One load case (u of shape (5,)): the kernel :func:`_one_case`, as (1, ...) arrays."""
         self._set(model, _one_case(model, geo, u, arm))
 
-    @classmethod
-    def of_one(cls, model, o):
-        """The _State (leading axis 1) of a :func:`_one_case` result ``o``."""
-        st = cls.__new__(cls)
-        st._set(model, o)
-        return st
-
     def _set(self, model, o):
         Ri = model.Ri
         sc = (1.0, 1.0, 1.0, Ri, Ri)

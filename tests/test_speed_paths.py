@@ -152,6 +152,21 @@ def test_small_solver_matches_numpy():
         _solve_small([[1.0, 2.0], [2.0, 4.0]], [1.0, 1.0])
 
 
+def test_lapack_small_solver_matches_numpy():
+    # the one-case Newton solves its 5 x 5 systems by LAPACK gesv on nested lists
+    from ballrace.analytic.loaddist import _gesv
+    rng = np.random.default_rng(5)
+    for _ in range(50):
+        A = rng.normal(size=(5, 5)) + 5 * np.eye(5) * rng.uniform(0, 1)
+        b = rng.normal(size=5)
+        x = _gesv(A.tolist(), b.tolist())
+        assert type(x) is list and np.allclose(x, np.linalg.solve(A, b), rtol=1e-10, atol=1e-12)
+    with pytest.raises(np.linalg.LinAlgError):
+        _gesv([[1.0, 2.0], [2.0, 4.0]], [1.0, 1.0])
+    with pytest.raises(np.linalg.LinAlgError):
+        _gesv([[1.0, 0.0], [0.0, np.nan]], [1.0, 1.0])
+
+
 def test_blocked_vectorised_contact_equals_small_arrays():
     # arrays above two blocks run the in-place block kernel (_exact_block), small ones the
     # plain array path: the same operations, so the same bits (zero loads and a circle too)
@@ -202,7 +217,8 @@ def test_one_case_result_equals_general_result(f, arm, ricci):
                          r.imposed[None], arm, np.array([r.iterations]), (), "exact")
     scale = max(np.abs(r.applied).max(), r.max_ball_load, 1e-300)
     assert np.allclose(r.loads, g.loads, rtol=0, atol=1e-12 * scale * 0.1)
-    assert np.allclose(r.ball_loads, g.ball_loads, rtol=0, atol=1e-12 * max(r.max_ball_load, 1e-300))
+    assert np.allclose(r.ball_loads, g.ball_loads, rtol=0,
+                       atol=1e-12 * max(r.max_ball_load, 1e-300))
     assert np.allclose(r.contact_angles, g.contact_angles, rtol=0, atol=1e-12)
     assert np.allclose(r.stiffness, g.stiffness, rtol=1e-11,
                        atol=1e-8 * max(np.abs(g.stiffness).max(), 1.0))
