@@ -1906,9 +1906,11 @@ def eccentric_thrust(bearing: BallBearing, Fa, e, *, rtol: float = 1e-12,
     radius d_c/2, so this equals ``solve(..., Mz=-e*Fa, moment_arm="contact",
     displacements=[None, 0, 0, 0, None])``, and is solved that way: eq. (26) gives each
     beta_j from (delta_a, theta), which leaves the two equilibrium equations (30), (31)
-    in delta_a and theta, solved by the damped Newton of :func:`solve` from the
-    pure-thrust solution (one solver for both, with its round-off floor, per-case
-    convergence over arrays and the final residual check).  Solving the Z + 2 equations
+    in delta_a and theta, solved by the damped Newton of :func:`solve` (one solver for
+    both, with its round-off floor, per-case convergence over arrays and the final
+    residual check) from the solution of the constant-angle, linearised model (the
+    discrete form of Harris's J-integrals; the pure-thrust solution for e >= 0.95 r_f or
+    beta_f < 0.15 rad, see ``_eccentric_start``).  Solving the Z + 2 equations
     directly failed on a quarter of the feasible inputs at e > 0.3 R_i.
 
     The thrust line must pass inside the pitch circle, e < d_e/2: every contact radius
