@@ -279,3 +279,22 @@ def test_one_case_driver_seated_start_and_checks():
         brg.solve(Fa=1e9)
     with pytest.raises(loaddist.ConvergenceError, match="did not converge after 2 iterations"):
         brg.solve(Fa=1000.0, Fy=3000.0, max_iter=2)
+
+
+@pytest.mark.parametrize("arm", ["groove", "contact"])
+def test_one_case_kernel_stiffness_is_exact_hertz(arm):
+    # the kernel's K_n is the table's (the batch kernel's _kn) and so exact Hertz to 1e-13
+    from ballrace.analytic import loaddist
+    brg = _ricci218()
+    r = loaddist.solve(brg, Fa=17800.0, Fy=8900.0, Mz=-200.0, moment_arm=arm)
+    model = loaddist._Model.of(brg)
+    _, x0, z0 = loaddist._reference(model, None, False)
+    geo = loaddist._geo(model, brg, 0.0, x0, z0)
+    o = loaddist._one_case(model, geo, r.displacements.tolist(), arm)
+    beta = np.arctan2(o.z, o.x)
+    Kb, db = loaddist._kn(model, beta)
+    Kx, dx = loaddist._kn_exact(model, beta)
+    assert np.allclose(o.Kn, Kb, rtol=1e-15, atol=0) and np.allclose(o.dlnK, db, rtol=1e-13,
+                                                                       atol=1e-15)
+    assert np.allclose(o.Kn, Kx, rtol=1e-13, atol=0)
+    assert np.allclose(o.dlnK, dx, rtol=0, atol=loaddist._TABLE_DTOL * np.abs(dx).max())
