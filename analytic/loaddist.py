@@ -360,8 +360,8 @@ def _geo(model, bearing, azimuth_offset, x0, z0):
 class _Geo:
     """Per-solve constants: ball azimuths and the kinematic vectors dx_j/du, dz_j/du."""
 
-    __slots__ = ("psi", "cp", "sp", "gx", "gz", "G", "G2", "kk", "xz0", "P2", "I2", "J2", "x0",
-                 "z0", "A", "g0")
+    __slots__ = ("psi", "cp", "sp", "gx", "gz", "G", "G2", "kk", "xz0", "xz2", "M", "ar", "x0",
+                 "z0", "A", "g0", "Kseat")
 
     def __init__(self, model, psi, x0, z0):
         Z = psi.size
@@ -376,17 +376,15 @@ class _Geo:
         kk = np.zeros((Z, 5))                                # d(contact-arm vector)/d r
         kk[:, 3], kk[:, 4] = self.sp, -self.cp
         self.kk = kk
-        # one-case kernel (_State._one): (x; z) offsets, and the rows e G, t G of every ball
-        # as (5, 2Z) = A3[I, J] * P, A3 = (sin b, cos b, -sin b) (3, Z): the nonzero columns
-        # of g_x are (cos psi, sin psi) at DOFs 1, 2, of g_z (1, R_i sin psi, -R_i cos psi)
-        # at DOFs 0, 3, 4
+        # one-case kernel (_one_case): (x; z) offsets of every ball, twice them, and the
+        # per-ball trig moments (1, cos psi, sin psi, cos^2, cos sin, sin^2) (Z, 6)
         self.xz0 = np.concatenate([np.full(Z, x0), np.full(Z, z0)])
-        P = np.stack([np.ones(Z), self.cp, self.sp, model.Ri * self.sp, -model.Ri * self.cp])
-        self.P2 = np.concatenate([P, P], axis=1)
-        rows = np.array([[0, 1, 1, 0, 0], [1, 2, 2, 1, 1]]).T          # e G: sin, cos; t G
-        self.I2 = np.repeat(rows, Z, axis=1)
-        self.J2 = np.tile(np.arange(Z), (5, 2))
+        self.xz2 = 2.0 * self.xz0
+        cp, sp = self.cp, self.sp
+        self.M = np.ascontiguousarray(np.stack([np.ones(Z), cp, sp, cp * cp, cp * sp, sp * sp], 1))
+        self.ar = None if model.table is None else np.arange(float(model.table.shape[0]))[None]
         self.x0, self.z0, self.A = x0, z0, model.A
+        self.Kseat = None                                    # see _one_case_seated
         # x0^2 + z0^2 - A^2 without cancellation: 0 for the touching reference,
         # (x0 - A)(x0 + A) = -(P_d/2)(x0 + A) for the centred one
         self.g0 = 0.0 if z0 > 0 else (x0 - model.A) * (x0 + model.A)
@@ -436,55 +434,151 @@ class _State:
         self.J = _jacobian(model, geo, self, arm) if jac else None
 
     def _one(self, model, geo, u, arm):
-        """One load case (u of shape (5,)): the same quantities with fewer array operations.
+        """One load case (u of shape (5,)): the kernel :func:`_one_case`, as (1, ...) arrays."""
+        self._set(model, _one_case(model, geo, u, arm))
 
-        With e = (cos b, sin b), t = (-sin b, cos b) per ball and the kinematic rows
-        g_e = e G = d(approach)/du, g_t = t G (G = (dx/du; dz/du)), dQ/du = k15 g_e +
-        qk g_t (k15 = 1.5 K_n delta^0.5, qk = Q (dlnK_n/dbeta)/s) and d e/du = t g_t / s:
-        F = sum Q h_e,  J = sum h_e (x) dQ/du + (Q/s) h_t (x) g_t [+ contact-arm term],
-        h_e = cos b g_x + sin b h, h_t = -sin b g_x + cos b h, h = g_z (groove arm) or
-        (1, 0, 0, r sin psi, -r cos psi), r = (d_e - D cos b)/2 (contact arm), whose
-        change with beta adds Q sin b (D/2) sin b / s (0,0,0, sin psi, -cos psi) (x) g_t.
-        """
-        Z = geo.cp.size
-        d = geo.G2 @ u                                       # (dx; dz)
-        XZ = d + geo.xz0
-        x, z = XZ[:Z], XZ[Z:]
-        s = np.hypot(x, z)
-        w = d * (d + 2.0 * geo.xz0)                          # dx (2 x0 + dx); dz (2 z0 + dz)
-        approach = w[:Z] + w[Z:] if geo.g0 == 0 else (geo.g0 + w[:Z]) + w[Z:]
-        approach /= s + geo.A
+    def _set(self, model, o):
+        Ri = model.Ri
+        sc = (1.0, 1.0, 1.0, Ri, Ri)
+        Fs, Js = o.F, o.J
+        self.s, self.c, self.sn = o.s[None], o.c[None], o.sn[None]
+        self.beta = np.arctan2(o.z, o.x)[None]
+        self.delta, self.Kn, self.dlnK, self.Q = o.delta[None], o.Kn[None], o.dlnK[None], o.Q[None]
+        self.F = np.array([[Fs[i] * sc[i] for i in range(5)]])
+        self.J = _unscaled_J(Js, Ri)[None]
+
+
+def _unscaled_J(Js, Ri):
+    """The (5, 5) array J = J_s (sc sc^T) of a scaled Jacobian (nested list) [SI]."""
+    J = np.array(Js)
+    J[3:] *= Ri
+    J[:, 3:] *= Ri
+    return J
+
+
+#: Weights of the one-case kernel as combinations of the 20 products p_a t_b of
+#: p = (k15, qk, qs, Q) and t = (cos b, sin b, cos^2 b, cos b sin b, sin^2 b) (row 5 a + b):
+#: f_r = Q cos b, f_a = Q sin b and the four d(Q cos b, Q sin b)/d(x, z) (see _one_case).
+_W_OF_PT = np.zeros((6, 20))
+for _r, _terms in enumerate((((3, 0, 1),), ((3, 1, 1),),
+                             ((0, 2, 1), (1, 3, -1), (2, 4, 1)),       # W_xx
+                             ((0, 3, 1), (1, 2, 1), (2, 3, -1)),       # W_xz
+                             ((0, 3, 1), (1, 4, -1), (2, 3, -1)),      # W_zx
+                             ((0, 4, 1), (1, 3, 1), (2, 2, 1)))):      # W_zz
+    for _a, _b, _v in _terms:
+        _W_OF_PT[_r, 5 * _a + _b] = _v
+del _r, _terms, _a, _b, _v
+
+
+class _OneCase:
+    """Result of :func:`_one_case` (plain attributes; F, J scaled, as Python lists)."""
+
+    __slots__ = ("x", "z", "s", "c", "sn", "delta", "Kn", "dlnK", "Q", "F", "J", "qmax", "dmax")
+
+
+def _one_case_seated(model, geo):
+    """:func:`_one_case` at u = 0 in the touching reference configuration (geo.g0 == 0):
+    every ball at zero approach at the reference angle atan2(z_0, x_0), so Q = 0, F = 0,
+    J = 0 exactly (K_n at that angle, exact Hertz, cached on the _Geo)."""
+    Z = geo.cp.size
+    o = _OneCase()
+    o.x, o.z = np.full(Z, geo.x0), np.full(Z, geo.z0)
+    s = math.hypot(geo.x0, geo.z0)
+    o.s = np.full(Z, s)
+    o.c, o.sn = o.x / s, o.z / s
+    o.delta, o.Q, o.dlnK = np.zeros(Z), np.zeros(Z), np.zeros(Z)
+    if geo.Kseat is None:
+        geo.Kseat = float(_kn_exact(model, np.array([math.atan2(geo.z0, geo.x0)]))[0][0])
+    o.Kn = np.full(Z, geo.Kseat)
+    o.F = [0.0] * 5
+    o.J = [[0.0] * 5 for _ in range(5)]
+    return o
+
+
+def _one_case(model, geo, u, arm):
+    r"""Ball loads, resultant and Jacobian for one case u = (5,) [m, rad], in scaled form.
+
+    Returns an :class:`_OneCase` whose ``F`` (5 floats) and ``J`` (5 x 5 nested list) are
+    the resultant and tangent stiffness with moments and tilts scaled by R_i
+    (F_s = F / sc, J_s = J / (sc sc^T), sc = (1, 1, 1, R_i, R_i)), the form the Newton
+    iteration works in.  Per ball, with e = (cos b, sin b), t = (-sin b, cos b),
+    k15 = 1.5 K_n delta^0.5, qs = Q / s, qk = qs d ln K_n / d beta, the resultant of
+    (Q cos b, Q sin b) changes with the groove-centre offsets (x, z) by
+    W = k15 e (x) e + qk e (x) t + qs t (x) t; with g_x = (0, cos psi, sin psi, 0, 0),
+    g_z = (1, 0, 0, sin psi, -cos psi) (scaled) and h = (1, 0, 0, rho sin psi,
+    -rho cos psi) the force row (rho = 1, groove arm; rho = (d_e - D cos b)/(2 R_i),
+    contact arm):
+
+    .. math:: F = \sum Q(\cos b\, g_x + \sin b\, h), \quad
+              J = \sum W_{xx} g_x g_x^T + W_{xz} g_x g_z^T + W_{zx} h g_x^T + W_{zz} h g_z^T
+              [+ Q \sin b\, dh/db\, (db/du)^T]
+
+    Every entry is a sum over the balls of a per-ball weight times one of the trig
+    moments (1, cos psi, sin psi, cos^2 psi, cos psi sin psi, sin^2 psi), so the whole is
+    one matrix product of weights and moments, then 30 scalar assignments: a handful of
+    NumPy calls whatever Z.
+    """
+    Z = geo.cp.size
+    d = np.dot(geo.G2, u)                                # (dx; dz)
+    XZ = d + geo.xz0
+    x, z = XZ[:Z], XZ[Z:]
+    s = np.hypot(x, z)
+    w = d * (d + geo.xz2)                                # dx (2 x0 + dx); dz (2 z0 + dz)
+    approach = w[:Z] + w[Z:] if geo.g0 == 0 else (geo.g0 + w[:Z]) + w[Z:]
+    approach /= s + geo.A
+    if not min(s.tolist()) > 0.0:
         s = np.maximum(s, 1e-300)
-        CS = XZ.reshape(2, Z) / s
-        c, sn = CS[0], CS[1]
-        beta = np.arctan2(z, x)
-        delta = np.maximum(approach, 0.0)
-        if not x.min() > 0:
-            delta[~(x > 0)] = 0.0
-        Kn, dlnK = _kn(model, beta, c, sn)
-        sq = np.sqrt(delta)
-        Q = Kn * delta * sq
-        A3 = np.concatenate((CS[::-1], -CS[1:]))            # sin b, cos b, -sin b
-        GT = A3[geo.I2, geo.J2]
-        GT *= geo.P2                                         # (5, 2Z): e G | t G per ball
-        ge, gt = GT[:, :Z], GT[:, Z:]
-        qs = Q / s
-        V = ge * (1.5 * Kn * sq)                             # dQ/du, (5, Z)
-        V += gt * (qs * dlnK)
-        if arm == "groove":
-            F = ge @ Q
-            J = (GT * np.concatenate((np.ones(Z), qs))) @ np.concatenate((V, gt), axis=1).T
-        else:
-            rr = (0.5 / model.Ri) * (model.dm - model.D * c)  # r / R_i
-            he, ht = ge.copy(), gt.copy()
-            he[3:] *= rr
-            ht[3:] *= rr
-            F = he @ Q
-            w = qs * sn * sn * (0.5 * model.D)
-            J = he @ V.T + (ht * qs + geo.kk.T * w) @ gt.T
-        self.s, self.beta, self.c, self.sn = s[None], beta[None], c[None], sn[None]
-        self.delta, self.Kn, self.dlnK, self.Q = delta[None], Kn[None], dlnK[None], Q[None]
-        self.F, self.J = F[None], J[None]
+    CS = XZ.reshape(2, Z) / s
+    c, sn = CS[0], CS[1]
+    delta = np.maximum(approach, 0.0)
+    cmin = min(c.tolist())
+    if not cmin > 0:
+        delta[~(x > 0)] = 0.0
+    # K_n from the table (see _kn): ln K_n = sum a_k cos(k arccos(2 cos b - 1))
+    tab = model.table
+    if tab is None or not cmin >= 0.0:
+        Kn, dlnK = _kn(model, np.arctan2(z, x), c, sn)
+    else:
+        v = np.dot(np.cos(np.dot(np.arccos(c * 2.0 - 1.0)[:, None], geo.ar)), tab)
+        Kn = np.exp(v[:, 0])
+        dlnK = (-2.0 * sn) * v[:, 1]
+    sq = np.sqrt(delta)
+    P = np.empty((4, Z))
+    np.multiply(Kn, sq, out=P[3])
+    np.multiply(P[3], 1.5, out=P[0])                     # k15
+    P[3] *= delta                                        # Q
+    np.divide(P[3], s, out=P[2])                         # qs
+    np.multiply(P[2], dlnK, out=P[1])                    # qk
+    T = np.empty((5, Z))
+    T[:2] = CS
+    np.multiply(CS, c, out=T[2:4])
+    np.multiply(sn, sn, out=T[4])
+    Wt = np.dot(_W_OF_PT, (P[:, None, :] * T).reshape(20, Z))  # fr, fa, Wxx, Wxz, Wzx, Wzz
+    S = np.dot(Wt, geo.M).tolist()
+    fr, fa, Wxx, Wxz, Wzx, Wzz = S
+    if arm == "groove":
+        far, Wzxr, Wzzr = fa, Wzx, Wzz
+    else:
+        # rows 3, 4: arm rho = r / R_i, and the change of r = (d_e - D cos b)/2 with b:
+        # Q sin b (D/2) sin b (sin psi, -cos psi) (x) (-sin b g_x + cos b g_z) / (R_i s)
+        k = 0.5 * model.D / model.Ri
+        rho = (0.5 * model.dm / model.Ri) - k * c
+        Wr = Wt[[1, 4, 5]] * rho
+        q3 = (k * P[2]) * T[4]
+        Wr[1] -= q3 * sn
+        Wr[2] += q3 * c
+        far, Wzxr, Wzzr = np.dot(Wr, geo.M).tolist()
+    # moments index: 0: 1, 1: cos, 2: sin, 3: cos^2, 4: cos sin, 5: sin^2
+    o = _OneCase()
+    o.F = [fa[0], fr[1], fr[2], far[2], -far[1]]
+    o.J = [[Wzz[0], Wzx[1], Wzx[2], Wzz[2], -Wzz[1]],
+           [Wxz[1], Wxx[3], Wxx[4], Wxz[4], -Wxz[3]],
+           [Wxz[2], Wxx[4], Wxx[5], Wxz[5], -Wxz[4]],
+           [Wzzr[2], Wzxr[4], Wzxr[5], Wzzr[5], -Wzzr[4]],
+           [-Wzzr[1], -Wzxr[3], -Wzxr[4], -Wzzr[4], Wzzr[3]]]
+    o.x, o.z, o.s, o.c, o.sn = x, z, s, c, sn
+    o.delta, o.Kn, o.dlnK, o.Q = delta, Kn, dlnK, P[3]
+    return o
 
 
 def _jacobian(model, geo, st, arm):
@@ -750,54 +844,99 @@ def _solve_small(A, b):
     return x
 
 
+_GESV = []
+
+
+def _gesv(A, b):
+    """Solve A x = b (5 x 5 nested lists) by LAPACK's gesv (LU with partial pivoting).
+
+    ``numpy.linalg.LinAlgError`` if A is singular or the solution is not finite (as
+    :func:`_solve_small`).  scipy.linalg is imported on first use.
+    """
+    if not _GESV:
+        from scipy.linalg import lapack
+        _GESV.append(lapack.dgesv)
+    x, info = _GESV[0](np.array(A), np.array(b))[2:]
+    x = x.tolist()
+    if info != 0 or not -np.inf < sum(x) < np.inf:
+        raise np.linalg.LinAlgError("Singular matrix")
+    return x
+
+
 def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
     """`_newton` for a single load case, with scalar control flow.
 
     The same iteration -- scaled Newton step with the Levenberg floor, the symmetric
     frozen-stiffness fallback, the trust radius, the Armijo search on the frozen-stiffness
     potential ("groove" arm) or on the residual norm ("contact" arm), the round-off floor --
-    without the vectorized driver's active-set indexing, and with the five-component
-    bookkeeping (residual, scaled Jacobian, linear solve, step) in Python floats, which for
-    one case cost more than the physics as NumPy calls.  ``tests/test_loaddist.py`` checks
-    that both drivers agree.  Returns (u (1,5), iterations (1,), final _State).
+    without the vectorized driver's active-set indexing, on the one-case kernel
+    (:func:`_one_case`, which returns the scaled resultant and Jacobian as Python floats),
+    with the five-component bookkeeping (residual, Levenberg floor, step) in Python floats
+    and the 5 x 5 solve by LAPACK.  Two shortcuts that leave the iterates' meaning alone:
+    the full step's state gives its frozen-stiffness potential (``_potential`` runs only
+    when the Armijo test rejects it), and from the touching reference configuration
+    (u = 0, every ball at zero approach, no stiffness) the first step's length is the
+    minimiser of the frozen potential along it with the approaches linearised,
+    t^(3/2) = F.du / sum K_n <b_j>^(5/2), b_j = d(approach_j)/du . du (the homogeneous
+    Hertz law), instead of halving from the trust radius.  ``tests/test_loaddist.py``
+    checks that both drivers agree.  Returns (u (1,5), iterations (1,), final _OneCase).
     """
     Ri = float(model.Ri)
-    sc = [1.0, 1.0, 1.0, Ri, Ri]
+    sc = (1.0, 1.0, 1.0, Ri, Ri)
     fx = [bool(v) for v in fixed[0]]
     anyfixed = any(fx)
-    free = [i for i in range(5) if not fx[i]]
-    n_free = max(len(free), 1)
+    n_free = max(5 - sum(fx), 1)
     F = [0.0 if fx[i] else float(v) for i, v in enumerate(F[0])]
-    Fs_ext = max(abs(F[i] / sc[i]) for i in range(5))
+    Fsx = [F[0], F[1], F[2], F[3] / Ri, F[4] / Ri]            # applied, scaled
+    Fs_ext = max(abs(Fsx[0]), abs(Fsx[1]), abs(Fsx[2]), abs(Fsx[3]), abs(Fsx[4]))
     step_max = 0.25 * model.A
-    Farr = np.array(F)
+    lev = 1e-6 / model.A
+    R5 = range(5)
 
-    def residual(st):
-        Fst = st.F[0].tolist()
-        R = [0.0 if fx[i] else (Fst[i] - F[i]) / sc[i] for i in range(5)]
-        qmax = float(st.Q.max())
-        return R, max(abs(r) for r in R) / max(Fs_ext, qmax, 1e-300), qmax
+    def residual(o):
+        Fo = o.F
+        R = [Fo[0] - Fsx[0], Fo[1] - Fsx[1], Fo[2] - Fsx[2], Fo[3] - Fsx[3], Fo[4] - Fsx[4]]
+        if anyfixed:
+            R = [0.0 if fx[i] else R[i] for i in R5]
+        qmax = max(o.Q.tolist())
+        return R, max(abs(R[0]), abs(R[1]), abs(R[2]), abs(R[3]), abs(R[4])) / \
+            max(Fs_ext, qmax, 1e-300), qmax
 
     def scaled(J, mu):
-        Js = [[J[i][j] / (sc[i] * sc[j]) for j in range(5)] for i in range(5)]
+        Js = [J[0][:], J[1][:], J[2][:], J[3][:], J[4][:]]
         if anyfixed:
-            for i in range(5):
-                for j in range(5):
+            for i in R5:
+                for j in R5:
                     if fx[i] or fx[j]:
                         Js[i][j] = 0.0
         if mu is None:                                    # Levenberg floor (see _newton)
-            mu = max(1e-12 * abs(sum(Js[i][i] for i in range(5))) / n_free,
-                     1e-6 * max(Fs_ext, qmax) / model.A)
-        for i in range(5):
-            Js[i][i] += 1.0 if fx[i] else mu
+            mu = max(1e-12 * abs(Js[0][0] + Js[1][1] + Js[2][2] + Js[3][3] + Js[4][4]) / n_free,
+                     lev * max(Fs_ext, qmax))
+        if anyfixed:
+            for i in R5:
+                Js[i][i] += 1.0 if fx[i] else mu
+        else:
+            Js[0][0] += mu
+            Js[1][1] += mu
+            Js[2][2] += mu
+            Js[3][3] += mu
+            Js[4][4] += mu
         return Js, mu
 
     def dot(a, b):
         return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] + a[4] * b[4]
 
+    def step(u, t, d):
+        return [u[0] + t * d[0], u[1] + t * d[1], u[2] + t * d[2], u[3] + t * d[3],
+                u[4] + t * d[4]]
+
     cap = max(_FLOOR_CAP, 100.0 * rtol)
     u = u0[0].tolist()
-    st = _State(model, geo, np.array(u)[None], arm)
+    seat = geo.g0 == 0 and not any(u) and Fs_ext > 0
+    if seat:                    # touching reference, u = 0: no ball loaded, no stiffness
+        st = _one_case_seated(model, geo)
+    else:
+        st = _one_case(model, geo, u, arm)
     R, err, qmax = residual(st)
     best = (err if err == err else np.inf, u, st)
     it = 0
@@ -811,49 +950,67 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
                 f"equilibrium residual {err:.3e} (> rtol={rtol:g}); loads {F}, "
                 f"displacements {u}")
         it += 1
-        Js, mu = scaled(st.J[0].tolist(), None)
-        dS = [-v for v in _solve_small(Js, R)]
+        Js, mu = scaled(st.J, None)
+        x = _gesv(Js, R)
+        dS = [-x[0], -x[1], -x[2], -x[3], -x[4]]
         if arm == "groove" and not dot(R, dS) < 0.0:
-            sb = _State(model, geo, np.array(u)[None], arm, Kn=st.Kn)
+            sb = _State(model, geo, np.array(u)[None], arm, Kn=st.Kn[None])
             Jsym = (0.5 * (sb.J[0] + sb.J[0].T)).tolist()
-            Jb, _ = scaled(Jsym, mu)
-            dS = [-v for v in _solve_small(Jb, R)]
-        size = max(abs(v) for v in dS)
+            Jb, _ = scaled([[Jsym[i][j] / (sc[i] * sc[j]) for j in R5] for i in R5], mu)
+            dS = [-v for v in _gesv(Jb, R)]
+        size = max(abs(dS[0]), abs(dS[1]), abs(dS[2]), abs(dS[3]), abs(dS[4]))
+        if seat and it == 1:
+            # exact line minimiser of the linearised frozen potential (see above)
+            du = [dS[0], dS[1], dS[2], dS[3] / Ri, dS[4] / Ri]
+            dxz = np.dot(geo.G2, du)
+            Z = st.c.size
+            b = np.maximum(dxz[:Z] * st.c + dxz[Z:] * st.sn, 0.0)
+            den = float(np.dot(st.Kn, b * b * np.sqrt(b)))
+            num = dot(F, du)
+            if den > 0.0 and num > 0.0:
+                f = (num / den) ** (2.0 / 3.0)
+                dS = [v * f for v in dS]
+                size *= f
         if size > step_max:
             f = step_max / size
             dS = [v * f for v in dS]
         g = dot(R, dS)
-        du = [dS[i] / sc[i] for i in range(5)]
+        du = [dS[0], dS[1], dS[2], dS[3] / Ri, dS[4] / Ri]
         t = 1.0
         local = err < 1e-6
+        unew = step(u, 1.0, du)
+        snew = _one_case(model, geo, unew, arm)
         if arm == "groove":
+            # the full step's state gives its frozen-stiffness potential (the same
+            # approaches as _potential); backtrack with _potential only if it is rejected
             if not local:
-                d = st.delta
-                phi0 = 0.4 * float((st.Kn * d * d * np.sqrt(d)).sum()) - dot(F, u)
-                ua, dua = np.array(u), np.array(du)
-                for _ in range(60):
-                    ph = float(_potential(model, geo, (ua + t * dua)[None], st.Kn,
-                                          Farr[None])[0])
-                    if ph <= phi0 + 1e-4 * t * g:
-                        break
-                    t *= 0.5
-            unew = [u[i] + t * du[i] for i in range(5)]
-            snew = _State(model, geo, np.array(unew)[None], arm)
+                Kf = st.Kn
+                phi0 = 0.4 * float(np.dot(st.Q, st.delta)) - dot(F, u)
+                dn = snew.delta
+                ph = 0.4 * float(np.dot(Kf, dn * dn * np.sqrt(dn))) - dot(F, unew)
+                if not ph <= phi0 + 1e-4 * g:
+                    ua, dua, Fa = np.array(u), np.array(du), np.array(F)[None]
+                    for _ in range(59):
+                        t *= 0.5
+                        ph = float(_potential(model, geo, (ua + t * dua)[None], Kf[None], Fa)[0])
+                        if ph <= phi0 + 1e-4 * t * g:
+                            break
+                    unew = step(u, t, du)
+                    snew = _one_case(model, geo, unew, arm)
             Rn, en, qn = residual(snew)
         else:
             m0 = dot(R, R)
-            unew = [u[i] + du[i] for i in range(5)]
-            snew = _State(model, geo, np.array(unew)[None], arm)
             Rn, en, qn = residual(snew)
             for _ in range(0 if local else 40):
                 if dot(Rn, Rn) <= m0:
                     break
                 t *= 0.5
-                unew = [u[i] + t * du[i] for i in range(5)]
-                snew = _State(model, geo, np.array(unew)[None], arm)
+                unew = step(u, t, du)
+                snew = _one_case(model, geo, unew, arm)
                 Rn, en, qn = residual(snew)
-        dmx = float(snew.delta.max())                                      # _floor
-        umx = max(abs(unew[i] * sc[i]) for i in range(5))
+        dmx = max(snew.delta.tolist())                                     # _floor
+        umx = max(abs(unew[0]), abs(unew[1]), abs(unew[2]), abs(unew[3] * Ri),
+                  abs(unew[4] * Ri))
         fl = min(max(100.0 * rtol, _EPS20 * umx / dmx), cap) if dmx > 0 else 0.0
         floor = fl >= en > 0.5 * err
         u, st, R, err, qmax = unew, snew, Rn, en, qn
@@ -1102,8 +1259,12 @@ def _check_loads(model, L):
     over the largest arm, max(R_i, (d_e + D)/2)).
     """
     arm = max(model.Ri, 0.5 * (model.dm + model.D))
-    Fm = np.abs(np.asarray(L, float) / np.array([1.0, 1.0, 1.0, arm, arm])).max(-1)
     cap = model.capacity
+    if type(L) is np.ndarray and L.shape == (1, 5):          # one case: Python floats
+        a, b, c, d, e = L[0].tolist()
+        if max(abs(a), abs(b), abs(c), abs(d) / arm, abs(e) / arm) <= cap:
+            return
+    Fm = np.abs(np.asarray(L, float) / np.array([1.0, 1.0, 1.0, arm, arm])).max(-1)
     if np.any(Fm > cap):
         i = int(np.argmax(Fm))
         raise ValueError(
@@ -1122,6 +1283,9 @@ def _result(bearing, model, psi, x0, z0, Pd, u, applied, imposed, arm, iters, sh
     load-deflection range.  Unloaded balls report the angle of the line of groove centres
     folded into (-pi/2, pi/2] (the line, not its direction).
     """
+    if type(state) is _OneCase:
+        return _result_one(bearing, model, psi, z0, Pd, u, applied, imposed, arm, iters, shape,
+                           method, state, rtol, what)
     st = _State(model, _Geo(model, psi, x0, z0), u, arm) if state is None else state
     Z = model.Z
     app = np.where(imposed, 0.0, applied)
@@ -1151,6 +1315,43 @@ def _result(bearing, model, psi, x0, z0, Pd, u, applied, imposed, arm, iters, sh
         ball_loads=st.Q.reshape(shape + (Z,)), contact_angles=beta.reshape(shape + (Z,)),
         stiffness=st.J.reshape(shape + (5, 5)), clearance=float(Pd), axial_offset=float(z0),
         moment_arm=arm, iterations=int(np.max(iters, initial=0)), method=method)
+
+
+def _result_one(bearing, model, psi, z0, Pd, u, applied, imposed, arm, iters, shape, method,
+                o, rtol, what):
+    """:func:`_result` for one case solved by :func:`_newton_one` (its final _OneCase
+    ``o``): the same checks and the same LoadDistribution, on Python floats."""
+    Ri = model.Ri
+    sc = (1.0, 1.0, 1.0, Ri, Ri)
+    imp = imposed.reshape(5).tolist()
+    app = [0.0 if imp[i] else v for i, v in enumerate(applied.reshape(5).tolist())]
+    Fs, Jl, ul = o.F, o.J, u.reshape(5).tolist()
+    Ql = o.Q.tolist()
+    res = max(0.0 if imp[i] else abs(Fs[i] - app[i] / sc[i]) for i in range(5))
+    scale = max(max(abs(app[i] / sc[i]) for i in range(5)), max(Ql))
+    rel = res / scale if scale > 0 else res
+    finite = math.isfinite(sum(ul) + sum(Fs) + sum(Ql) + sum(sum(r) for r in Jl))
+    tol = max(_FLOOR_CAP, 100.0 * rtol)
+    dmax = max(o.delta.tolist()) if finite else 0.0
+    if dmax > MAX_APPROACH_RATIO * model.D:
+        _overload(model, dmax, np.array(app))
+    if not (finite and rel <= tol):
+        raise ConvergenceError(
+            f"{what} did not reach equilibrium: relative residual {rel:.3e} "
+            f"(> {tol:g}) after {int(np.max(iters, initial=0))} iterations in load case 0; "
+            f"loads {app}, displacements {ul}")
+    beta = np.arctan2(o.z, o.x)
+    if not (min(beta.tolist()) > -0.5 * np.pi and max(beta.tolist()) <= 0.5 * np.pi):
+        beta = _fold_unloaded(beta, o.Q)
+    J = _unscaled_J(Jl, Ri)
+    Z = model.Z
+    return LoadDistribution(
+        bearing=bearing, azimuths=psi, displacements=u.reshape(shape + (5,)),
+        loads=np.array([Fs[0], Fs[1], Fs[2], Fs[3] * Ri, Fs[4] * Ri]).reshape(shape + (5,)),
+        applied=np.array(app).reshape(shape + (5,)), imposed=imposed.reshape(shape + (5,)),
+        ball_loads=o.Q.reshape(shape + (Z,)), contact_angles=beta.reshape(shape + (Z,)),
+        stiffness=J.reshape(shape + (5, 5)), clearance=float(Pd), axial_offset=float(z0),
+        moment_arm=arm, iterations=int(iters[0]), method=method)
 
 
 def solve(bearing: BallBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *, displacements=None,
@@ -1281,8 +1482,15 @@ def solve(bearing: BallBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *, displ
         u0 = np.where(imposed, np.nan_to_num(D), u0)
     if not (type(rtol) is float and 0.0 < rtol <= 1e-3):
         rtol = float(check_range(rtol, "rtol", 0.0, 1e-3, high_inclusive=True, unit="-"))
+    return _solve_checked(bearing, model, geo, psi, x0, z0, Pd, L, imposed, u0, shape,
+                          moment_arm, rtol, max_iter, moment_arm == "contact" and _contact_direct)
+
+
+def _solve_checked(bearing, model, geo, psi, x0, z0, Pd, L, imposed, u0, shape, moment_arm,
+                   rtol, max_iter, direct):
+    """The drivers of :func:`solve` on checked inputs: loads L (N, 5), imposed (N, 5),
+    start u0 (N, 5) (imposed values in place), result shape ``shape``."""
     st = None
-    direct = moment_arm == "contact" and _contact_direct
     if L.shape[0] == 1:
         try:
             st = None
@@ -1698,9 +1906,11 @@ def eccentric_thrust(bearing: BallBearing, Fa, e, *, rtol: float = 1e-12,
     radius d_c/2, so this equals ``solve(..., Mz=-e*Fa, moment_arm="contact",
     displacements=[None, 0, 0, 0, None])``, and is solved that way: eq. (26) gives each
     beta_j from (delta_a, theta), which leaves the two equilibrium equations (30), (31)
-    in delta_a and theta, solved by the damped Newton of :func:`solve` from the
-    pure-thrust solution (one solver for both, with its round-off floor, per-case
-    convergence over arrays and the final residual check).  Solving the Z + 2 equations
+    in delta_a and theta, solved by the damped Newton of :func:`solve` (one solver for
+    both, with its round-off floor, per-case convergence over arrays and the final
+    residual check) from the solution of the constant-angle, linearised model (the
+    discrete form of Harris's J-integrals; the pure-thrust solution for e >= 0.95 r_f or
+    beta_f < 0.15 rad, see ``_eccentric_start``).  Solving the Z + 2 equations
     directly failed on a quarter of the feasible inputs at e > 0.3 R_i.
 
     The thrust line must pass inside the pitch circle, e < d_e/2: every contact radius
@@ -1748,10 +1958,27 @@ def eccentric_thrust(bearing: BallBearing, Fa, e, *, rtol: float = 1e-12,
     if not isinstance(bearing, BallBearing):
         raise TypeError(f"bearing must be a ballrace.BallBearing; got {type(bearing).__name__}")
     model = _Model.of(bearing)
+    e_max = 0.5 * model.dm
+    if _plain(Fa) and _plain(e) and Fa >= 0 and 0 <= e < e_max and type(rtol) is float and \
+            0.0 < rtol <= 1e-3:
+        # one case of plain numbers (what the checks below would accept): what
+        # solve(Fa, Mz=-e Fa, displacements=_ECC_FREE, initial=start) does, without arrays
+        F1, e1 = float(Fa), float(e)
+        L = np.array([[F1, 0.0, 0.0, 0.0, -e1 * F1]])
+        _check_loads(model, L)
+        u0 = _eccentric_start_one(model, F1, e1)
+        lim = model.D / model.Ri
+        if abs(u0[0]) <= model.D and abs(u0[4]) <= lim:
+            Pd, x0, z0 = _reference(model, None, False)
+            geo = _geo(model, bearing, 0.0, x0, z0)
+            res = _solve_checked(bearing, model, geo, geo.psi.copy(), x0, z0, Pd, L,
+                                 _ECC_IMPOSED.copy(), u0[None], (), "contact", rtol, max_iter,
+                                 True)
+            log.debug("eccentric thrust: converged in %d Newton iterations", res.iterations)
+            return res
     F0 = check_nonnegative(Fa, "Fa", "N", bounded=True, tiny_ok=True)
     e0 = check_nonnegative(e, "e", "m")
     Fa_, e_ = broadcast(Fa=F0, e=e0)
-    e_max = 0.5 * model.dm
     if np.any(e_ >= e_max):
         bad = float(e_[e_ >= e_max].ravel()[0])
         raise ValueError(
@@ -1763,15 +1990,115 @@ def eccentric_thrust(bearing: BallBearing, Fa, e, *, rtol: float = 1e-12,
     Lc = np.zeros(F.shape + (5,))
     Lc[..., 0], Lc[..., 4] = F, -e_ * F
     _check_loads(model, Lc.reshape(-1, 5))
-    # start: the pure-thrust solution (all balls at one angle, no tilt; H&D eq. 3.60)
-    bt = _thrust_angle(model, F.ravel(), 1e-14, 100)
-    u0 = np.zeros(F.shape + (5,))
-    u0[..., 0] = (model.A * np.sin(bt - model.beta_f) / np.cos(bt)).reshape(F.shape)
-    d = np.array([np.nan, 0.0, 0.0, 0.0, np.nan])
-    res = solve(bearing, Fa=F, Mz=-e_ * F, displacements=d, moment_arm="contact", rtol=rtol,
+    u0 = _eccentric_start(model, F, e_)
+    res = solve(bearing, Fa=F, Mz=-e_ * F, displacements=_ECC_FREE, moment_arm="contact", rtol=rtol,
                 max_iter=max_iter, initial=u0, _contact_direct=True)
     log.debug("eccentric thrust: converged in %d Newton iterations", res.iterations)
     return res
+
+
+#: The DOFs of eccentric_thrust: axial and tilt about z free, the rest held at 0.
+_ECC_FREE = np.array([np.nan, 0.0, 0.0, 0.0, np.nan])
+_ECC_FREE.flags.writeable = False
+_ECC_IMPOSED = ~np.isnan(_ECC_FREE)[None]
+_ECC_IMPOSED.flags.writeable = False
+
+
+@functools.lru_cache(maxsize=64)
+def _eccentric_grid(Z):
+    """(rho, g(rho), S(rho)) on a grid of rho in (-1, 50]: g = sum <rho + cos psi_j>^1.5
+    cos psi_j / S, S = sum <rho + cos psi_j>^1.5, psi_j = 2 pi j / Z (g decreasing)."""
+    cp = np.cos(2.0 * np.pi * np.arange(Z) / Z)
+    rho = np.concatenate([-np.cos(np.linspace(0.0, np.pi, 97)[1:]), np.geomspace(1.02, 50.0, 48)])
+    w = np.maximum(rho[:, None] + cp, 0.0)
+    w = w * np.sqrt(w)
+    S = w.sum(1)
+    g = w @ cp / S
+    return rho, g, S, g[::-1].copy(), rho[::-1].copy(), S[::-1].copy()
+
+
+def _eccentric_start(model, Fa, e):
+    r"""Start (delta_a, 0, 0, 0, theta_z) of :func:`eccentric_thrust` (shape Fa.shape + (5,)).
+
+    The constant-angle, linearised model: ball j's approach sin(beta_f) (a + b cos psi_j)
+    with a = delta_a, b = -R_i theta_z, K_n and the contact radius r_f = (d_e - D cos
+    beta_f)/2 at the free angle, so that
+
+    .. math:: \frac{e}{r_f} = \frac{\sum\langle\rho + \cos\psi_j\rangle^{3/2}\cos\psi_j}
+              {\sum\langle\rho + \cos\psi_j\rangle^{3/2}}, \qquad
+              F_a = K_n \sin^{5/2}\beta_f\, b^{3/2} \sum\langle\rho + \cos\psi_j\rangle^{3/2}
+
+    (rho = a / b; the discrete form of Harris's J-integrals), rho interpolated from a
+    tabulated grid, then a + b scaled so that the most loaded ball has that approach on the
+    exact geometry.  Only a start: Newton on the exact equations follows.  For
+    e / r_f >= ``_ECC_LINEAR`` (the model has no solution at e >= r_f) or beta_f below
+    ``_ECC_MIN_ANGLE`` the pure-thrust solution is the start.
+    """
+    rho_g, g_g, S_g, g_r, rho_r, S_r = _eccentric_grid(model.Z)
+    sf = math.sin(model.beta_f)
+    C = model.Kn_free * max(sf, 1e-3) ** 2.5
+    rf = 0.5 * (model.dm - model.D * math.cos(model.beta_f))
+    Fa = np.asarray(Fa, float)
+    tau = np.broadcast_to(np.asarray(e, float) / rf, Fa.shape)
+    far = ~(tau < _ECC_LINEAR) | (model.beta_f < _ECC_MIN_ANGLE)
+    if np.all(far):
+        return _thrust_start(model, Fa)
+    tau = np.minimum(tau, g_g[0])
+    rho = np.interp(tau, g_r, rho_r)
+    S = np.interp(tau, g_r, S_r)
+    b = (Fa / (C * S)) ** (2.0 / 3.0)
+    # the most loaded ball (psi = 0) at the approach the linear model gives it,
+    # sin(beta_f) (a + b), on the exact geometry: a + b = sqrt((A + delta)^2 - x0^2) - z0
+    A, x0, z0 = model.A, model.A * math.cos(model.beta_f), model.A * sf
+    d1 = np.minimum(sf * (rho + 1.0) * b, MAX_APPROACH_RATIO * model.D)
+    top = np.sqrt((A + d1 - x0) * (A + d1 + x0)) - z0
+    with np.errstate(invalid="ignore", divide="ignore"):
+        f = np.where(b > 0, top / ((rho + 1.0) * b), 0.0)
+    b = np.minimum(b * f, 0.5 * model.D)
+    u0 = np.zeros(Fa.shape + (5,))
+    u0[..., 0] = np.clip(rho * b, -0.5 * model.D, 0.5 * model.D)
+    u0[..., 4] = -b / model.Ri
+    if np.any(far):
+        u0[far] = _thrust_start(model, Fa[far])
+    return u0
+
+
+def _eccentric_start_one(model, Fa, e):
+    """:func:`_eccentric_start` for one case of floats (the same operations on floats)."""
+    rho_g, g_g, S_g, g_r, rho_r, S_r = _eccentric_grid(model.Z)
+    sf = math.sin(model.beta_f)
+    rf = 0.5 * (model.dm - model.D * math.cos(model.beta_f))
+    tau = e / rf
+    if not tau < _ECC_LINEAR or model.beta_f < _ECC_MIN_ANGLE:
+        return _thrust_start(model, np.array(Fa))
+    C = model.Kn_free * max(sf, 1e-3) ** 2.5
+    tau = min(tau, float(g_g[0]))
+    rho = float(np.interp(tau, g_r, rho_r))
+    b = (Fa / (C * float(np.interp(tau, g_r, S_r)))) ** (2.0 / 3.0)
+    A, x0, z0 = model.A, model.A * math.cos(model.beta_f), model.A * sf
+    d1 = min(sf * (rho + 1.0) * b, MAX_APPROACH_RATIO * model.D)
+    top = math.sqrt((A + d1 - x0) * (A + d1 + x0)) - z0
+    f = top / ((rho + 1.0) * b) if b > 0 else 0.0
+    b = min(b * f, 0.5 * model.D)
+    return np.array([min(max(rho * b, -0.5 * model.D), 0.5 * model.D), 0.0, 0.0, 0.0,
+                     -b / model.Ri])
+
+
+def _thrust_start(model, Fa):
+    """(delta_t, 0, 0, 0, 0) of the pure-thrust solution (H&D eq. 3.60), shape Fa.shape + (5,)."""
+    bt = _thrust_angle(model, Fa.ravel(), 1e-14, 100)
+    u0 = np.zeros(Fa.shape + (5,))
+    u0[..., 0] = (model.A * np.sin(bt - model.beta_f) / np.cos(bt)).reshape(Fa.shape)
+    return u0
+
+
+#: Largest e / r_f (r_f the contact radius at the free angle) for which eccentric_thrust
+#: starts from the linearised model (:func:`_eccentric_start`); beyond it the ring tips
+#: onto few balls at angles far from beta_f and the pure-thrust start serves better.
+_ECC_LINEAR = 0.95
+#: Smallest free contact angle [rad] for that start: near beta_f = 0 the axial approach
+#: is quadratic in the axial shift, not linear.
+_ECC_MIN_ANGLE = 0.15
 
 
 # =========================================================================== approximations

@@ -162,6 +162,21 @@ def test_small_solver_matches_numpy():
         _solve_small([[1.0, 2.0], [2.0, 4.0]], [1.0, 1.0])
 
 
+def test_lapack_small_solver_matches_numpy():
+    # the one-case Newton solves its 5 x 5 systems by LAPACK gesv on nested lists
+    from ballrace.analytic.loaddist import _gesv
+    rng = np.random.default_rng(5)
+    for _ in range(50):
+        A = rng.normal(size=(5, 5)) + 5 * np.eye(5) * rng.uniform(0, 1)
+        b = rng.normal(size=5)
+        x = _gesv(A.tolist(), b.tolist())
+        assert type(x) is list and np.allclose(x, np.linalg.solve(A, b), rtol=1e-10, atol=1e-12)
+    with pytest.raises(np.linalg.LinAlgError):
+        _gesv([[1.0, 2.0], [2.0, 4.0]], [1.0, 1.0])
+    with pytest.raises(np.linalg.LinAlgError):
+        _gesv([[1.0, 0.0], [0.0, np.nan]], [1.0, 1.0])
+
+
 def test_blocked_vectorised_contact_equals_small_arrays():
     # arrays above two blocks run the in-place block kernel (_exact_block), small ones the
     # plain array path: the same operations, so the same bits (zero loads and a circle too)
@@ -178,3 +193,118 @@ def test_blocked_vectorised_contact_equals_small_arrays():
         small = hertz.elliptical_contact(Q[sl], Rx[sl], Ry[sl], 2.1e11)
         for f in FIELDS:
             assert np.array_equal(getattr(big, f)[sl], getattr(small, f)), f
+
+
+# --------------------------------------------------------------------------- one-case solve
+def _bearing209():
+    return ballrace.BallBearing(12.7e-3, 9, 65e-3, 0.52, 0.52, diametral_clearance=20e-6,
+                                material=STEEL)
+
+
+def _load(lo, hi):
+    # 0 or a magnitude in [lo, hi] of either sign (far lighter loads in a bearing with
+    # clearance are the documented slow/ConvergenceError range, see test_loaddist.py)
+    return st.one_of(st.just(0.0), st.floats(lo, hi), st.floats(-hi, -lo))
+
+
+@settings(max_examples=40, deadline=None)
+@given(f=st.tuples(*[_load(1.0, 3e3) for _ in range(3)], *[_load(0.01, 30.0) for _ in range(2)]),
+       arm=st.sampled_from(["groove", "contact"]), ricci=st.booleans())
+def test_one_case_result_equals_general_result(f, arm, ricci):
+    # the one-case driver returns its kernel's floats (_result_one); the general _result
+    # recomputes the state from the displacements with the array kernel: the same loads
+    # to 1e-12 of the load scale, ball loads to 1e-12 of Q_max, angles to 1e-12 rad
+    from ballrace.analytic import loaddist
+    brg = _ricci218() if ricci else _bearing209()
+    try:
+        r = loaddist.solve(brg, *f, moment_arm=arm)
+    except ValueError:
+        return                                # beyond the model's range: nothing to compare
+    model = loaddist._Model.of(brg)
+    Pd, x0, z0 = loaddist._reference(model, None, False)
+    u = r.displacements[None]
+    g = loaddist._result(brg, model, r.azimuths, x0, z0, Pd, u, r.applied[None],
+                         r.imposed[None], arm, np.array([r.iterations]), (), "exact")
+    scale = max(np.abs(r.applied).max(), r.max_ball_load, 1e-300)
+    assert np.allclose(r.loads, g.loads, rtol=0, atol=1e-12 * scale * 0.1)
+    assert np.allclose(r.ball_loads, g.ball_loads, rtol=0,
+                       atol=1e-12 * max(r.max_ball_load, 1e-300))
+    assert np.allclose(r.contact_angles, g.contact_angles, rtol=0, atol=1e-12)
+    assert np.allclose(r.stiffness, g.stiffness, rtol=1e-11,
+                       atol=1e-8 * max(np.abs(g.stiffness).max(), 1.0))
+    assert r.relative_residual < 1e-9 and r.iterations == g.iterations
+
+
+@settings(max_examples=200, deadline=None)
+@given(D=st.floats(1e-3, 0.03), ratio=st.floats(1.2, 8.0), zf=st.floats(0.0, 1.0),
+       fi=st.floats(0.505, 0.56), bf=st.floats(0.0, 1.5), load=st.floats(-14.0, 0.0),
+       ecc=st.floats(0.0, 0.999))
+def test_eccentric_start_float_equals_array(D, ratio, zf, fi, bf, load, ecc):
+    # the plain-number path of eccentric_thrust starts from _eccentric_start_one: the same
+    # operations on floats as the array start (here on a 0-d array), so the same bits
+    from ballrace.analytic import loaddist
+    dm = D * ratio
+    Z = 3 + int(zf * (int(np.floor(np.pi / np.arcsin(1.0 / ratio))) - 3))
+    brg = ballrace.BallBearing(D, Z, dm, fi, fi, free_contact_angle=bf)
+    m = loaddist._Model.of(brg)
+    Fa, e = m.capacity * 10.0**load, ecc * 0.5 * dm
+    one = loaddist._eccentric_start_one(m, Fa, e)
+    arr = loaddist._eccentric_start(m, np.array(Fa), np.array(e))
+    assert np.array_equal(one, arr)
+
+
+def test_eccentric_thrust_float_path_equals_array_path():
+    # plain numbers take the float path (no array checks), 0-d arrays the array path
+    from ballrace.analytic import loaddist
+    brg = _ricci218()
+    for Fa, e in ((17800.0, 50.8e-3), (100.0, 0.0), (5000.0, 0.03), (17800.0, 0.06)):
+        a = loaddist.eccentric_thrust(brg, Fa, e)
+        b = loaddist.eccentric_thrust(brg, np.array(Fa), np.array(e))
+        assert np.array_equal(a.ball_loads, b.ball_loads)
+        assert np.array_equal(a.stiffness, b.stiffness)
+    # the float path keeps every check of the array path
+    for Fa, e, exc, msg in ((-1.0, 0.01, ValueError, "Fa must be >= 0"),
+                            (1.0, -0.01, ValueError, "e must be >= 0"),
+                            (float("nan"), 0.01, ValueError, "Fa must be finite"),
+                            (1.0, float("inf"), ValueError, "e must be finite"),
+                            (1e31, 0.01, ValueError, "Fa must have a physical magnitude"),
+                            (1.0, 0.5 * brg.pitch_diameter, ValueError, "beyond what the thrust"),
+                            (1e9, 0.01, ValueError, "beyond the load-deflection range"),
+                            (True, 0.01, TypeError, "Fa")):
+        with pytest.raises(exc, match=msg):
+            loaddist.eccentric_thrust(brg, Fa, e)
+
+
+def test_one_case_driver_seated_start_and_checks():
+    # from the touching reference the first step is the line minimiser of the linearised
+    # potential; the answer is the vectorised driver's (same equilibrium to 1e-12), and the
+    # checks on what is returned still run (a NaN-free, balanced, in-range result)
+    from ballrace.analytic import loaddist
+    brg = _bearing209()
+    r1 = brg.solve(Fa=1000.0, Fy=3000.0)
+    r2 = brg.solve(Fa=[1000.0, 1000.0], Fy=3000.0)
+    assert np.allclose(r1.ball_loads, r2.ball_loads[0], rtol=0, atol=1e-10 * r1.max_ball_load)
+    assert r1.relative_residual < 1e-12 and r2.relative_residual[0] < 1e-12
+    with pytest.raises(ValueError, match="beyond the load-deflection range"):
+        brg.solve(Fa=1e9)
+    with pytest.raises(loaddist.ConvergenceError, match="did not converge after 2 iterations"):
+        brg.solve(Fa=1000.0, Fy=3000.0, max_iter=2)
+
+
+@pytest.mark.parametrize("arm", ["groove", "contact"])
+def test_one_case_kernel_stiffness_is_exact_hertz(arm):
+    # the kernel's K_n is the table's (the batch kernel's _kn) and so exact Hertz to 1e-13
+    from ballrace.analytic import loaddist
+    brg = _ricci218()
+    r = loaddist.solve(brg, Fa=17800.0, Fy=8900.0, Mz=-200.0, moment_arm=arm)
+    model = loaddist._Model.of(brg)
+    _, x0, z0 = loaddist._reference(model, None, False)
+    geo = loaddist._geo(model, brg, 0.0, x0, z0)
+    o = loaddist._one_case(model, geo, r.displacements.tolist(), arm)
+    beta = np.arctan2(o.z, o.x)
+    Kb, db = loaddist._kn(model, beta)
+    Kx, dx = loaddist._kn_exact(model, beta)
+    assert np.allclose(o.Kn, Kb, rtol=1e-15, atol=0) and np.allclose(o.dlnK, db, rtol=1e-13,
+                                                                       atol=1e-15)
+    assert np.allclose(o.Kn, Kx, rtol=1e-13, atol=0)
+    assert np.allclose(o.dlnK, dx, rtol=0, atol=loaddist._TABLE_DTOL * np.abs(dx).max())
