@@ -809,49 +809,14 @@ def _newton(model, geo, F, u0, fixed, arm, rtol, max_iter, strict=True):
     return u, iters, conv
 
 
-def _solve_small(A, b):
-    """Solve A x = b (lists; A square, small) by Gaussian elimination with partial pivoting.
-
-    LAPACK's gesv algorithm on Python floats: for a 5 x 5 system some ten times faster than
-    ``numpy.linalg.solve``'s call overhead.  ``numpy.linalg.LinAlgError`` if singular.
-    """
-    n = len(b)
-    M = [row[:] + [b[i]] for i, row in enumerate(A)]
-    for k in range(n):
-        p, big = k, abs(M[k][k])
-        for i in range(k + 1, n):
-            if abs(M[i][k]) > big:
-                p, big = i, abs(M[i][k])
-        if M[p][k] == 0.0 or M[p][k] != M[p][k]:
-            raise np.linalg.LinAlgError("Singular matrix")
-        if p != k:
-            M[k], M[p] = M[p], M[k]
-        rk = M[k]
-        piv = rk[k]
-        for i in range(k + 1, n):
-            ri = M[i]
-            f = ri[k] / piv
-            if f != 0.0:
-                for j in range(k + 1, n + 1):
-                    ri[j] -= f * rk[j]
-    x = [0.0] * n
-    for i in range(n - 1, -1, -1):
-        ri = M[i]
-        acc = ri[n]
-        for j in range(i + 1, n):
-            acc -= ri[j] * x[j]
-        x[i] = acc / ri[i]
-    return x
-
-
 _GESV = []
 
 
 def _gesv(A, b):
     """Solve A x = b (5 x 5 nested lists) by LAPACK's gesv (LU with partial pivoting).
 
-    ``numpy.linalg.LinAlgError`` if A is singular or the solution is not finite (as
-    :func:`_solve_small`).  scipy.linalg is imported on first use.
+    ``numpy.linalg.LinAlgError`` if A is singular or the solution is not finite.
+    scipy.linalg is imported on first use.
     """
     if not _GESV:
         from scipy.linalg import lapack

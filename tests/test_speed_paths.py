@@ -150,18 +150,6 @@ def test_ring_forces_one_case_equals_batch(u, arm):
     assert np.allclose(K1, Kb[0], rtol=1e-11, atol=1e-8 * max(np.abs(K1).max(), 1.0))
 
 
-def test_small_solver_matches_numpy():
-    from ballrace.analytic.loaddist import _solve_small
-    rng = np.random.default_rng(4)
-    for _ in range(50):
-        A = rng.normal(size=(5, 5)) + 5 * np.eye(5) * rng.uniform(0, 1)
-        b = rng.normal(size=5)
-        x = _solve_small(A.tolist(), b.tolist())
-        assert np.allclose(x, np.linalg.solve(A, b), rtol=1e-10, atol=1e-12)
-    with pytest.raises(np.linalg.LinAlgError):
-        _solve_small([[1.0, 2.0], [2.0, 4.0]], [1.0, 1.0])
-
-
 def test_lapack_small_solver_matches_numpy():
     # the one-case Newton solves its 5 x 5 systems by LAPACK gesv on nested lists
     from ballrace.analytic.loaddist import _gesv
