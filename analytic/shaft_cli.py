@@ -549,6 +549,13 @@ def analyze(case: ShaftCase) -> dict:
                 if lf.catalog_lives[k] is not None:
                     d["L10_iso281_h"] = lf.catalog_lives[k] * 1e6 / (60 * case.speed_rpm)
         seats.append(d)
+    for d, st in zip(seats, case.seats):
+        if lf is not None and d.get("L10_iso281") is None:
+            why = ("its rows share the thrust in a way the catalogue formula does not know"
+                   if isinstance(st.bearing, DuplexPair) else
+                   "the X/Y tables do not cover its load")
+            notes.append(f"{d['name']}: no ISO 281 catalogue life ({why}); its life is "
+                         "L10r (ISO/TS 16281)")
     L = case.shaft.length
     xs = np.linspace(0.0, L, 201)
     disp = r.displacement(xs)

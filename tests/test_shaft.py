@@ -504,6 +504,9 @@ def test_spindle_example_runs_and_keeps_the_preload():
     r = json.loads(res.output)
     assert r["seats"][0]["reaction"][0] == pytest.approx(-800.0, rel=1e-9)
     assert abs(r["seats"][1]["reaction"][0]) < 1e-8 * 800
+    assert r["seats"][0]["L10_iso281"] is None and r["seats"][1]["L10_iso281"] > 0
+    assert any(n.startswith("front pair: no ISO 281 catalogue life") for n in r["notes"])
+    assert not any(n.startswith("rear:") for n in r["notes"])
     res = runner.invoke(app, ["shaft", str(EXAMPLES / "shaft_spindle.toml")])
     assert res.exit_code == 0, res.output
     assert "front pair" in res.output
