@@ -72,6 +72,7 @@ every error names the file and the ``[table].key`` it is about.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 import tomllib
 from dataclasses import dataclass
@@ -109,14 +110,14 @@ def rating_angle(kind: str, nominal, raw, where: str):
     return nominal
 
 
-def _models():
-    """Pydantic models, built on first use (pydantic is imported lazily)."""
+@functools.cache
+def bearing_keys():
+    """Pydantic model of the bearing keys every case file shares (the ``[bearing]`` table
+    here, each ``[bearings.NAME]`` table of a shaft case file); built on first use."""
     from pydantic import BaseModel, ConfigDict, Field
 
-    class _Strict(BaseModel):
+    class BearingKeys(BaseModel):
         model_config = ConfigDict(extra="forbid", frozen=True)
-
-    class BearingSpec(_Strict):
         type: Literal["deep-groove", "angular-contact"] = "deep-groove"
         name: str = ""
         ball_diameter: str
@@ -127,6 +128,50 @@ def _models():
         diametral_clearance: Optional[str] = None
         free_contact_angle: Optional[str] = None
         nominal_contact_angle: Optional[str] = None
+
+    return BearingKeys
+
+
+def bearing_from_keys(b, q, source: str, where: str, **extra):
+    """The :class:`ballrace.BallBearing` of a case file's bearing keys (:func:`bearing_keys`).
+
+    ``q`` is the file's :func:`quantity_reader`, ``where`` the table (``"[bearing]"``),
+    ``extra`` further BallBearing arguments (materials, name, rows).  The rating angle
+    follows :func:`rating_angle`.  ``CaseFileError`` naming the file and the key.
+    """
+    import ballrace
+
+    kw = dict(ball_diameter=q(b.ball_diameter, "[length]", f"{where}.ball_diameter"),
+              n_balls=b.n_balls,
+              pitch_diameter=q(b.pitch_diameter, "[length]", f"{where}.pitch_diameter"),
+              f_inner=b.f_inner, f_outer=b.f_outer,
+              diametral_clearance=q(b.diametral_clearance, "[length]",
+                                    f"{where}.diametral_clearance"),
+              free_contact_angle=q(b.free_contact_angle, "[angle]",
+                                   f"{where}.free_contact_angle"))
+    nominal = q(b.nominal_contact_angle, "[angle]", f"{where}.nominal_contact_angle")
+    try:
+        nominal = rating_angle(b.type, nominal, b.nominal_contact_angle, where)
+    except ValueError as exc:
+        raise CaseFileError(f"{source}: {exc}") from None
+    try:
+        brg = ballrace.BallBearing(**kw, **extra,
+                                   nominal_contact_angle=0.0 if nominal is None else nominal)
+        if nominal is None:   # angular-contact: its design angle is the free contact angle
+            brg = dataclasses.replace(brg, nominal_contact_angle=brg.free_contact_angle)
+    except (ValueError, TypeError) as exc:
+        raise CaseFileError(f"{source}: {where}: {exc}") from None
+    return brg
+
+
+def _models():
+    """Pydantic models, built on first use (pydantic is imported lazily)."""
+    from pydantic import BaseModel, ConfigDict, Field
+
+    class _Strict(BaseModel):
+        model_config = ConfigDict(extra="forbid", frozen=True)
+
+    class BearingSpec(bearing_keys()):
         n_rows: int = Field(default=1, ge=1, le=2)
 
     class MaterialSpec(_Strict):
@@ -552,28 +597,9 @@ def parse_case(data: dict, source: str = "<case>") -> BearingCase:
     if (b.diametral_clearance is None) == (b.free_contact_angle is None):
         raise CaseFileError(f"{source}: [bearing]: give exactly one of diametral_clearance "
                             "and free_contact_angle")
-    try:
-        nominal = rating_angle(b.type, q(b.nominal_contact_angle, "[angle]",
-                                         "[bearing].nominal_contact_angle"),
-                               b.nominal_contact_angle, "[bearing]")
-    except ValueError as exc:
-        raise CaseFileError(f"{source}: {exc}") from None
-    try:
-        brg = ballrace.BallBearing(
-            ball_diameter=q(b.ball_diameter, "[length]", "[bearing].ball_diameter"),
-            n_balls=b.n_balls,
-            pitch_diameter=q(b.pitch_diameter, "[length]", "[bearing].pitch_diameter"),
-            f_inner=b.f_inner, f_outer=b.f_outer,
-            diametral_clearance=q(b.diametral_clearance, "[length]",
-                                  "[bearing].diametral_clearance"),
-            free_contact_angle=q(b.free_contact_angle, "[angle]", "[bearing].free_contact_angle"),
-            nominal_contact_angle=0.0 if nominal is None else nominal,
-            ball_material=mats.get("ball"), ring_material=mats.get("ring"),
-            n_rows=b.n_rows, name=b.name or spec.title)
-        if nominal is None:   # angular-contact: its design angle is the free contact angle
-            brg = dataclasses.replace(brg, nominal_contact_angle=brg.free_contact_angle)
-    except (ValueError, TypeError) as exc:
-        raise CaseFileError(f"{source}: [bearing]: {exc}") from None
+    brg = bearing_from_keys(b, q, source, "[bearing]", ball_material=mats.get("ball"),
+                            ring_material=mats.get("ring"), n_rows=b.n_rows,
+                            name=b.name or spec.title)
 
     Fr = q(spec.loads.radial, "[force]", "[loads].radial")
     Fa = q(spec.loads.axial, "[force]", "[loads].axial")

@@ -79,7 +79,6 @@ shaft and seats on top of each other are one-line errors naming the key)::
 """
 from __future__ import annotations
 
-import dataclasses
 import json
 import logging
 import math
@@ -101,6 +100,8 @@ log = logging.getLogger(__name__)
 def _models():
     from pydantic import BaseModel, ConfigDict, Field
 
+    from ballrace.analytic.casefile import bearing_keys
+
     class _Strict(BaseModel):
         model_config = ConfigDict(extra="forbid", frozen=True)
 
@@ -117,17 +118,7 @@ def _models():
         thermal_expansion: Optional[str] = None
         weight: bool = False
 
-    class BearingSpec(_Strict):
-        type: Literal["deep-groove", "angular-contact"] = "deep-groove"
-        name: str = ""
-        ball_diameter: str
-        n_balls: int = Field(ge=3)
-        pitch_diameter: str
-        f_inner: float = Field(gt=0.5)
-        f_outer: float = Field(gt=0.5)
-        diametral_clearance: Optional[str] = None
-        free_contact_angle: Optional[str] = None
-        nominal_contact_angle: Optional[str] = None
+    class BearingSpec(bearing_keys()):
         material: Optional[MaterialSpec] = None
         pair: Optional[Literal["DB", "DF", "DT"]] = None
         preload: Optional[str] = None
@@ -265,8 +256,8 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
     """
     import ballrace
     from ballrace.analytic import shaft as S
-    from ballrace.analytic.casefile import (CaseFileError, _speed, quantity_reader,
-                                            rating_angle, validate_spec)
+    from ballrace.analytic.casefile import (CaseFileError, _speed, bearing_from_keys,
+                                            quantity_reader, validate_spec)
     from ballrace.analytic.duplex import DuplexPair
 
     hint = _kind_hint(data, source)
@@ -307,29 +298,10 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
     bearings, ratings = {}, {}
     for name, b in spec.bearings.items():
         where = f"[bearings.{name}]"
-        kw = dict(ball_diameter=q(b.ball_diameter, "[length]", f"{where}.ball_diameter"),
-                  n_balls=b.n_balls,
-                  pitch_diameter=q(b.pitch_diameter, "[length]", f"{where}.pitch_diameter"),
-                  f_inner=b.f_inner, f_outer=b.f_outer, name=b.name or name,
-                  diametral_clearance=q(b.diametral_clearance, "[length]",
-                                        f"{where}.diametral_clearance"),
-                  free_contact_angle=q(b.free_contact_angle, "[angle]",
-                                       f"{where}.free_contact_angle"))
+        kw = dict(name=b.name or name)
         if b.material is not None:
             kw["material"] = material(b.material, f"{where}.material")
-        try:
-            nominal = rating_angle(b.type, q(b.nominal_contact_angle, "[angle]",
-                                             f"{where}.nominal_contact_angle"),
-                                   b.nominal_contact_angle, where)
-        except ValueError as exc:
-            raise CaseFileError(f"{source}: {exc}") from None
-        kw["nominal_contact_angle"] = 0.0 if nominal is None else nominal
-        try:
-            brg = ballrace.BallBearing(**kw)
-            if nominal is None:              # angular-contact: rated at its design (free) angle
-                brg = dataclasses.replace(brg, nominal_contact_angle=brg.free_contact_angle)
-        except (ValueError, TypeError) as exc:
-            raise err(where, exc) from None
+        brg = bearing_from_keys(b, q, source, where, **kw)
         if b.pair is not None:
             P = q(b.preload, "[force]", f"{where}.preload") or 0.0
             try:

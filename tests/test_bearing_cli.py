@@ -175,3 +175,21 @@ def test_nominal_angle_key_errors(tmp_path, kind, value, message):
         f'type = "{kind}"\ndiametral_clearance = "20 um"\nnominal_contact_angle = {value}'))
     with pytest.raises(casefile.CaseFileError, match=message):
         casefile.load_case(p)
+
+
+@pytest.mark.parametrize("old, new, key", [
+    ('ball_diameter = "12.7 mm"', 'ball_diameter = "12.7 kg"', "[bearing].ball_diameter"),
+    ('f_inner = 0.52', 'f_inner = 0.52\nn_rows = 2\nname = ""', None),
+])
+def test_bearing_key_errors_name_the_file_once(tmp_path, old, new, key):
+    """A unit error in a bearing key names the file and the key once (it was prefixed
+    twice: "c.toml: [bearing]: c.toml: [bearing].ball_diameter")."""
+    assert old in GOOD
+    p = _write(tmp_path, GOOD.replace(old, new))
+    if key is None:                       # the shared keys plus n_rows are accepted
+        assert casefile.load_case(p).bearing.n_rows == 2
+        return
+    with pytest.raises(casefile.CaseFileError) as e:
+        casefile.load_case(p)
+    msg = str(e.value)
+    assert msg.count(p.name) == 1 and msg.count(key) == 1, msg
