@@ -580,9 +580,6 @@ def _shape(xi, L, phi):
 
 
 # =========================================================================== bearing forces
-_GEO_CACHE: dict = {}
-
-
 def _ring_forces(bearing: BallBearing, clearance, u, balls: bool = False):
     """Ball-force resultant on the inner ring and its tangent stiffness at imposed ring
     displacements, in the bearing's own (loaddist) frame.
@@ -616,16 +613,10 @@ def _ring_forces(bearing: BallBearing, clearance, u, balls: bool = False):
     Q : ndarray, shape (N, Z)
         Ball loads [N] (only with ``balls=True``).
     """
-    key = (bearing, clearance)
-    mg = _GEO_CACHE.get(key)
-    if mg is None:
-        model = loaddist._Model.of(bearing)
-        _, x0, z0 = loaddist._reference(model, clearance, False)
-        mg = (model, loaddist._Geo(model, bearing.azimuths(0.0), x0, z0))
-        if len(_GEO_CACHE) > 256:
-            _GEO_CACHE.clear()
-        _GEO_CACHE[key] = mg
-    st = loaddist._State(mg[0], mg[1], np.asarray(u, float).reshape(-1, 5), "groove")
+    model = loaddist._Model.of(bearing)                  # both cached by loaddist
+    _, x0, z0 = loaddist._reference(model, clearance, False)
+    geo = loaddist._geo(model, bearing, 0.0, x0, z0)
+    st = loaddist._State(model, geo, np.asarray(u, float).reshape(-1, 5), "groove")
     d = st.delta
     energy = 0.4 * (st.Kn * d * d * np.sqrt(d)).sum(1)
     if balls:
