@@ -53,6 +53,7 @@ from __future__ import annotations
 import functools
 import logging
 import math
+import os
 import weakref
 from dataclasses import dataclass, field, replace
 
@@ -361,7 +362,7 @@ class _Geo:
     """Per-solve constants: ball azimuths and the kinematic vectors dx_j/du, dz_j/du."""
 
     __slots__ = ("psi", "cp", "sp", "gx", "gz", "G", "G2", "kk", "xz0", "xz2", "M", "ar", "x0",
-                 "z0", "A", "g0", "Kseat")
+                 "z0", "A", "g0", "Kseat", "cpack")
 
     def __init__(self, model, psi, x0, z0):
         Z = psi.size
@@ -385,6 +386,7 @@ class _Geo:
         self.ar = None if model.table is None else np.arange(float(model.table.shape[0]))[None]
         self.x0, self.z0, self.A = x0, z0, model.A
         self.Kseat = None                                    # see _one_case_seated
+        self.cpack = None                                    # see _compiled_pack
         # x0^2 + z0^2 - A^2 without cancellation: 0 for the touching reference,
         # (x0 - A)(x0 + A) = -(P_d/2)(x0 + A) for the centred one
         self.g0 = 0.0 if z0 > 0 else (x0 - model.A) * (x0 + model.A)
@@ -476,6 +478,13 @@ class _OneCase:
     __slots__ = ("x", "z", "s", "c", "sn", "delta", "Kn", "dlnK", "Q", "F", "J", "qmax", "dmax")
 
 
+def _kseat(model, geo):
+    """K_n at the reference angle atan2(z_0, x_0) (exact Hertz), cached on the _Geo."""
+    if geo.Kseat is None:
+        geo.Kseat = float(_kn_exact(model, np.array([math.atan2(geo.z0, geo.x0)]))[0][0])
+    return geo.Kseat
+
+
 def _one_case_seated(model, geo):
     """:func:`_one_case` at u = 0 in the touching reference configuration (geo.g0 == 0):
     every ball at zero approach at the reference angle atan2(z_0, x_0), so Q = 0, F = 0,
@@ -487,9 +496,7 @@ def _one_case_seated(model, geo):
     o.s = np.full(Z, s)
     o.c, o.sn = o.x / s, o.z / s
     o.delta, o.Q, o.dlnK = np.zeros(Z), np.zeros(Z), np.zeros(Z)
-    if geo.Kseat is None:
-        geo.Kseat = float(_kn_exact(model, np.array([math.atan2(geo.z0, geo.x0)]))[0][0])
-    o.Kn = np.full(Z, geo.Kseat)
+    o.Kn = np.full(Z, _kseat(model, geo))
     o.F = [0.0] * 5
     o.J = [[0.0] * 5 for _ in range(5)]
     return o
@@ -811,6 +818,25 @@ def _newton(model, geo, F, u0, fixed, arm, rtol, max_iter, strict=True):
 
 _GESV = []
 
+try:                                    # the optional compiled Newton (analytic/_ldkernel.c)
+    from . import _ldkernel as _COMPILED
+except ImportError:                     # not built (no C compiler at install): NumPy only
+    _COMPILED = None
+if os.environ.get("BALLRACE_NO_COMPILED"):
+    _COMPILED = None
+
+
+def _compiled_pack(model, geo):
+    """The float64 buffer the compiled Newton reads (see analytic/_ldkernel.c), built once
+    per _Geo: Z, the table length, R_i, A, x_0, z_0, g_0, K_n at the reference angle, the
+    ball azimuths' cosines and sines and the K_n table (derivative column times -2)."""
+    if geo.cpack is None:
+        tab = model.table * np.array([1.0, -2.0])
+        head = [float(model.Z), float(tab.shape[0]), model.Ri, model.A, geo.x0, geo.z0,
+                geo.g0, _kseat(model, geo)]
+        geo.cpack = np.ascontiguousarray(np.concatenate([head, geo.cp, geo.sp, tab.ravel()]))
+    return geo.cpack
+
 
 def _gesv(A, b):
     """Solve A x = b (5 x 5 nested lists) by LAPACK's gesv (LU with partial pivoting).
@@ -898,6 +924,17 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
     cap = max(_FLOOR_CAP, 100.0 * rtol)
     u = u0[0].tolist()
     seat = geo.g0 == 0 and not any(u) and Fs_ext > 0
+    it0 = 0
+    if _COMPILED is not None and arm == "groove" and model.table is not None:
+        # the compiled iteration proposes the equilibrium; the NumPy kernel below checks it
+        # (and iterates on if its residual is above rtol); any other status: NumPy alone
+        status, it0, uc = _COMPILED.newton_one(_compiled_pack(model, geo), F,
+                                               [1.0 if v else 0.0 for v in fx], u, rtol,
+                                               max_iter, seat)
+        if status == 0:
+            u, seat, max_iter = list(uc), False, max_iter - it0
+        else:
+            it0 = 0
     if seat:                    # touching reference, u = 0: no ball loaded, no stiffness
         st = _one_case_seated(model, geo)
     else:
@@ -984,9 +1021,10 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
         if floor and not err <= rtol:
             log.debug("load distribution: stopped at the round-off floor (%.2e)", err)
             break
-    if it:
-        log.debug("load distribution: converged in %d Newton iterations", it)
-    return np.array(u)[None], np.array([it]), st
+    if it or it0:
+        log.debug("load distribution: converged in %d Newton iterations (%d compiled)",
+                  it + it0, it0)
+    return np.array(u)[None], np.array([it + it0]), st
 
 
 # =========================================================================== results
