@@ -296,3 +296,153 @@ def test_one_case_kernel_stiffness_is_exact_hertz(arm):
                                                                        atol=1e-15)
     assert np.allclose(o.Kn, Kx, rtol=1e-13, atol=0)
     assert np.allclose(o.dlnK, dx, rtol=0, atol=loaddist._TABLE_DTOL * np.abs(dx).max())
+
+
+# --------------------------------------------------------------------------- compiled Newton
+# The optional compiled iteration (analytic/_ldkernel.c) only proposes the equilibrium of
+# one load case: loaddist evaluates its NumPy kernel there and iterates on if the residual
+# is above rtol.  Tests that need the compiled module skip without it; the NumPy iteration
+# is tested with it switched off (the ``numpy_only`` fixture), so both paths are covered
+# whichever is installed.
+def _compiled():
+    from ballrace.analytic import loaddist
+    return loaddist._COMPILED
+
+
+needs_compiled = pytest.mark.skipif(
+    _compiled() is None, reason="the optional compiled kernel is not built (no C compiler "
+                                "at install time)")
+
+
+@pytest.fixture
+def numpy_only(monkeypatch):
+    from ballrace.analytic import loaddist
+    monkeypatch.setattr(loaddist, "_COMPILED", None)
+
+
+def _solve_both(brg, monkeypatch, **kw):
+    """(compiled result or exception, NumPy-only result or exception)."""
+    from ballrace.analytic import loaddist
+    out = []
+    for c in (loaddist._COMPILED, None):
+        monkeypatch.setattr(loaddist, "_COMPILED", c)
+        try:
+            out.append(loaddist.solve(brg, **kw))
+        except (ValueError, loaddist.ConvergenceError) as exc:
+            out.append(exc)
+    return out
+
+
+@st.composite
+def _bearing_and_loads(draw):
+    D = draw(st.floats(2e-3, 40e-3))
+    dm = D * draw(st.floats(1.5, 12.0))
+    Z = draw(st.integers(3, min(int(np.floor(np.pi / np.arcsin(D / dm))), 40)))
+    fi, fo = draw(st.floats(0.505, 0.6)), draw(st.floats(0.505, 0.6))
+    if draw(st.booleans()):
+        brg = ballrace.BallBearing(D, Z, dm, fi, fo, free_contact_angle=np.radians(
+            draw(st.floats(0.0, 60.0))), material=STEEL)
+    else:
+        brg = ballrace.BallBearing(D, Z, dm, fi, fo, material=STEEL, diametral_clearance=draw(
+            st.floats(0.0, 1.0)) * 1e-3 * D)
+    Fref = Z * float(brg.contact_stiffness(brg.free_contact_angle)[2]) * (0.01 * D) ** 1.5
+    f = [draw(st.sampled_from([0.0, 1.0])) * draw(st.sampled_from([-1.0, 1.0]))
+         * 10 ** draw(st.floats(-3.0, np.log10(3.0))) * Fref for _ in range(5)]
+    f[0] = abs(f[0]) if draw(st.booleans()) else f[0]
+    return brg, dict(zip(("Fa", "Fy", "Fz", "My", "Mz"), (f[0], f[1], f[2], f[3] * dm / 2,
+                                                        f[4] * dm / 2)))
+
+
+@needs_compiled
+@settings(max_examples=80, deadline=None)
+@given(case=_bearing_and_loads(), arm=st.sampled_from(["groove", "contact"]))
+def test_compiled_newton_equals_numpy_newton(case, arm):
+    # the same equilibrium through both one-case iterations: the same refusals, ball loads
+    # to 1e-9 of Q_max (as the one-case and vectorized drivers), both balanced to rtol
+    import _pytest.monkeypatch
+    brg, loads = case
+    with _pytest.monkeypatch.MonkeyPatch.context() as mp:
+        rc, rn = _solve_both(brg, mp, moment_arm=arm, **loads)
+    if isinstance(rn, Exception) or isinstance(rc, Exception):
+        assert type(rc) is type(rn), (rc, rn)
+        return
+    assert np.allclose(rc.ball_loads, rn.ball_loads, rtol=0,
+                       atol=1e-9 * max(rn.max_ball_load, 1e-300))
+    assert np.allclose(rc.contact_angles[rn.ball_loads > 0], rn.contact_angles[rn.ball_loads > 0],
+                       rtol=0, atol=1e-9)
+    assert rc.relative_residual <= 1e-12 or rc.relative_residual <= rn.relative_residual * 10
+    assert abs(rc.iterations - rn.iterations) <= 3
+
+
+@needs_compiled
+def test_compiled_newton_runs_the_numpy_kernel_once(monkeypatch):
+    # the 9-ball radial + axial case of `make bench`: the compiled iteration converges
+    # (status 0) and the NumPy kernel runs once, to check it; without the compiled module
+    # the NumPy iteration takes 7 steps (8 kernel evaluations, one a rejected trial step)
+    from ballrace.analytic import loaddist
+    calls, status = [], []
+    kernel, compiled = loaddist._one_case, loaddist._COMPILED
+
+    class Spy:
+        def newton_one(self, *a):
+            r = compiled.newton_one(*a)
+            status.append(r[0])
+            return r
+
+    monkeypatch.setattr(loaddist, "_one_case", lambda *a: calls.append(1) or kernel(*a))
+    monkeypatch.setattr(loaddist, "_COMPILED", Spy())
+    rc = _bearing209().solve(Fa=1000.0, Fy=3000.0)
+    assert status == [0] and len(calls) == 1 and rc.relative_residual < 1e-12
+    calls.clear()
+    monkeypatch.setattr(loaddist, "_COMPILED", None)
+    rn = _bearing209().solve(Fa=1000.0, Fy=3000.0)
+    assert len(calls) == 8 and rn.iterations == 7 and rc.iterations == rn.iterations
+    assert np.allclose(rc.ball_loads, rn.ball_loads, rtol=0, atol=1e-10 * rn.max_ball_load)
+
+
+@needs_compiled
+def test_compiled_newton_statuses():
+    # 1: not converged within max_iter; 2: a case it leaves to loaddist (here a start with
+    # a ball pressed beyond 90 deg, cos(beta) < 0); a malformed buffer is an error
+    from ballrace.analytic import loaddist
+    brg = _bearing209()
+    model = loaddist._Model.of(brg)
+    _, x0, z0 = loaddist._reference(model, None, False)
+    geo = loaddist._geo(model, brg, 0.0, x0, z0)
+    pack = loaddist._compiled_pack(model, geo)
+    F, free = [1000.0, 3000.0, 0.0, 0.0, 0.0], [0.0] * 5
+    status, it, u = loaddist._COMPILED.newton_one(pack, F, free, [0.0] * 5, 1e-12, 200, True)
+    assert status == 0 and 5 <= it <= 10
+    r = brg.solve(Fa=1000.0, Fy=3000.0)
+    assert np.allclose(u, r.displacements, rtol=1e-9, atol=0)
+    assert loaddist._COMPILED.newton_one(pack, F, free, [0.0] * 5, 1e-12, 2, True)[:2] == (1, 2)
+    far = [0.0, -2.0 * model.A, 0.0, 0.0, 0.0]
+    assert loaddist._COMPILED.newton_one(pack, F, free, far, 1e-12, 200, False)[0] == 2
+    r2 = brg.solve(Fa=1000.0, Fy=3000.0, initial=[0.0, -0.9 * model.D, 0.0, 0.0, 0.0])
+    assert np.allclose(r2.ball_loads, r.ball_loads, rtol=0, atol=1e-9 * r.max_ball_load)
+    with pytest.raises(ValueError, match="inconsistent buffer size"):
+        loaddist._COMPILED.newton_one(pack[:-1], F, free, [0.0] * 5, 1e-12, 200, True)
+
+
+def test_numpy_newton_without_the_compiled_module(numpy_only):
+    # the NumPy iteration alone: the same checks and answers (what users without a C
+    # compiler at install time get)
+    from ballrace.analytic import loaddist
+    assert loaddist._COMPILED is None
+    brg = _bearing209()
+    r = brg.solve(Fa=1000.0, Fy=3000.0)
+    assert r.relative_residual < 1e-12 and r.iterations == 7
+    with pytest.raises(loaddist.ConvergenceError, match="did not converge after 2 iterations"):
+        brg.solve(Fa=1000.0, Fy=3000.0, max_iter=2)
+
+
+def test_environment_switches_the_compiled_module_off():
+    import os
+    import subprocess
+    import sys
+    code = ("from ballrace.analytic import loaddist; import ballrace; "
+            "print(loaddist._COMPILED is None, ballrace.BallBearing(12.7e-3, 9, 65e-3, 0.52, "
+            "0.52, diametral_clearance=20e-6).solve(Fa=1000.0, Fy=3000.0).iterations)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         env=dict(os.environ, BALLRACE_NO_COMPILED="1"), check=True)
+    assert out.stdout.split() == ["True", "7"]
