@@ -1,13 +1,14 @@
 /*
  * Compiled one-case Newton iteration of ballrace.analytic.loaddist (optional).
  *
- * The same iteration as loaddist._newton_one for the groove moment arm: per ball the
+ * The same iteration as loaddist._newton_one (either moment arm): per ball the
  * groove-centre offsets (x, z), the approach s - A without cancellation, K_n(beta) from
  * the Chebyshev table of ln K_n in tau = 2 cos(beta) - 1, the load Q = K_n delta^1.5,
  * the resultant and the analytic Jacobian (scaled: moments and tilts by R_i); the scaled
  * Newton step with the Levenberg floor, the trust radius, the line minimiser of the
  * linearised potential from the touching reference, the Armijo search on the
- * frozen-stiffness potential, the round-off floor.  See loaddist._one_case and
+ * frozen-stiffness potential (groove arm) or on the residual norm (contact arm), the
+ * round-off floor.  See loaddist._one_case and
  * loaddist._newton_one for the formulas.
  *
  * It only proposes a displacement: loaddist evaluates the NumPy kernel there, checks the
@@ -15,13 +16,16 @@
  * Whatever this code cannot handle (a ball with cos(beta) < 0, a singular or non-descent
  * step, no convergence) returns a status and loaddist solves the case itself.
  *
- * newton_one(pack, F, fixed, u0, rtol, max_iter, seat) -> (status, iterations, u)
- *   pack  : float64 buffer [Z, ntab, R_i, A, x0, z0, g0, K_seat, cos psi (Z),
+ * newton_one(pack, F, fixed, u0, rtol, max_iter, seat, contact) -> (status, iterations, u)
+ *   pack  : float64 buffer [Z, ntab, R_i, A, x0, z0, g0, K_seat, d_e/(2 R_i), D/(2 R_i),
+ *           cos psi (Z),
  *           sin psi (Z), table (ntab x 2: ln K_n and -2 d ln K_n / d tau coefficients)]
  *   F     : 5 floats, the applied loads, 0 on imposed DOFs [N, N m]
  *   fixed : 5 floats, 1.0 for imposed DOFs
  *   u0    : 5 floats, the start [m, rad]
  *   seat  : the start is the touching reference (u0 = 0, no ball loaded)
+ *   contact: the moment arm of the ball thrust is the contact radius (d_e - D cos b)/2
+ *           (Ricci 2009 eq. 29) instead of the groove radius R_i
  *   status: 0 converged, 1 not converged within max_iter, 2 case left to loaddist
  */
 #define PY_SSIZE_T_CLEAN
@@ -34,8 +38,8 @@
 #define MAXTAB 64
 
 typedef struct {
-    int Z, ntab;
-    double Ri, A, x0, z0, g0, Kseat;
+    int Z, ntab, contact;
+    double Ri, A, x0, z0, g0, Kseat, rho0, kD;
     const double *cp, *sp, *tab;
 } Geo;
 
@@ -117,17 +121,28 @@ static int kernel(const Geo *g, const double *u, State *st)
             st->dmax = d;
         fr = Q * c;
         fa = Q * sn;
+        double far = fa, W2r, W3r;
         W[0] = k15 * c * c - qk * c * sn + qs * sn * sn;      /* d(Q cos b)/dx */
         W[1] = k15 * c * sn + qk * c * c - qs * c * sn;       /* d(Q cos b)/dz */
         W[2] = k15 * c * sn - qk * sn * sn - qs * c * sn;     /* d(Q sin b)/dx */
         W[3] = k15 * sn * sn + qk * c * sn + qs * c * c;      /* d(Q sin b)/dz */
         gx[0] = 0.0; gx[1] = g->cp[j]; gx[2] = g->sp[j]; gx[3] = 0.0; gx[4] = 0.0;
         gz[0] = 1.0; gz[1] = 0.0; gz[2] = 0.0; gz[3] = g->sp[j]; gz[4] = -g->cp[j];
+        W2r = W[2];
+        W3r = W[3];
+        if (g->contact) {
+            /* rows 3, 4: arm rho = r / R_i and the change of r = (d_e - D cos b)/2 with b */
+            double rho = g->rho0 - g->kD * c, q3 = g->kD * qs * sn * sn;
+            far = fa * rho;
+            W2r = W[2] * rho - q3 * sn;
+            W3r = W[3] * rho + q3 * c;
+        }
         for (a = 0; a < 5; a++) {
-            st->F[a] += fr * gx[a] + fa * gz[a];
+            double fa_ = a < 3 ? fa : far, w2 = a < 3 ? W[2] : W2r, w3 = a < 3 ? W[3] : W3r;
+            st->F[a] += fr * gx[a] + fa_ * gz[a];
             for (b = 0; b < 5; b++)
                 st->J[5 * a + b] += W[0] * gx[a] * gx[b] + W[1] * gx[a] * gz[b]
-                    + W[2] * gz[a] * gx[b] + W[3] * gz[a] * gz[b];
+                    + w2 * gz[a] * gx[b] + w3 * gz[a] * gz[b];
         }
     }
     for (a = 0; a < 5; a++)
@@ -297,7 +312,7 @@ static int newton_(const Geo *g, const double *F, const double *fixed, double *u
             return 2;
         for (a = 0; a < 5; a++)
             dS[a] = -dS[a];
-        if (!(dot5(R, dS) < 0.0))
+        if (!g->contact && !(dot5(R, dS) < 0.0))
             return 2;           /* loaddist takes the symmetric frozen-stiffness step */
         size = 0.0;
         for (a = 0; a < 5; a++)
@@ -335,7 +350,20 @@ static int newton_(const Geo *g, const double *F, const double *fixed, double *u
         local = err < 1e-6;
         if (kernel(g, unew, sn_))
             return 2;
-        if (!local) {
+        if (g->contact) {       /* backtrack on the residual norm */
+            double m0 = dot5(R, R);
+            en = residual(sn_, Fsx, fixed, Fs_ext, Rn);
+            for (k = 0; k < (local ? 0 : 40); k++) {
+                if (dot5(Rn, Rn) <= m0)
+                    break;
+                t *= 0.5;
+                for (a = 0; a < 5; a++)
+                    unew[a] = u[a] + t * du[a];
+                if (kernel(g, unew, sn_))
+                    return 2;
+                en = residual(sn_, Fsx, fixed, Fs_ext, Rn);
+            }
+        } else if (!local) {
             phi0 = 0.0;
             ph = 0.0;
             for (j = 0; j < g->Z; j++) {
@@ -358,7 +386,8 @@ static int newton_(const Geo *g, const double *F, const double *fixed, double *u
                     return 2;
             }
         }
-        en = residual(sn_, Fsx, fixed, Fs_ext, Rn);
+        if (!g->contact)
+            en = residual(sn_, Fsx, fixed, Fs_ext, Rn);
         dmx = sn_->dmax;
         umx = 0.0;
         for (a = 0; a < 5; a++)
@@ -396,24 +425,27 @@ static PyObject *py_newton_one(PyObject *self, PyObject *args)
     Py_buffer pack;
     double F[5], fixed[5], u[5], rtol;
     long max_iter, iters = 0;
-    int seat, status = 2;
+    int seat, contact, status = 2;
     Geo g;
     (void) self;
-    if (!PyArg_ParseTuple(args, "y*(ddddd)(ddddd)(ddddd)dlp", &pack,
+    if (!PyArg_ParseTuple(args, "y*(ddddd)(ddddd)(ddddd)dlpp", &pack,
                           &F[0], &F[1], &F[2], &F[3], &F[4],
                           &fixed[0], &fixed[1], &fixed[2], &fixed[3], &fixed[4],
-                          &u[0], &u[1], &u[2], &u[3], &u[4], &rtol, &max_iter, &seat))
+                          &u[0], &u[1], &u[2], &u[3], &u[4], &rtol, &max_iter, &seat,
+                          &contact))
         return NULL;
-    if (pack.len >= 8 * (Py_ssize_t) sizeof(double)) {
+    if (pack.len >= 10 * (Py_ssize_t) sizeof(double)) {
         const double *p = (const double *) pack.buf;
         g.Z = (int) p[0];
         g.ntab = (int) p[1];
         g.Ri = p[2]; g.A = p[3]; g.x0 = p[4]; g.z0 = p[5]; g.g0 = p[6]; g.Kseat = p[7];
-        g.cp = p + 8;
-        g.sp = p + 8 + g.Z;
-        g.tab = p + 8 + 2 * g.Z;
+        g.rho0 = p[8]; g.kD = p[9];
+        g.contact = contact;
+        g.cp = p + 10;
+        g.sp = p + 10 + g.Z;
+        g.tab = p + 10 + 2 * g.Z;
         if (g.Z >= 1 && g.ntab >= 1
-            && pack.len == (Py_ssize_t) ((8 + 2 * g.Z + 2 * g.ntab) * sizeof(double))) {
+            && pack.len == (Py_ssize_t) ((10 + 2 * g.Z + 2 * g.ntab) * sizeof(double))) {
             if (g.ntab <= MAXTAB)
                 status = newton(&g, F, fixed, u, rtol, max_iter, seat, &iters);
         } else {
@@ -428,7 +460,7 @@ static PyObject *py_newton_one(PyObject *self, PyObject *args)
 
 static PyMethodDef methods[] = {
     {"newton_one", py_newton_one, METH_VARARGS,
-     "newton_one(pack, F, fixed, u0, rtol, max_iter, seat) -> (status, iterations, *u)"},
+     "newton_one(pack, F, fixed, u0, rtol, max_iter, seat, contact) -> (status, iterations, u)"},
     {NULL, NULL, 0, NULL}
 };
 

@@ -828,12 +828,13 @@ if os.environ.get("BALLRACE_NO_COMPILED"):
 
 def _compiled_pack(model, geo):
     """The float64 buffer the compiled Newton reads (see analytic/_ldkernel.c), built once
-    per _Geo: Z, the table length, R_i, A, x_0, z_0, g_0, K_n at the reference angle, the
-    ball azimuths' cosines and sines and the K_n table (derivative column times -2)."""
+    per _Geo: Z, the table length, R_i, A, x_0, z_0, g_0, K_n at the reference angle,
+    d_e / (2 R_i) and D / (2 R_i) (the contact arm), the ball azimuths' cosines and sines
+    and the K_n table (derivative column times -2)."""
     if geo.cpack is None:
         tab = model.table * np.array([1.0, -2.0])
         head = [float(model.Z), float(tab.shape[0]), model.Ri, model.A, geo.x0, geo.z0,
-                geo.g0, _kseat(model, geo)]
+                geo.g0, _kseat(model, geo), 0.5 * model.dm / model.Ri, 0.5 * model.D / model.Ri]
         geo.cpack = np.ascontiguousarray(np.concatenate([head, geo.cp, geo.sp, tab.ravel()]))
     return geo.cpack
 
@@ -925,12 +926,12 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
     u = u0[0].tolist()
     seat = geo.g0 == 0 and not any(u) and Fs_ext > 0
     it0 = 0
-    if _COMPILED is not None and arm == "groove" and model.table is not None:
+    if _COMPILED is not None and model.table is not None:
         # the compiled iteration proposes the equilibrium; the NumPy kernel below checks it
         # (and iterates on if its residual is above rtol); any other status: NumPy alone
         status, it0, uc = _COMPILED.newton_one(_compiled_pack(model, geo), F,
                                                [1.0 if v else 0.0 for v in fx], u, rtol,
-                                               max_iter, seat)
+                                               max_iter, seat, arm == "contact")
         if status == 0:
             u, seat, max_iter = list(uc), False, max_iter - it0
         else:
@@ -1485,6 +1486,10 @@ def solve(bearing: BallBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *, displ
         u0 = np.where(imposed, np.nan_to_num(D), u0)
     if not (type(rtol) is float and 0.0 < rtol <= 1e-3):
         rtol = float(check_range(rtol, "rtol", 0.0, 1e-3, high_inclusive=True, unit="-"))
+    if not (type(max_iter) is int and 1 <= max_iter < 2**31):
+        max_iter = int(check_integer(max_iter, "max_iter", 1))
+        if max_iter >= 2**31:
+            raise ValueError(f"max_iter must be below 2**31; got {max_iter}")
     return _solve_checked(bearing, model, geo, psi, x0, z0, Pd, L, imposed, u0, shape,
                           moment_arm, rtol, max_iter, moment_arm == "contact" and _contact_direct)
 

@@ -177,8 +177,32 @@ def bearing_solve():
     t, tv, _ = timeit_pair(lambda: brg.solve(Fa=1000.0, Fy=3000.0),
                            lambda: brg.solve(Fa=Fa, Fy=Fy), repeats=5)
     tv /= n
-    return Row("one BallBearing.solve (9 balls, radial + axial)", t, tv,
+    return Row("one BallBearing.solve (9 balls, radial + axial)" + _compiled_note(), t, tv,
                f"vectorised solve, per case ({n} cases)", "<= 0.3 ms", t <= 0.3e-3)
+
+
+def _compiled_note():
+    from ballrace.analytic import loaddist
+    return "" if loaddist._COMPILED is not None else " [NumPy iteration: not compiled]"
+
+
+@row
+def bearing_solve_numpy():
+    """The same solve with the compiled iteration switched off (what an install without a
+    C compiler runs): information, against the default path."""
+    from ballrace.analytic import loaddist
+    brg = _bearing209()
+    compiled = loaddist._COMPILED
+    if compiled is None:
+        return None
+    try:
+        t = timeit(lambda: brg.solve(Fa=1000.0, Fy=3000.0))
+        loaddist._COMPILED = None
+        tn = timeit(lambda: brg.solve(Fa=1000.0, Fy=3000.0))
+    finally:
+        loaddist._COMPILED = compiled
+    return Row("  the same, NumPy iteration only (BALLRACE_NO_COMPILED=1)", tn, t,
+               "the default (compiled) solve", "(information)", None)
 
 
 @row
@@ -306,8 +330,10 @@ def machine() -> str:
             cpu = next(ln.split(":", 1)[1].strip() for ln in f if ln.startswith("model name"))
     except (OSError, StopIteration):
         pass
+    from ballrace.analytic import loaddist
     return (f"{cpu}, {os.cpu_count()} cores, Python {platform.python_version()}, "
-            f"NumPy {np.__version__}, SciPy {scipy.__version__}")
+            f"NumPy {np.__version__}, SciPy {scipy.__version__}, compiled load-distribution "
+            f"kernel {'built' if loaddist._COMPILED is not None else 'not built'}")
 
 
 def main(argv=None):

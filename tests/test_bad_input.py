@@ -301,9 +301,10 @@ TABLE.update({
 
 # loaddist, bearing, duplex, highspeed
 TABLE.update({
-    "loaddist.solve": (dict(bearing=BEARING, Fa=0.0, Fy=0.0, Fz=5000.0, My=0.0, Mz=0.0),
+    "loaddist.solve": (dict(bearing=BEARING, Fa=0.0, Fy=0.0, Fz=5000.0, My=0.0, Mz=0.0,
+                            max_iter=200),
                        dict(bearing="object", Fa="signed", Fy="signed", Fz="signed",
-                            My="signed", Mz="signed"), ()),
+                            My="signed", Mz="signed", max_iter="count"), ()),
     "loaddist.radial": (dict(bearing=BEARING, Fr=5000.0), dict(bearing="object", Fr="signed"),
                         ()),
     "loaddist.thrust": (dict(bearing=ANGULAR, Fa=5000.0), dict(bearing="object", Fa="load"),

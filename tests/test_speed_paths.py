@@ -411,17 +411,17 @@ def test_compiled_newton_statuses():
     geo = loaddist._geo(model, brg, 0.0, x0, z0)
     pack = loaddist._compiled_pack(model, geo)
     F, free = [1000.0, 3000.0, 0.0, 0.0, 0.0], [0.0] * 5
-    status, it, u = loaddist._COMPILED.newton_one(pack, F, free, [0.0] * 5, 1e-12, 200, True)
+    status, it, u = loaddist._COMPILED.newton_one(pack, F, free, [0.0] * 5, 1e-12, 200, True, False)
     assert status == 0 and 5 <= it <= 10
     r = brg.solve(Fa=1000.0, Fy=3000.0)
     assert np.allclose(u, r.displacements, rtol=1e-9, atol=0)
-    assert loaddist._COMPILED.newton_one(pack, F, free, [0.0] * 5, 1e-12, 2, True)[:2] == (1, 2)
+    assert loaddist._COMPILED.newton_one(pack, F, free, [0.0] * 5, 1e-12, 2, True, False)[:2] == (1, 2)
     far = [0.0, -2.0 * model.A, 0.0, 0.0, 0.0]
-    assert loaddist._COMPILED.newton_one(pack, F, free, far, 1e-12, 200, False)[0] == 2
+    assert loaddist._COMPILED.newton_one(pack, F, free, far, 1e-12, 200, False, False)[0] == 2
     r2 = brg.solve(Fa=1000.0, Fy=3000.0, initial=[0.0, -0.9 * model.D, 0.0, 0.0, 0.0])
     assert np.allclose(r2.ball_loads, r.ball_loads, rtol=0, atol=1e-9 * r.max_ball_load)
     with pytest.raises(ValueError, match="inconsistent buffer size"):
-        loaddist._COMPILED.newton_one(pack[:-1], F, free, [0.0] * 5, 1e-12, 200, True)
+        loaddist._COMPILED.newton_one(pack[:-1], F, free, [0.0] * 5, 1e-12, 200, True, False)
 
 
 def test_numpy_newton_without_the_compiled_module(numpy_only):
