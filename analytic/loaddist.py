@@ -872,6 +872,15 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
     t^(3/2) = F.du / sum K_n <b_j>^(5/2), b_j = d(approach_j)/du . du (the homogeneous
     Hertz law), instead of halving from the trust radius.  ``tests/test_loaddist.py``
     checks that both drivers agree.  Returns (u (1,5), iterations (1,), final _OneCase).
+
+    With the optional compiled module (``analytic/_ldkernel.c``, built at install time when
+    a C compiler is present; ``BALLRACE_NO_COMPILED=1`` switches it off) the same iteration
+    runs in C first and only proposes the equilibrium: the NumPy kernel is evaluated there
+    and this iteration goes on from it while the residual is above ``rtol`` (in practice
+    it stops at once), so every check and every reported number is this module's.  Cases
+    the compiled iteration leaves (a ball at cos(beta) < 0, a non-descent step, no
+    convergence within ``max_iter``) are solved here from the original start.
+    ``tests/test_speed_paths.py`` compares both paths.
     """
     Ri = float(model.Ri)
     sc = (1.0, 1.0, 1.0, Ri, Ri)
