@@ -84,4 +84,5 @@ test-docs: docs
 
 clean:
 	rm -rf $(VENV) build *.egg-info .pytest_cache .hypothesis .benchmarks reports/latest
+	rm -f analytic/_ldkernel*.so
 	rm -rf docs/_build docs/auto_gallery docs/api/generated docs/cases docs/cli docs/sg_execution_times.rst
