@@ -311,7 +311,7 @@ def _compiled():
 
 needs_compiled = pytest.mark.skipif(
     _compiled() is None, reason="the optional compiled kernel is not built (no C compiler "
-                                "at install time)")
+                                "at install time) or is switched off (BALLRACE_NO_COMPILED)")
 
 
 @pytest.fixture
