@@ -15,6 +15,7 @@ import ballrace
 MODULES = sorted(
     m.name for m in pkgutil.walk_packages(ballrace.__path__, "ballrace.")
     if ".tests" not in m.name and not m.name.startswith("ballrace.benchmarks")
+    and m.name != "ballrace.setup"          # the build script, in a checkout only
 )
 
 
