@@ -403,6 +403,17 @@ def _smoothstep(t):
     return t * t * (3.0 - 2.0 * t)
 
 
+def _blend(full, on, d, a, base, d_ref):
+    """(weight, kinematic angle) of one race's contacts: the mechanical angle ``a`` where
+    the contact is closed beyond the blend deflection ``d_ref``, the groove-centre line
+    angle ``base`` where it is open, smoothly in between; ``full``: every contact closed
+    beyond the blend (weight 1, the same bits as the general formula)."""
+    if full:
+        return np.ones(a.shape), base + (a - base)
+    w = np.where(on, _smoothstep(d / d_ref), 0.0)
+    return w, base + w * (np.where(on, a, base) - base)
+
+
 def _groove_centres(m, u):
     """Inner-groove curvature centres (A1, A2) of the balls [m] for ring displacements u
     (..., 5) (H&D 1981 eqs. 3.93-3.95); shape (..., Z)."""
@@ -493,18 +504,8 @@ class _Balls:
         # mechanical angles ai, ao (|ai|, |ao| < pi/2 wherever the contact is loaded).
         z = A2 == 0.0
         base = np.arctan(A1 / np.where(z, 1e-300, A2) if z.any() else A1 / A2)
-        if full_i:
-            self.wgt_i = wgt_i = np.ones(Qi.shape)
-            self.ai_k = ai_k = base + (self.ai - base)
-        else:
-            self.wgt_i = wgt_i = np.where(on_i, _smoothstep(self.di / d_ref), 0.0)
-            self.ai_k = ai_k = base + wgt_i * (np.where(on_i, self.ai, base) - base)
-        if full_o:
-            self.wgt_o = wgt_o = np.ones(Qo.shape)
-            self.ao_k = ao_k = base + (self.ao - base)
-        else:
-            self.wgt_o = wgt_o = np.where(on_o, _smoothstep(self.do / d_ref), 0.0)
-            self.ao_k = ao_k = base + wgt_o * (np.where(on_o, self.ao, base) - base)
+        self.wgt_i, self.ai_k = wgt_i, ai_k = _blend(full_i, on_i, self.di, self.ai, base, d_ref)
+        self.wgt_o, self.ao_k = wgt_o, ao_k = _blend(full_o, on_o, self.do, self.ao, base, d_ref)
         # kinematics (race control) at the current angles
         rho = m.rho
         # a ball cannot be controlled by a race it does not touch: inner control fades

@@ -940,7 +940,8 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
         # (and iterates on if its residual is above rtol); any other status: NumPy alone
         status, it0, uc = _COMPILED.newton_one(_compiled_pack(model, geo), F,
                                                [1.0 if v else 0.0 for v in fx], u, rtol,
-                                               max_iter, seat, arm == "contact")
+                                               min(max_iter, 2**31 - 1), seat,
+                                               arm == "contact")
         if status == 0:
             u, seat, max_iter = list(uc), False, max_iter - it0
         else:
@@ -1495,10 +1496,8 @@ def solve(bearing: BallBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *, displ
         u0 = np.where(imposed, np.nan_to_num(D), u0)
     if not (type(rtol) is float and 0.0 < rtol <= 1e-3):
         rtol = float(check_range(rtol, "rtol", 0.0, 1e-3, high_inclusive=True, unit="-"))
-    if not (type(max_iter) is int and 1 <= max_iter < 2**31):
+    if not (type(max_iter) is int and max_iter >= 1):
         max_iter = int(check_integer(max_iter, "max_iter", 1))
-        if max_iter >= 2**31:
-            raise ValueError(f"max_iter must be below 2**31; got {max_iter}")
     return _solve_checked(bearing, model, geo, psi, x0, z0, Pd, L, imposed, u0, shape,
                           moment_arm, rtol, max_iter, moment_arm == "contact" and _contact_direct)
 

@@ -359,9 +359,8 @@ def _bearing_and_loads(draw):
 def test_compiled_newton_equals_numpy_newton(case, arm):
     # the same equilibrium through both one-case iterations: the same refusals, ball loads
     # to 1e-9 of Q_max (as the one-case and vectorized drivers), both balanced to rtol
-    import _pytest.monkeypatch
     brg, loads = case
-    with _pytest.monkeypatch.MonkeyPatch.context() as mp:
+    with pytest.MonkeyPatch.context() as mp:           # hypothesis: no function fixtures
         rc, rn = _solve_both(brg, mp, moment_arm=arm, **loads)
     if isinstance(rn, Exception) or isinstance(rc, Exception):
         assert type(rc) is type(rn), (rc, rn)
