@@ -21,6 +21,7 @@ import signal
 import subprocess
 import sys
 import threading
+import urllib.error
 import urllib.request
 from pathlib import Path
 
@@ -178,7 +179,8 @@ BAD = [
     ({"load": "3 kg"}, "load", "dimension [force]"),
     ({"rx1": "6,35 mm"}, "rx1", "comma"),
     ({"E": "-200 GPa"}, "E", "E must be > 0"),
-    ({"traction": "12"}, "traction", "traction must be in [-10, 10]"),
+    ({"traction": "12"}, "traction", "traction must be in [-1, 1]"),
+    ({"traction": "-1.01"}, "traction", "traction must be in [-1, 1]"),
     ({"mode": "bearing", "f": "0.45"}, "f", "f_inner"),
     ({"mode": "bearing", "D": "80 mm"}, "D", "ball_diameter"),
     ({"mode": "bearing", "angle": "12 mm"}, "angle", "angle"),
@@ -226,10 +228,12 @@ def test_server_survives_bad_input(server):
     for change, field, _ in BAD:
         r = _post(server, {**ex.DEFAULTS, **change})
         assert r["ok"] is False and r["field"] == field
-    for body in (b"not json", b"[1, 2]"):
+    for body in (b"not json", b"[1, 2]"):          # a malformed request: 400, one line
         req = urllib.request.Request(server + "/api/compute", data=body, method="POST")
-        with urllib.request.urlopen(req, timeout=30) as f:
-            r = json.loads(f.read())
+        with pytest.raises(urllib.error.HTTPError) as err:
+            urllib.request.urlopen(req, timeout=30)
+        r = json.loads(err.value.read())
+        assert err.value.code == 400
         assert r["ok"] is False and "\n" not in r["error"]
     r = _post(server, {**ex.DEFAULTS, "load": "1 kN"})
     assert r["ok"] is True and r["table"]["load"] == pytest.approx(1000.0)
@@ -241,9 +245,14 @@ def test_case_file_endpoint(server):
         r = json.loads(f.read())
     assert r["ok"] and r["inputs"]["D"] == "12.7 mm" and r["inputs"]["dm"] == "65 mm"
     assert r["inputs"]["f"] == "0.52" and r["inputs"]["mode"] == "bearing"
-    with urllib.request.urlopen(server + "/api/case?path=/nonexistent.toml", timeout=30) as f:
+    with urllib.request.urlopen(server + "/api/case?path=nonexistent.toml", timeout=30) as f:
         r = json.loads(f.read())
-    assert r["ok"] is False and "no such file" in r["error"]
+    assert r["ok"] is False and "no case file 'nonexistent.toml'" in r["error"]
+    # outside the start folder: refused, whether the file exists or not
+    for outside in ("/nonexistent.toml", "/etc/hostname"):
+        with urllib.request.urlopen(server + f"/api/case?path={outside}", timeout=30) as f:
+            r = json.loads(f.read())
+        assert r["ok"] is False and "reads only" in r["error"]
 
 
 def test_serve_with_a_case_file():

@@ -31,7 +31,9 @@ import gzip
 import json
 import logging
 import math
+import re
 import threading
+import time
 from pathlib import Path
 from typing import Annotated
 
@@ -75,6 +77,20 @@ _EXPORT_RX = "6.35 mm"
 _EXPORT_E = "200 GPa"
 
 _STATIC = Path(__file__).with_name("explorer_static")
+
+# Bounds of the work one request may ask for (the server refuses more with a 400).  The
+# grids are fixed above, so a request chooses only the inputs; these bound their size.
+#: Largest |traction coefficient| the explorer takes [-].  The library accepts 10, but its
+#: maxima searches beyond 1 can take a minute (a traction coefficient above 1 is beyond
+#: dry steel-on-steel friction anyway).
+TRACTION_MAX = 1.0
+MAX_BODY = 16_384        # bytes of a POST /api/compute body
+MAX_QUERY = 2_048        # characters of a GET query string
+MAX_TEXT = 100           # characters of one input
+MAX_CASE_BYTES = 1_000_000   # size of a case file /api/case reads
+_PARAMS = frozenset(DEFAULTS) | {"set_ratio", "_maxima"}
+_POW = re.compile(r"\^|\*\*")
+_POW_ARG = re.compile(r"\s*\(?\s*[+-]?\d{1,2}(?:\.\d{1,3})?\s*\)?")
 
 
 class InputError(ValueError):
@@ -123,8 +139,8 @@ def _contact(params: dict):
     nu = _number(p["nu"], "nu")
     _guard("nu", check_range, nu, "nu", -1.0, 0.5, unit="-")
     mu = _number(p["traction"], "traction")
-    _guard("traction", check_range, mu, "traction", -10.0, 10.0, low_inclusive=True,
-           high_inclusive=True, unit="-")
+    _guard("traction", check_range, mu, "traction", -TRACTION_MAX, TRACTION_MAX,
+           low_inclusive=True, high_inclusive=True, unit="-")
     E = _guard("E", parse_quantity, str(p["E"]), "[pressure]", "E")
     import warnings
 
@@ -405,6 +421,88 @@ def case_inputs(path: str, race: str = "inner") -> dict:
             "title": case.title}
 
 
+class RequestError(ValueError):
+    """A request the server refuses before any computation (HTTP 400): too large, an
+    unknown input, an exponent that would make pint compute a huge integer."""
+
+    def __init__(self, field: str, message: str):
+        super().__init__(message)
+        self.field = field
+
+
+def check_text(field: str, text) -> str:
+    """One input of a request, bounded: at most :data:`MAX_TEXT` characters, and every
+    exponent (``^`` or ``**``) a plain number of at most two digits that is not raised
+    again (pint evaluates ``9^9^9`` as an integer of 370 million digits).
+
+    Raises :class:`RequestError`; returns the text.
+    """
+    s = str(text)
+    if len(s) > MAX_TEXT:
+        raise RequestError(field, f"{field}: at most {MAX_TEXT} characters; got {len(s)}")
+    for m in _POW.finditer(s):
+        rest = s[m.end():]
+        arg = _POW_ARG.match(rest)
+        if arg is None or _POW.match(rest[arg.end():].lstrip()):
+            raise RequestError(field, f"{field}: {s!r}: an exponent must be a number of at "
+                               "most two digits, not raised again (e.g. '200 N/mm^2')")
+    return s
+
+
+def check_request(body) -> tuple[dict, bool]:
+    """The inputs of a POST /api/compute body, bounded (see :func:`check_text`): a JSON
+    object of at most the page's inputs; returns ``(params, maxima)``.
+
+    Raises :class:`RequestError` naming the input.
+    """
+    if not isinstance(body, dict):
+        raise RequestError("general", "the request body must be a JSON object")
+    unknown = sorted(str(k) for k in body if k not in _PARAMS)
+    if unknown:
+        name = check_text("general", unknown[0][:40])
+        raise RequestError("general", f"unknown input {name!r}; the inputs are "
+                           f"{', '.join(sorted(_PARAMS))}")
+    maxima = bool(body.pop("_maxima", True))
+    params = {}
+    for k, v in body.items():
+        if v is not None and not isinstance(v, (str, int, float)):
+            raise RequestError(k, f"{k}: give a text or a number; got {type(v).__name__}")
+        params[k] = None if v is None else check_text(k, v)
+    return params, maxima
+
+
+def resolve_case(text, root, allowed=()) -> Path:
+    """The case file ``text`` names, if the explorer may read it: one of ``allowed`` (the
+    ``--case`` file), or a ``.toml`` file in the folder ``root`` or below it (a relative
+    path is taken from ``root``; symbolic links are followed before the check, so none
+    leads out).  Anything else is one refusal that says nothing of the file.
+
+    Raises :class:`InputError` for the field ``case``.
+    """
+    root = Path(root).resolve()
+    refuse = InputError("case", "case: the explorer reads only the case file it was started "
+                        "with (--case) and .toml case files in the folder it was started in "
+                        "or below it")
+    s = str(text).strip()
+    if not s:
+        raise InputError("case", "case: give the path of a bearing case file (.toml), "
+                         "relative to the folder the explorer was started in")
+    try:
+        real = (root / s).resolve()          # an absolute s replaces root
+    except (OSError, ValueError, RuntimeError):
+        raise refuse from None
+    if real not in {Path(a).resolve() for a in allowed} and (
+            real.suffix.lower() != ".toml" or not real.is_relative_to(root)):
+        raise refuse
+    if not real.is_file():
+        raise InputError("case", f"case: no case file {s!r} in the folder the explorer was "
+                         "started in")
+    if real.stat().st_size > MAX_CASE_BYTES:
+        raise InputError("case", f"case: {s!r} is larger than {MAX_CASE_BYTES // 1000} kB; "
+                         "a case file is a few kB")
+    return real
+
+
 # ------------------------------------------------------------------ the page
 def page(data: dict | None = None, initial: dict | None = None) -> str:
     """The explorer's HTML page: CSS and JavaScript inline; ``data`` embedded (export);
@@ -429,22 +527,33 @@ def export_grid(grid: dict | None = None, progress=None) -> dict:
 
     Returns ``{"grid", "geometry", "tables": {"i,j,l,m": table}, "dimless":
     {"i,l,m": {"fields", "maxima"}}}`` with i over ratios, j loads, l nu, m traction.
+    ``progress(done, total, text)``, if given, is called as each shape (one ratio, nu and
+    traction: the loads of a shape cost only the Hertz solution) starts and once at the
+    end, ``done`` and ``total`` counting grid points; each shape is also logged (INFO).
     """
     g = {k: tuple(float(v) for v in (grid or EXPORT_GRID)[k]) for k in EXPORT_GRID}
     tables, dimless = {}, {}
-    n = len(g["ratio"]) * len(g["load"]) * len(g["nu"]) * len(g["mu"])
-    done = 0
-    for i, alpha in enumerate(g["ratio"]):
-        for l, nu in enumerate(g["nu"]):
-            for m, mu in enumerate(g["mu"]):
-                for j, Q in enumerate(g["load"]):
-                    r = compute(export_params(alpha, Q, nu, mu))
-                    tables[f"{i},{j},{l},{m}"] = r["table"]
-                    dimless.setdefault(f"{i},{l},{m}", {"fields": r["dimless"],
-                                                        "maxima": r["maxima"]})
-                    done += 1
-                    if progress:
-                        progress(done, n)
+    shapes = [(i, alpha, l, nu, m, mu) for i, alpha in enumerate(g["ratio"])
+              for l, nu in enumerate(g["nu"]) for m, mu in enumerate(g["mu"])]
+    n = len(shapes) * len(g["load"])
+    log.info("export: %d grid points, %d shapes", n, len(shapes))
+    done, t0 = 0, time.perf_counter()
+    for s, (i, alpha, l, nu, m, mu) in enumerate(shapes, 1):
+        what = (f"shape {s}/{len(shapes)}: Ry/Rx = {alpha:g}, nu = {nu:g}, "
+                f"traction = {mu:g}")
+        if progress:
+            progress(done, n, what)
+        ts = time.perf_counter()
+        for j, Q in enumerate(g["load"]):
+            r = compute(export_params(alpha, Q, nu, mu))
+            tables[f"{i},{j},{l},{m}"] = r["table"]
+            dimless.setdefault(f"{i},{l},{m}", {"fields": r["dimless"],
+                                                "maxima": r["maxima"]})
+            done += 1
+        log.info("export: %s in %.2f s", what, time.perf_counter() - ts)
+    if progress:
+        progress(done, n, f"{len(shapes)} shapes computed")
+    log.info("export: %d shapes in %.1f s", len(shapes), time.perf_counter() - t0)
     return {"grid": {k: list(v) for k, v in g.items()},
             "geometry": {"rx1": _EXPORT_RX, "rx2": "inf", "ry2": "inf", "E": _EXPORT_E},
             "tables": tables, "dimless": dimless}
@@ -462,6 +571,9 @@ def export_params(alpha: float, load: float, nu: float, mu: float) -> dict:
 def export_html(path, grid: dict | None = None, progress=None) -> Path:
     """Write the self-contained explorer handout to ``path``; returns the path."""
     data = export_grid(grid, progress)
+    if progress:
+        n = len(data["tables"])
+        progress(n, n, "compressing and writing the page")
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(page(data), encoding="utf-8")
@@ -470,19 +582,44 @@ def export_html(path, grid: dict | None = None, progress=None) -> Path:
 
 
 # ------------------------------------------------------------------ the server
-def make_server(port: int = 0, host: str = "127.0.0.1", initial: dict | None = None):
+def _hosts(host: str, port: int) -> frozenset:
+    """The Host headers the server answers: its loopback names with its port (a page of
+    another site whose name was made to point at 127.0.0.1 sends its own name)."""
+    names = {"127.0.0.1", "localhost", "[::1]", f"[{host}]" if ":" in host else host}
+    out = {f"{n}:{port}" for n in names}
+    if port == 80:
+        out |= names
+    return frozenset(n.lower() for n in out)
+
+
+def make_server(port: int = 0, host: str = "127.0.0.1", initial: dict | None = None,
+                root=None, cases=()):
     """A ThreadingHTTPServer serving the explorer (not started); port 0 picks a free port;
-    ``initial`` inputs (strings, as :data:`DEFAULTS`) are the page's first state."""
+    ``initial`` inputs (strings, as :data:`DEFAULTS`) are the page's first state.
+
+    ``GET /api/case`` reads only the files of ``cases`` (the ``--case`` file) and ``.toml``
+    files in the folder ``root`` (default: the current folder) or below it (see
+    :func:`resolve_case`).  A request whose ``Host`` is not 127.0.0.1, localhost or [::1]
+    with the server's port, or whose ``Origin`` is another site, is refused (403); a request
+    larger than the bounds (:data:`MAX_BODY`, :data:`MAX_QUERY`, :func:`check_text`) gets a
+    400 with a one-line message.
+    """
     from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
     from urllib.parse import parse_qs, urlparse
 
     html = page(None, initial).encode("utf-8")
+    root = Path(root if root is not None else Path.cwd()).resolve()
+    cases = tuple(Path(c).resolve() for c in cases)
     # one view computation at a time, and one maxima search at a time: the slow searches
     # with traction (second request) never hold up the views of the next change
     locks = {False: threading.Lock(), True: threading.Lock()}
+    # the page talks to this server only and is shown in no other site's frame
+    csp = "connect-src 'self'; frame-ancestors 'none'; base-uri 'none'; form-action 'none'"
 
     class Handler(BaseHTTPRequestHandler):
         server_version = "ballrace-explorer"
+        sys_version = ""
+        timeout = 30                            # a client that stalls is dropped
 
         def log_message(self, fmt, *args):      # no request log on the terminal
             log.debug("explorer: " + fmt, *args)
@@ -493,46 +630,92 @@ def make_server(port: int = 0, host: str = "127.0.0.1", initial: dict | None = N
                 self.send_header("Content-Type", ctype)
                 self.send_header("Content-Length", str(len(body)))
                 self.send_header("Cache-Control", "no-store")
+                self.send_header("X-Content-Type-Options", "nosniff")
+                self.send_header("Referrer-Policy", "no-referrer")
+                if ctype.startswith("text/html"):
+                    self.send_header("Content-Security-Policy", csp)
                 self.end_headers()
                 self.wfile.write(body)
             except (BrokenPipeError, ConnectionResetError):
                 pass
 
-        def _json(self, obj) -> None:
-            self._send(200, json.dumps(obj).encode("utf-8"), "application/json")
+        def _json(self, obj, code: int = 200) -> None:
+            self._send(code, json.dumps(obj).encode("utf-8"), "application/json")
+
+        def _refuse(self, field: str, message: str) -> None:
+            self._json({"ok": False, "field": field, "error": message}, 400)
+
+        def _allowed(self) -> bool:
+            """The Host (and Origin, when sent) name this server; else a bare 403."""
+            hosts = _hosts(*self.server.server_address[:2])
+            got = self.headers.get_all("Host") or []
+            origin = self.headers.get_all("Origin") or []
+            ok = (len(got) == 1 and got[0].strip().lower() in hosts and len(origin) <= 1
+                  and all(o.strip().lower() in {"http://" + h for h in hosts}
+                          for o in origin))
+            if not ok:
+                self.close_connection = True
+                self._send(403, b"forbidden\n", "text/plain")
+            return ok
 
         def do_GET(self):  # noqa: N802 - http.server's name
+            if not self._allowed():
+                return
             url = urlparse(self.path)
             if url.path in ("/", "/index.html"):
                 self._send(200, html, "text/html; charset=utf-8")
             elif url.path == "/api/case":
+                if len(url.query) > MAX_QUERY:
+                    self._refuse("case", f"case: the query is longer than {MAX_QUERY} "
+                                 "characters")
+                    return
                 q = {k: v[0] for k, v in parse_qs(url.query).items()}
+                race = q.get("race", "inner")
+                if race not in ("inner", "outer"):
+                    self._refuse("race", "race must be 'inner' or 'outer'")
+                    return
+                text, path = q.get("path", ""), None
                 try:
-                    self._json({"ok": True, "inputs": case_inputs(q.get("path", ""),
-                                                                  q.get("race", "inner"))})
-                except InputError as exc:
-                    self._json({"ok": False, "field": "case", "error": str(exc)})
-                except Exception as exc:
-                    self._json({"ok": False, "field": "case", "error": _one_line(exc)})
+                    path = resolve_case(text, root, cases)
+                    inputs = case_inputs(str(path), race)
+                except InputError as exc:      # the path as typed, not as resolved
+                    msg = str(exc) if path is None else str(exc).replace(str(path), text)
+                    self._json({"ok": False, "field": "case", "error": msg})
+                except Exception:
+                    log.debug("explorer: case file", exc_info=True)
+                    self._json({"ok": False, "field": "case",
+                                "error": "case: the file cannot be read as a case file"})
+                else:
+                    self._json({"ok": True, "inputs": inputs})
             elif url.path == "/favicon.ico":
                 self._send(204, b"", "image/x-icon")
             else:
                 self._send(404, b"not found", "text/plain")
 
         def do_POST(self):  # noqa: N802
+            if not self._allowed():
+                return
             if urlparse(self.path).path != "/api/compute":
                 self._send(404, b"not found", "text/plain")
                 return
+            self.close_connection = True
             try:
                 n = int(self.headers.get("Content-Length") or 0)
+            except ValueError:
+                n = -1
+            if not 0 <= n <= MAX_BODY:
+                self._refuse("general", f"the request body must be 0 to {MAX_BODY} bytes "
+                             f"(Content-Length); got {self.headers.get('Content-Length')!r}"[:200])
+                return
+            try:
                 body = json.loads(self.rfile.read(n) or b"{}")
-                if not isinstance(body, dict):
-                    raise ValueError("the request body must be a JSON object")
-                maxima = bool(body.pop("_maxima", True))
-                params = body
-                params = {str(k): (v if v is None else str(v)) for k, v in params.items()}
-            except (ValueError, UnicodeDecodeError) as exc:
-                self._json({"ok": False, "field": "general", "error": _one_line(exc)})
+                params, maxima = check_request(body)
+            except RequestError as exc:
+                self._refuse(exc.field, str(exc))
+                return
+            except (ValueError, UnicodeDecodeError, RecursionError) as exc:
+                self._refuse("general", "the request body is not JSON: "
+                             + _one_line(exc)[:200])
                 return
             with locks[maxima]:
                 self._json(compute_safe(params, maxima))
@@ -580,7 +763,8 @@ def register_commands(teach_app) -> None:
                 typer.echo(f"error: {first['error']}", err=True)
                 raise typer.Exit(code=2)
             try:
-                server = make_server(port, initial=initial)
+                server = make_server(port, initial=initial,
+                                     cases=() if case is None else (case,))
             except OSError as exc:
                 typer.echo(f"error: cannot listen on 127.0.0.1:{port} ({_one_line(exc)})",
                            err=True)
@@ -611,9 +795,10 @@ def register_commands(teach_app) -> None:
             = False,
     ):
         """Write the explorer as one self-contained HTML file (a precomputed grid, sliders)."""
-        from rich.progress import BarColumn, MofNCompleteColumn, Progress, TimeElapsedColumn
+        from rich.progress import (BarColumn, MofNCompleteColumn, Progress, TextColumn,
+                                   TimeElapsedColumn)
 
-        from ballrace.console import output_folder
+        from ballrace.console import make_console, output_folder
 
         if out.is_dir():
             out = out / "explorer.html"
@@ -624,13 +809,22 @@ def register_commands(teach_app) -> None:
         except ValueError as exc:
             typer.echo(f"error: {_one_line(exc)}", err=True)
             raise typer.Exit(code=2) from None
-        grid = SMALL_GRID if small else None
+        grid = {k: tuple((SMALL_GRID if small else EXPORT_GRID)[k]) for k in EXPORT_GRID}
+        n = math.prod(len(v) for v in grid.values())
+        shapes = n // len(grid["load"])
+        err = make_console(stderr=True)
+        typer.echo(f"ballrace explorer: computing {n} grid points ({shapes} shapes) for "
+                   f"{out} ...", err=True)
         try:
-            with Progress(BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
-                          transient=True) as prog:
-                task = prog.add_task("export", total=None)
-                path = export_html(out, grid, lambda i, n: prog.update(task, completed=i,
-                                                                       total=n))
+            if err.is_terminal:      # a bar on the terminal, else a line every tenth
+                with Progress(TextColumn("{task.description}"), BarColumn(),
+                              MofNCompleteColumn(), TimeElapsedColumn(), console=err,
+                              transient=True) as prog:
+                    task = prog.add_task("starting", total=n)
+                    path = export_html(out, grid, lambda i, n, text: prog.update(
+                        task, completed=i, total=n, description=text))
+            else:
+                path = export_html(out, grid, _ProgressLines(n))
         except KeyboardInterrupt:
             typer.echo("ballrace explorer: export interrupted, nothing written", err=True)
             raise typer.Exit(code=130) from None
@@ -640,6 +834,20 @@ def register_commands(teach_app) -> None:
         size = path.stat().st_size
         typer.echo(f"wrote {path} ({size / 1e6:.2f} MB)")
 
+
+class _ProgressLines:
+    """``teach export``'s progress when stderr is not a terminal: a line per tenth of the
+    grid (and the last step), with the time so far."""
+
+    def __init__(self, total: int):
+        self.total, self.shown, self.t0 = total, -1, time.perf_counter()
+
+    def __call__(self, done: int, total: int, text: str) -> None:
+        tenth = 10 * done // max(total, 1)
+        if tenth > self.shown or done >= total:
+            self.shown = tenth
+            typer.echo(f"  {done}/{total} grid points, {text} "
+                       f"({time.perf_counter() - self.t0:.0f} s)", err=True)
 
 
 #: The ``--small`` export grid.

@@ -36,6 +36,7 @@
     const i = Math.min(stops.length - 2, Math.floor(t)), f = t - i;
     return stops[i].map((c, k) => Math.round(c + (stops[i + 1][k] - c) * f));
   }
+  const ZERO = 1e-9;       // |field| / p0 below this everywhere: zero (round-off)
   function signed(name) { return name === "tau_xz" || name === "sigma_x" || name === "sigma_z"; }
 
   function prep(canvas) {
@@ -135,12 +136,16 @@
     const f = unpack(sec.fields[name]);
     const nu = sec.u[2], nz = sec.z[2];
     let lo = sec.fields[name].lo, hi = sec.fields[name].hi;
-    const sg = signed(name);
-    if (sg) { const a = Math.max(Math.abs(lo), Math.abs(hi)); lo = -a; hi = a; }
+    // a field that is zero here (to round-off, in units of p0) has no scale: it is drawn in
+    // the neutral colour, the centre of the diverging map, with no maximum marked
+    const zero = Math.max(Math.abs(lo), Math.abs(hi)) < ZERO;
+    const sg = signed(name) || zero;
+    if (zero) { lo = -1; hi = 1; }
+    else if (sg) { const a = Math.max(Math.abs(lo), Math.abs(hi)); lo = -a; hi = a; }
     const img = document.createElement("canvas"); img.width = nu; img.height = nz;
     const ic = img.getContext("2d"), id2 = ic.createImageData(nu, nz);
     for (let j = 0; j < nz; j++) for (let i = 0; i < nu; i++) {
-      const v = f[j * nu + i], c = cmap(sg ? DIV : VIR, (v - lo) / (hi - lo || 1)), o = 4 * (j * nu + i);
+      const v = zero ? 0 : f[j * nu + i], c = cmap(sg ? DIV : VIR, (v - lo) / (hi - lo || 1)), o = 4 * (j * nu + i);
       id2.data[o] = c[0]; id2.data[o + 1] = c[1]; id2.data[o + 2] = c[2]; id2.data[o + 3] = 255;
     }
     ic.putImageData(id2, 0, 0);
@@ -151,24 +156,34 @@
     const F = frame(ctx, box, u0, u1, 0, z1, `${uname} [mm]`, "depth z [mm]", true);
     // colour bar
     const cb = [box[0] + box[2] + 10, box[1], 12, box[3]];
-    for (let j = 0; j < cb[3]; j++) { const c = cmap(sg ? DIV : VIR, 1 - j / cb[3]); ctx.fillStyle = `rgb(${c})`; ctx.fillRect(cb[0], cb[1] + j, cb[2], 1); }
+    for (let j = 0; j < cb[3]; j++) { const c = cmap(sg ? DIV : VIR, zero ? 0.5 : 1 - j / cb[3]); ctx.fillStyle = `rgb(${c})`; ctx.fillRect(cb[0], cb[1] + j, cb[2], 1); }
+    ctx.strokeStyle = "#bbb"; ctx.lineWidth = 1; ctx.strokeRect(cb[0], cb[1], cb[2], cb[3]);
     ctx.fillStyle = "#333"; ctx.textAlign = "left"; ctx.textBaseline = "middle";
-    ctx.fillText(hi.toFixed(3), cb[0] + 14, cb[1] + 4); ctx.fillText(lo.toFixed(3), cb[0] + 14, cb[1] + cb[3] - 4);
+    if (zero) ctx.fillText("0", cb[0] + 14, cb[1] + cb[3] / 2 - 14);
+    else { ctx.fillText(hi.toFixed(3), cb[0] + 14, cb[1] + 4); ctx.fillText(lo.toFixed(3), cb[0] + 14, cb[1] + cb[3] - 4); }
     ctx.fillText("/ p0", cb[0] + 14, cb[1] + cb[3] / 2);
-    if (Math.max(Math.abs(lo), Math.abs(hi)) < 1e-9) {
-      ctx.fillStyle = "#fff"; ctx.textAlign = "center"; ctx.textBaseline = "middle";
+    cv.dataset.zero = zero ? "1" : "0";
+    if (zero) {
+      ctx.fillStyle = "#333"; ctx.textAlign = "center"; ctx.textBaseline = "middle";
       ctx.fillText(`${name} = 0 in this plane (symmetry)`, box[0] + box[2] / 2, box[1] + box[3] / 2);
     }
-    // marks
-    const mk = marksFor(cur, name, which);
+    // marks (none for a zero field: it has no maximum)
+    const mk = zero ? { pts: [], depth: null, label: "" } : marksFor(cur, name, which);
     ctx.lineWidth = 1;
     if (mk.depth !== null) {
+      const yl = F.py(mk.depth * b);
       ctx.strokeStyle = "#fff"; ctx.setLineDash([5, 3]);
-      ctx.beginPath(); ctx.moveTo(box[0], F.py(mk.depth * b)); ctx.lineTo(box[0] + box[2], F.py(mk.depth * b)); ctx.stroke();
+      ctx.beginPath(); ctx.moveTo(box[0], yl); ctx.lineTo(box[0] + box[2], yl); ctx.stroke();
       ctx.setLineDash([]);
-      ctx.fillStyle = "#fff"; ctx.strokeStyle = "#000"; ctx.textAlign = "left"; ctx.textBaseline = "bottom";
-      ctx.lineWidth = 3; ctx.strokeText(mk.label, box[0] + 4, F.py(mk.depth * b) - 2); ctx.fillText(mk.label, box[0] + 4, F.py(mk.depth * b) - 2);
+      // the label above its depth line, or below it (and below the marker's own label)
+      // when the line is too near the top of the plot, as for a maximum at the surface:
+      // it stays inside the plot, clear of the panel's title
+      const above = yl - 16 >= box[1];
+      const ty = above ? yl - 2 : Math.max(yl, box[1]) + 17;
+      ctx.fillStyle = "#fff"; ctx.strokeStyle = "#000"; ctx.textAlign = "left"; ctx.textBaseline = above ? "bottom" : "top";
+      ctx.lineWidth = 3; ctx.strokeText(mk.label, box[0] + 4, ty); ctx.fillText(mk.label, box[0] + 4, ty);
       ctx.lineWidth = 1;
+      cv.dataset.labelTop = String(above ? ty - 12 : ty);
     }
     for (const [u, z, lab] of mk.pts) {
       const x = F.px(u * b), y = F.py(z * b);
