@@ -90,7 +90,7 @@ MAX_TEXT = 100           # characters of one input
 MAX_CASE_BYTES = 1_000_000   # size of a case file /api/case reads
 _PARAMS = frozenset(DEFAULTS) | {"set_ratio", "_maxima"}
 _POW = re.compile(r"\^|\*\*")
-_POW_ARG = re.compile(r"\s*\(?\s*[+-]?\d{1,2}(?:\.\d{1,3})?\s*\)?")
+_POW_ARG = re.compile(r"\s*\(?\s*[+-]?\d{1,2}(?:\.\d{1,3})?(?![\d.])\s*\)?")
 
 
 class InputError(ValueError):
