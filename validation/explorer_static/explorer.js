@@ -180,9 +180,10 @@
       // it stays inside the plot, clear of the panel's title
       const above = yl - 16 >= box[1];
       const ty = above ? yl - 2 : Math.max(yl, box[1]) + 17;
-      ctx.fillStyle = "#fff"; ctx.strokeStyle = "#000"; ctx.textAlign = "left"; ctx.textBaseline = above ? "bottom" : "top";
-      ctx.lineWidth = 3; ctx.strokeText(mk.label, box[0] + 4, ty); ctx.fillText(mk.label, box[0] + 4, ty);
-      ctx.lineWidth = 1;
+      ctx.textAlign = "left"; ctx.textBaseline = above ? "bottom" : "top";
+      const tw = ctx.measureText(mk.label).width;            // white on a dark band: legible on any colour
+      ctx.fillStyle = "rgba(0, 0, 0, 0.6)"; ctx.fillRect(box[0] + 2, above ? ty - 13 : ty - 1, tw + 4, 14);
+      ctx.fillStyle = "#fff"; ctx.fillText(mk.label, box[0] + 4, ty);
       cv.dataset.labelTop = String(above ? ty - 12 : ty);
     }
     for (const [u, z, lab] of mk.pts) {
@@ -445,9 +446,13 @@
   // ------------------------------------------------------------------ handout mode
   async function setupExport() {
     $("#live-controls").hidden = true; $("#export-controls").hidden = false;
+    const t0 = performance.now();
+    $("#status").textContent = `unpacking the precomputed grid (${(DATA_B64.length / 1e6).toFixed(1)} MB)…`;
+    await new Promise((ok) => setTimeout(ok, 0));           // let the message show first
     const bin = Uint8Array.from(atob(DATA_B64), (c) => c.charCodeAt(0));
     const stream = new Blob([bin]).stream().pipeThrough(new DecompressionStream("gzip"));
     data = JSON.parse(await new Response(stream).text());
+    $("#status").textContent = `${Object.keys(data.tables).length} states unpacked in ${((performance.now() - t0) / 1e3).toFixed(1)} s`;
     const g = data.grid;
     $("#geom").textContent = `r_x1 = ${data.geometry.rx1}, E = ${data.geometry.E}`;
     const sl = { ratio: "#s-ratio", load: "#s-load", nu: "#s-nu", mu: "#s-mu" };
