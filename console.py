@@ -28,15 +28,15 @@ SYSTEMS = {
     "si": {"length": ("m", "m"), "small": ("m", "m"), "force": ("N", "N"),
            "stress": ("Pa", "Pa"), "modulus": ("Pa", "Pa"), "angle": ("rad", "rad"),
            "stiffness": ("N/m^1.5", "N/m**1.5"), "speed": ("m/s", "m/s"),
-           "moment": ("N·m", "N*m"), "temperature": ("K", "K")},
+           "moment": ("N·m", "N*m"), "temperature": ("K", "K"), "mass": ("kg", "kg")},
     "eng": {"length": ("mm", "mm"), "small": ("µm", "um"), "force": ("N", "N"),
             "stress": ("MPa", "MPa"), "modulus": ("GPa", "GPa"), "angle": ("deg", "deg"),
             "stiffness": ("N/mm^1.5", "N/mm**1.5"), "speed": ("m/s", "m/s"),
-            "moment": ("N·m", "N*m"), "temperature": ("°C", "degC")},
+            "moment": ("N·m", "N*m"), "temperature": ("°C", "degC"), "mass": ("kg", "kg")},
     "us": {"length": ("in", "in"), "small": ("µin", "uin"), "force": ("lbf", "lbf"),
            "stress": ("ksi", "kpsi"), "modulus": ("Mpsi", "Mpsi"), "angle": ("deg", "deg"),
            "stiffness": ("lbf/in^1.5", "lbf/in**1.5"), "speed": ("ft/min", "ft/min"),
-           "moment": ("lbf·in", "lbf*in"), "temperature": ("°F", "degF")},
+           "moment": ("lbf·in", "lbf*in"), "temperature": ("°F", "degF"), "mass": ("lb", "lb")},
 }
 
 #: Help text of the ``--units`` option of the table-printing commands.
@@ -46,7 +46,7 @@ UNITS_HELP = ("Units of the printed tables: eng (mm, µm, MPa, N, deg), si (m, P
 #: SI unit (pint expression) of each kind.
 _SI = {"length": "m", "small": "m", "force": "N", "stress": "Pa", "modulus": "Pa",
        "angle": "rad", "stiffness": "N/m**1.5", "speed": "m/s", "moment": "N*m",
-       "temperature": "K"}
+       "temperature": "K", "mass": "kg"}
 
 #: Absolute temperatures are affine, not a factor: K -> display (°C, K, °F).
 _TEMPERATURE = {"eng": lambda k: k - 273.15, "si": lambda k: k,

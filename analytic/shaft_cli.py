@@ -580,7 +580,7 @@ def _render(r: dict, units: str = "eng") -> None:
     con = make_console()
     sh = r["shaft"]
     rows = [("length", sh["length"], "length"), ("beam elements", sh["elements"], None),
-            ("mass", sh["mass"], "=kg"), ("largest lateral deflection", sh["max_deflection"],
+            ("mass", sh["mass"], "mass"), ("largest lateral deflection", sh["max_deflection"],
                                           "small"),
             ("Newton iterations", sh["iterations"], None),
             ("relative residual", sh["residual"], None)]

@@ -59,6 +59,9 @@ html_theme = "furo"
 html_title = f"ballrace {release}"
 html_css_files = ["ballrace.css"]
 html_show_sourcelink = False
+# Curly quotes and ellipses, but never dashes: "--" stays two hyphens, so a command-line
+# option written in prose (--cases, --fem) is not typeset as an en dash ("–cases").
+smartquotes_action = "qe"
 
 # --- MyST (the Markdown pages) -----------------------------------------------------------
 # A Markdown page that skips a heading level is cosmetic, not an error of the site.

@@ -17,7 +17,8 @@ import time
 from pathlib import Path
 
 __all__ = ["results_dict", "write_results", "render_html", "write_report", "AREA_TITLES",
-           "ENGINEERING_UNITS", "engineering_unit", "format_eng", "scheduler_text"]
+           "ENGINEERING_UNITS", "engineering_unit", "format_eng", "tolerance_text",
+           "scheduler_text"]
 
 log = logging.getLogger(__name__)
 
@@ -106,6 +107,10 @@ ENGINEERING_UNITS = {
     "1 / [time]": ((0.0, "rpm", 60.0 / (2.0 * math.pi)),),
     "[force] * [length]": ((0.0, "N·m", 1.0),),
     "[mass]": ((0.1, "kg", 1.0), (0.0, "g", 1e3)),
+    "[length] ** 2 / [time]": ((0.0, "mm²/s", 1e6),),      # kinematic viscosity, mm²/s = cSt
+    "[temperature]": ((0.0, "K", 1.0),),                   # a temperature difference
+    "1 / [temperature]": ((0.0, "1/K", 1.0),),
+    "[mass] / [length] ** 3": ((0.0, "kg/m³", 1.0),),
 }
 
 
@@ -127,27 +132,84 @@ def engineering_unit(dimension: str, reference: float | None = None) -> tuple[st
 _SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
 
 
-def _number(x: float) -> str:
+def _number(x: float, digits: int = 6) -> str:
+    """``x`` to ``digits`` significant digits, plain from 1e-3 to 1e7, else as ``m×10ⁿ``
+    (at most 4 digits in m); never Python's ``1e-08``.
+
+    >>> _number(1234567.0), _number(5.729578e-08, 3), _number(-1.4e-8, 2), _number(1112.06, 3)
+    ('1234570', '5.73×10⁻⁸', '-1.4×10⁻⁸', '1110')
+    """
     if x == 0:
         return "0"
     if 1e-3 <= abs(x) < 1e7:
-        return f"{x:.6g}"
-    m, e = f"{x:.4e}".split("e")
-    return f"{float(m):.4g}×10{str(int(e)).translate(_SUPERSCRIPT)}"
+        s = f"{x:.{digits}g}"
+        if "e" not in s:
+            return s
+        return f"{round(x, digits - 1 - math.floor(math.log10(abs(x)))):.0f}"
+    sig = min(digits, 4)
+    m, e = f"{x:.{sig - 1}e}".split("e")
+    return f"{float(m):.{sig}g}×10{str(int(e)).translate(_SUPERSCRIPT)}"
 
 
-def format_eng(v, dimension: str = "", reference: float | None = None) -> str:
+def format_eng(v, dimension: str = "", reference: float | None = None,
+               digits: int = 6) -> str:
     """One SI value in engineering units, unit appended (``—`` for None).
 
     >>> format_eng(2.29953e9, "[pressure]"), format_eng(0.7740, "[angle]")
     ('2299.53 MPa', '44.3469 deg')
     >>> format_eng(1.9e-7, "[length]"), format_eng(3e-12, "")
     ('0.19 µm', '3×10⁻¹²')
+    >>> format_eng(2.0123e-5, "[length] ** 2 / [time]")      # kinematic viscosity
+    '20.123 mm²/s'
     """
     if v is None or (isinstance(v, float) and not math.isfinite(v)):
         return "—" if v is None else str(v)
     unit, factor = engineering_unit(dimension, v if reference is None else reference)
-    return f"{_number(v * factor)} {unit}".strip()
+    return f"{_number(v * factor, digits)} {unit}".strip()
+
+
+#: Significant digits of a tolerance (a tolerance is a judgement, not a measurement).
+TOLERANCE_DIGITS = 3
+
+
+def tolerance_text(exp, got: float | None = None) -> str:
+    """The tolerance of expectation ``exp`` as people read it: absolute tolerances and
+    bounds in the engineering unit its values are shown in (the unit the first nonzero of
+    value, max, min, ``got`` picks, as in the report's columns), tolerances to
+    :data:`TOLERANCE_DIGITS` significant digits, tiny or huge ones as ``m×10ⁿ``.
+
+    ``exp`` needs ``name``, ``dimension``, ``value``, ``rtol``, ``atol``, ``min``, ``max``
+    (SI), like :class:`ballrace.validation.schema.Expectation`.
+
+    >>> from types import SimpleNamespace as E
+    >>> tolerance_text(E(name="beta", dimension="[angle]", value=0.7, rtol=1e-6, atol=1e-9,
+    ...                  min=None, max=None))
+    '±1×10⁻⁶ rel + ±5.73×10⁻⁸ deg'
+    >>> tolerance_text(E(name="preload", dimension="[force]", value=None, rtol=0, atol=0,
+    ...                  min=100.0, max=None))
+    '>= 100 N'
+    """
+    ref = next((v for v in (exp.value, exp.max, exp.min, got)
+                if v is not None and math.isfinite(v) and v != 0), None)
+    unit = _name_unit(exp)
+
+    def eng(v, digits):
+        s = format_eng(v, exp.dimension, ref, digits)
+        return f"{s} {unit}" if unit else s
+
+    if exp.value is None:
+        parts = []
+        if exp.min is not None:
+            parts.append(f">= {eng(exp.min, 6)}")
+        if exp.max is not None:
+            parts.append(f"<= {eng(exp.max, 6)}")
+        return " and ".join(parts)
+    parts = []
+    if exp.rtol:
+        parts.append(f"±{_number(exp.rtol, TOLERANCE_DIGITS)} rel")
+    if exp.atol:
+        parts.append(f"±{eng(exp.atol, TOLERANCE_DIGITS)}")
+    return " + ".join(parts) or "exact"
 
 
 def _reference(c) -> float | None:
@@ -192,12 +254,13 @@ def _err_text(c) -> str:
     if c.error is None:
         return "—"
     if c.rel_error is not None and c.expected is not None:
-        return f"{100 * c.rel_error:+.2g} %"
+        s = _number(100 * c.rel_error, 2)
+        return f"{s if s.startswith('-') else '+' + s} %"
     unit = _name_unit(c)
     if c.expected is None:
         s = format_eng(-c.error, c.dimension, _reference(c))
     else:
-        s = format_eng(c.error, c.dimension, _reference(c))
+        s = format_eng(c.error, c.dimension, _reference(c), 3)   # a difference: 3 digits
         s = s if s.startswith("-") else "+" + s
     return f"{s} {unit}" if unit else s
 
@@ -232,17 +295,27 @@ def _tol(text: str):
     return Markup(" ").join(_nowrap(o) if o not in ("+", "and") else o for o in out)
 
 
-_E_NUMBER = re.compile(r"[^\s<>]*\d[eE][-+]\d+[^\s<>]*")
+#: Units that follow a number in prose ("1 % of P", "0.75 N m", "8 um", "68 mm^2/s").
+_PROSE_UNITS = (r"(?:%|deg(?:C|/s)?|°C?|rad(?:/s)?|[µu]rad|arcsec|[µu]m|nm|mm(?:\^2/s|²/s)?"
+                r"|m(?:/s|\^2/s|²/s)?|kN(?:/mm)?|N(?:/mm| m|·m|\*m)?|[kMG]?Pa(?:\*s|·s)?|cSt"
+                r"|lbf?|in|psi|rpm|r/min|Hz|h|s|ms|K|kg(?:/m\^3|/m³)?|g|Mrev|rev)")
+#: A number with a unit (and a relation sign before it) or a number in e-notation (whose
+#: hyphen a browser would break after): each is one unbreakable piece of prose.
+_PROSE_NUMBER = re.compile(
+    r"(?:(?:<=|>=|[<>≤≥~≈±])\s?)?(?<![\w.])[-+]?\d+(?:\.\d+)?(?:[eE][-+]?\d+)?"
+    r"\s" + _PROSE_UNITS + r"(?![\w/^²³])"
+    r"|[^\s<>]*\d[eE][-+]\d+[^\s<>]*(?:\s" + _PROSE_UNITS + r"(?![\w/^²³]))?")
 
 
 def _prose(text):
-    """Prose (reasons, notes, sources): numbers in e-notation kept whole ("1.4e-5" would
+    """Prose (reasons, notes, sources, titles, captions): a number and its unit kept
+    together ("49.3 %", "< 0.5 N"), numbers in e-notation kept whole ("1.4e-5" would
     otherwise break after its hyphen in print)."""
     from markupsafe import Markup, escape
 
     text = "" if text is None else str(text)
     out, last = [], 0
-    for m in _E_NUMBER.finditer(text):
+    for m in _PROSE_NUMBER.finditer(text):
         out.append(escape(text[last:m.start()]))
         out.append(_nowrap(m.group(0)))
         last = m.end()

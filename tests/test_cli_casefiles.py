@@ -1,7 +1,8 @@
 """docs/casefiles.md: every example on the page loads and runs (issue 11 item 14).
 
 The page holds one complete example of each case file, in this order: bearing case,
-FE case, validation case.  The examples are read from the page itself, so the page
+shaft case, FE case, validation case (the shaft example is checked in
+tests/test_trust3_output.py).  The examples are read from the page itself, so the page
 cannot drift from what the loaders accept.
 """
 import math
@@ -22,8 +23,8 @@ LBF = 4.4482216152605
 
 def _examples():
     blocks = re.findall(r"```toml\n(.*?)```", PAGE.read_text(encoding="utf-8"), re.S)
-    assert len(blocks) == 3, "docs/casefiles.md: one example per kind of case file"
-    return dict(zip(("bearing", "fem", "validation"), blocks))
+    assert len(blocks) == 4, "docs/casefiles.md: one example per kind of case file"
+    return dict(zip(("bearing", "shaft", "fem", "validation"), blocks))
 
 
 def test_bearing_example_runs_and_matches_the_shipped_209_case(tmp_path):

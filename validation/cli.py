@@ -342,9 +342,10 @@ def teach_subsurface(
         _usage(console, str(exc))
     try:
         if traction:
-            info = teach.traction_figure(q, *radii, E=e, nu=nu1, traction=traction, path=out)
+            info = teach.traction_figure(q, *radii, E=e, nu=nu1, traction=traction, path=out,
+                                         units=units)
         else:
-            info = teach.subsurface_figure(q, *radii, E=e, nu=nu1, path=out)
+            info = teach.subsurface_figure(q, *radii, E=e, nu=nu1, path=out, units=units)
     except ImportError as exc:
         typer.echo(f"error: the subsurface module is not available ({exc})", err=True)
         raise typer.Exit(code=1)

@@ -168,7 +168,10 @@ def execute_many(calc_name: str, points: list) -> tuple[list, float]:
 
 
 def compare(exp: Expectation, got) -> Comparison:
-    """Compare a computed value with an expectation."""
+    """Compare a computed value with an expectation (the tolerance text in the engineering
+    units the report shows the values in)."""
+    from ballrace.reports.html import tolerance_text
+
     g = None if got is None else float(got)
     err = rel = None
     if g is not None and math.isfinite(g):
@@ -184,7 +187,7 @@ def compare(exp: Expectation, got) -> Comparison:
             err = max(over)
     return Comparison(name=exp.name, dimension=exp.dimension, got=g, expected=exp.value,
                       minimum=exp.min, maximum=exp.max, error=err, rel_error=rel,
-                      allowed=exp.allowed, tolerance=exp.tolerance_text(), reason=exp.reason,
+                      allowed=exp.allowed, tolerance=tolerance_text(exp, g), reason=exp.reason,
                       passed=exp.check(g) if g is not None else False)
 
 
@@ -234,9 +237,14 @@ def _finish(case: Case, outputs: dict, duration: float, points=(), artifacts=())
 def _err_text(c: Comparison) -> str:
     if c.got is None or not math.isfinite(c.got):
         return f"got {c.got}"
-    if c.rel_error is not None and c.expected is not None:
-        return f"{100 * c.rel_error:+.3g} %"
-    return f"{c.error:+.4g}"
+    from ballrace.reports import html
+
+    if c.expected is None and c.error is not None:      # a bound: the excess over it
+        s = html.format_eng(c.error, c.dimension, html._reference(c))
+        unit = html._name_unit(c)
+        s = s if s.startswith("-") else "+" + s
+        return f"{s} {unit}" if unit else s
+    return html._err_text(c)
 
 
 def _result(case: Case, status: str, message: str, duration: float = 0.0, comps=(),

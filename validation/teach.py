@@ -13,23 +13,41 @@ import logging
 import math
 from pathlib import Path
 
-__all__ = ["subsurface_figure", "traction_figure", "TRACTION_SWEEP"]
+__all__ = ["subsurface_figure", "traction_figure", "title_text", "TRACTION_SWEEP"]
 
 log = logging.getLogger(__name__)
 
 
-def _save(fig, path, heading: str, load: float, c, nu: float) -> None:
+def title_text(heading: str, load: float, c, nu: float, units: str = "eng") -> str:
+    """The figure's title: the contact (Q, a, b, p0, nu) in the unit system ``units``
+    (``"eng"``, ``"si"`` or ``"us"``, as the tables of :mod:`ballrace.console`).
+
+    >>> from types import SimpleNamespace as C
+    >>> c = C(a=1.0e-3, b=0.5e-3, p_max=2.0e9)
+    >>> title_text("Subsurface stresses", 4448.2216152605, c, 0.3, "us")
+    'Subsurface stresses: Q = 1000 lbf, a = 0.03937 in, b = 0.01969 in, p0 = 290.1 ksi, nu = 0.3'
+    >>> title_text("Subsurface stresses", 2000.0, c, 0.3)
+    'Subsurface stresses: Q = 2000 N, a = 1 mm, b = 0.5 mm, p0 = 2000 MPa, nu = 0.3'
+    """
+    from ballrace.console import convert, fmt, unit_label
+
+    def q(v, kind):
+        return f"{fmt(convert(float(v), kind, units), 4)} {unit_label(kind, units)}"
+
+    return (f"{heading}: Q = {q(load, 'force')}, a = {q(c.a, 'length')}, "
+            f"b = {q(c.b, 'length')}, p0 = {q(c.p_max, 'stress')}, nu = {nu:g}")
+
+
+def _save(fig, path, heading: str, load: float, c, nu: float, units: str = "eng") -> None:
     """Title the figure with the contact (Q, a, b, p0, nu) and write it as a PNG."""
-    fig.suptitle(f"{heading}: Q = {load:g} N, a = {float(c.a) * 1e3:.3f} mm, "
-                 f"b = {float(c.b) * 1e3:.3f} mm, p0 = {float(c.p_max) / 1e9:.3f} GPa, "
-                 f"nu = {nu}")
+    fig.suptitle(title_text(heading, load, c, nu, units))
     fig.tight_layout()
     Path(path).parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=110)
 
 
 def subsurface_figure(load, rx1, ry1, rx2=math.inf, ry2=math.inf, *, E=200e9, nu=0.3,
-                      path="subsurface.png", n: int = 121) -> dict:
+                      path="subsurface.png", n: int = 121, units: str = "eng") -> dict:
     """Write the teaching figure to ``path``; returns the marked numbers (SI and over p0 / b).
 
     Parameters
@@ -42,6 +60,9 @@ def subsurface_figure(load, rx1, ry1, rx2=math.inf, ry2=math.inf, *, E=200e9, nu
         Young's modulus [Pa] and Poisson's ratio [-] of both bodies.
     path : path
         PNG to write.
+    units : str
+        Unit system of the title: ``"eng"`` (N, mm, MPa), ``"si"`` or ``"us"`` (lbf, in,
+        ksi).
     """
     import matplotlib
 
@@ -104,7 +125,7 @@ def subsurface_figure(load, rx1, ry1, rx2=math.inf, ry2=math.inf, *, E=200e9, nu
         ax.set_ylabel("depth z / b")
         ax.legend(fontsize=8)
         ax.grid(alpha=0.3)
-        _save(fig, path, "Subsurface stresses", load, c, nu)
+        _save(fig, path, "Subsurface stresses", load, c, nu, units)
     finally:
         plt.close(fig)
     log.info("wrote %s", path)
@@ -118,7 +139,8 @@ TRACTION_SWEEP = (0.0, 0.1, 0.2, 0.3, 0.4, 0.5)
 
 
 def traction_figure(load, rx1, ry1, rx2=math.inf, ry2=math.inf, *, E=200e9, nu=0.3,
-                    traction=0.3, path="subsurface-traction.png", n: int = 101) -> dict:
+                    traction=0.3, path="subsurface-traction.png", n: int = 101,
+                    units: str = "eng") -> dict:
     """Write the traction teaching figure to ``path``; returns the marked numbers.
 
     Four panels for one contact: the von Mises field in the plane y = 0 without traction
@@ -141,6 +163,9 @@ def traction_figure(load, rx1, ry1, rx2=math.inf, ry2=math.inf, *, E=200e9, nu=0
         PNG to write.
     n : int
         Grid points per side of the section.
+    units : str
+        Unit system of the title: ``"eng"`` (N, mm, MPa), ``"si"`` or ``"us"`` (lbf, in,
+        ksi).
     """
     import matplotlib
 
@@ -208,7 +233,7 @@ def traction_figure(load, rx1, ry1, rx2=math.inf, ry2=math.inf, *, E=200e9, nu=0
         ax.set_ylabel("stress / p0")
         ax.legend(fontsize=8)
         ax.grid(alpha=0.3)
-        _save(fig, path, f"Traction {mu:g}", load, c, nu)
+        _save(fig, path, f"Traction {mu:g}", load, c, nu, units)
     finally:
         plt.close(fig)
     log.info("wrote %s", path)

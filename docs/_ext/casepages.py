@@ -35,14 +35,30 @@ def merge_defaults(defaults: dict, case: dict) -> dict:
     return out
 
 
+def on_demand(case: dict) -> bool:
+    """The runner leaves this case out of its default selection (tag ``on-demand``, see
+    :data:`ballrace.validation.schema.ON_DEMAND`): it runs only when its file is named
+    with ``--cases``."""
+    from ballrace.validation.schema import ON_DEMAND
+
+    return ON_DEMAND in (case.get("tags") or ())
+
+
 def load_cases(path: Path) -> tuple[str, list[dict]]:
-    """The leading comment block of a case file and its cases, defaults merged."""
+    """The leading comment block of a case file and its cases, defaults merged.
+
+    In the comment, text in backticks and indented lines (a command to type) become
+    literals, so that ``--cases`` is never typeset as a dash."""
     text = path.read_text(encoding="utf-8")
     data = tomllib.loads(text)
     intro = []
     for line in text.splitlines():
         if line.startswith("#"):
-            intro.append(line.lstrip("#").strip())
+            body = line[1:]
+            if body.startswith("   ") and body.strip():        # "#   ballrace validate ..."
+                intro.append(f"`{body.strip()}`")
+            else:
+                intro.append(body.strip())
         elif line.strip():
             break
     defaults = data.get("defaults", {})
@@ -80,6 +96,17 @@ def _text(value) -> str:
     for ch in ("\\", "*", "`", "|", "_"):
         s = s.replace(ch, "\\" + ch)
     return s
+
+
+def _prose(value) -> str:
+    """Free text with its `backticked` spans as inline literals (commands, options)."""
+    import re
+
+    def text(p):                     # keep the spaces around a literal
+        return (" " if p[:1].isspace() else "") + _text(p) + (" " if p[-1:].isspace() else "")
+
+    parts = re.split(r"`([^`]+)`", " ".join(str(value).split()))
+    return "".join(_lit(p) if i % 2 else text(p) for i, p in enumerate(parts))
 
 
 def _table(header: list[str], rows: list[list[str]], widths: str) -> list[str]:
@@ -132,6 +159,9 @@ def case_rst(case: dict) -> list[str]:
               ("source", src_txt or "—")]
     if "fem_levels" in case:
         fields.append(("FE levels", ", ".join(_lit(x) for x in case["fem_levels"])))
+    if on_demand(case):
+        fields.append(("runs", "on demand only: ``ballrace validate`` leaves it out unless "
+                               "its file is named with ``--cases``"))
     for name, val in fields:
         out += [f":{name}: {val}"]
     out.append("")
@@ -163,15 +193,25 @@ def case_rst(case: dict) -> list[str]:
     return out
 
 
+def _count(n: int, n_on_demand: int) -> str:
+    """``"12 cases"``, ``"2 cases, on demand"``, ``"5 cases, 1 of them on demand"``."""
+    word = "case" if n == 1 else "cases"
+    if not n_on_demand:
+        return f"{n} {word}"
+    if n_on_demand == n:
+        return f"{n} {word}, on demand"
+    return f"{n} {word}, {n_on_demand} of them on demand"
+
+
 def file_rst(path: Path) -> tuple[str, int]:
     """The page of one case file and its number of cases."""
     intro, cases = load_cases(path)
     name = path.stem
-    head = f"{name} ({len(cases)} cases)"
+    head = f"{name} ({_count(len(cases), sum(map(on_demand, cases)))})"
     out = [f".. _cases-{name}:", "", head, "=" * len(head), "",
            f"Generated from ``validation/cases/{path.name}`` when the site was built.", ""]
     if intro:
-        out += [_text(intro), ""]
+        out += [_prose(intro), ""]
     out += ["Contents: " + ", ".join(f":ref:`{c.get('id')} <case-{c.get('id')}>`"
                                      for c in cases), ""]
     for c in cases:
@@ -184,11 +224,13 @@ def write_pages(srcdir: Path, cases_dir: Path = CASES_DIR) -> list[Path]:
     outdir = Path(srcdir) / OUT
     outdir.mkdir(exist_ok=True)
     files = sorted(cases_dir.glob("*.toml"))
-    written, summary, total = [], [], 0
+    written, summary, total, total_od = [], [], 0, 0
     for path in files:
         text, n = file_rst(path)
+        n_od = sum(map(on_demand, load_cases(path)[1]))
         total += n
-        summary.append((path.stem, n))
+        total_od += n_od
+        summary.append((path.stem, n, n_od))
         target = outdir / f"{path.stem}.rst"
         if not target.exists() or target.read_text(encoding="utf-8") != text:
             target.write_text(text, encoding="utf-8")   # unchanged pages keep their mtime
@@ -196,15 +238,21 @@ def write_pages(srcdir: Path, cases_dir: Path = CASES_DIR) -> list[Path]:
     for stale in outdir.glob("*.rst"):
         if stale.name != "index.rst" and stale not in written:
             stale.unlink()
+    runs = (f"``ballrace validate`` runs {total - total_od} of them; the other {total_od}, "
+            "tagged ``on-demand`` (long FE sweeps), run only when their file is named "
+            "with ``--cases``" if total_od else
+            f"``ballrace validate`` runs all {total}")
     index = ["Validation cases", "================", "",
              f"Every reference case of ``ballrace validate`` — {total} cases in "
              f"{len(files)} files — with its source, inputs, expected values and the reason "
              "for each tolerance, generated from ``validation/cases/*.toml`` at build time. "
-             "How the runner uses them: :doc:`/validation`.", "",
-             ".. list-table::", "   :header-rows: 1", "", "   * - file", "     - cases"]
-    for stem, n in summary:
-        index += [f"   * - :doc:`{stem}`", f"     - {n}"]
-    index += ["", ".. toctree::", "   :hidden:", ""] + [f"   {stem}" for stem, _ in summary]
+             f"{runs}.  How the runner uses them: :doc:`/validation`.", "",
+             ".. list-table::", "   :header-rows: 1", "", "   * - file", "     - cases",
+             "     - run by default"]
+    for stem, n, n_od in summary:
+        index += [f"   * - :doc:`{stem}`", f"     - {n}", f"     - {n - n_od}"]
+    index += ["   * - all files", f"     - {total}", f"     - {total - total_od}"]
+    index += ["", ".. toctree::", "   :hidden:", ""] + [f"   {s[0]}" for s in summary]
     text = "\n".join(index) + "\n"
     target = outdir / "index.rst"
     if not target.exists() or target.read_text(encoding="utf-8") != text:

@@ -27,7 +27,7 @@ README).  What every command shares:
 * **Output units.** Tables are printed in engineering units (mm, µm, MPa, N, deg) with the
   unit in every column header; ``--units si`` or ``--units us`` choose others.  ``--json``
   is always SI, with stable identifier keys (the attribute names of the results).
-* **Case files and flags.** ``bearing``, ``fem`` and ``validate`` read TOML case files
+* **Case files and flags.** {case_commands} read TOML case files
   (:doc:`../casefiles`); an option given beside a case file takes precedence over the
   file's value.
 * **Errors** are one line on stderr with exit code 2; ``validate`` exits 1 when a case
@@ -51,6 +51,31 @@ def _commands(group, prefix=()):
             yield path, cmd
 
 
+def case_file_commands() -> list[str]:
+    """The commands that read a case file: those with an argument or option whose help
+    names a case file (``ballrace shaft CASE``, ``validate --cases``, ...), in order."""
+    import typer
+
+    from ballrace.cli import app
+
+    out = []
+    for path, cmd in _commands(typer.main.get_command(app)):
+        if any("case file" in (getattr(p, "help", None) or "").lower()
+               for p in getattr(cmd, "params", ())):
+            out.append(" ".join(path))
+    return out
+
+
+def _and(items: list[str]) -> str:
+    """``a``, ``b`` and ``c`` as reStructuredText literals.
+
+    >>> _and(["bearing", "fem", "validate"])
+    '``bearing``, ``fem`` and ``validate``'
+    """
+    lits = [f"``{i}``" for i in items]
+    return lits[0] if len(lits) == 1 else ", ".join(lits[:-1]) + " and " + lits[-1]
+
+
 def help_text(args: list[str]) -> str:
     """``ballrace ARGS --help`` as the user sees it at 88 columns (no colour)."""
     from typer.testing import CliRunner
@@ -70,7 +95,7 @@ def page() -> str:
     from ballrace.cli import app
 
     root = typer.main.get_command(app)
-    out = [INTRO, "``ballrace``\n" + "-" * 12 + "\n\n.. code-block:: text\n\n"
+    out = [INTRO.replace("{case_commands}", _and(case_file_commands())), "``ballrace``\n" + "-" * 12 + "\n\n.. code-block:: text\n\n"
            + _indent(help_text([])) + "\n"]
     for path, _ in _commands(root):
         title = f"``ballrace {' '.join(path)}``"
