@@ -93,7 +93,7 @@ def hardness(hardness_hrc):
 
 
 # --------------------------------------------------------------------------- ISO 281:2007,
-# ISO/TS 16281 and operating clearance (issue 12)
+# ISO/TS 16281 and operating clearance
 _ISO281 = "ballrace.analytic.iso281"
 _ISO16281 = "ballrace.analytic.iso16281"
 _CLEAR = "ballrace.analytic.clearance"
