@@ -406,7 +406,23 @@ def register(app: typer.Typer) -> None:
         """
         from ballrace.analytic.casefile import CaseFileError
         from ballrace.cli import check_units, fail
+        from ballrace.validation.cli import FEM_INSTALL, _missing, missing_fem
 
+        miss = missing_fem()                  # before any work: no output folder, no solver hint
+        if miss:
+            fail(f"the FE check needs the fem extra ({', '.join(miss)} not installed): "
+                 f"{FEM_INSTALL}")
+        if render and _missing("matplotlib"):
+            typer.echo('note: the PNG renders need matplotlib (pip install "ballrace[report]"); '
+                       "this run writes result.json only", err=True)
+            render = False
+        if load is not None:                  # named as the option, not as [case].load
+            from ballrace.units import parse_quantity
+
+            try:
+                parse_quantity(load, "[force]", "--load")
+            except ValueError as exc:
+                fail(str(exc))
         check_units(units)
         _check_choice(case, "--case", CONTACTS)
         _check_choice(level, "--level", LEVELS)
