@@ -518,13 +518,22 @@ def validate_spec(model, data: dict, source: str):
         raise CaseFileError("\n".join(lines)) from None
 
 
-def array_item(table: str, k: int, name=None) -> str:
+def array_item(table: str, k: int, item=None) -> str:
     """How a message names entry ``k`` (from 0) of an array of tables: its position from 1
-    and its ``name`` when it has one, e.g. ``[[seat]] #2 ("B (floating)")``.
+    and the ``name`` the file gives it, if any, e.g. ``[[seat]] #2 ("B (floating)")``.
 
-    >>> array_item("seat", 1, "B"), array_item("load", 0)
-    ('[[seat]] #2 ("B")', '[[load]] #1')
+    ``item`` is the entry: its name as a string, its TOML table (a dict) or its validated
+    pydantic model (a default name the file does not give is left out).
+
+    >>> array_item("seat", 1, "B"), array_item("load", 0), array_item("gear", 2, {"name": "g"})
+    ('[[seat]] #2 ("B")', '[[load]] #1', '[[gear]] #3 ("g")')
     """
+    if hasattr(item, "model_fields_set"):
+        name = getattr(item, "name", "") if "name" in item.model_fields_set else ""
+    elif isinstance(item, dict):
+        name = item.get("name")
+    else:
+        name = item
     return f"[[{table}]] #{k + 1}" + (f' ("{name}")' if isinstance(name, str) and name else "")
 
 
@@ -540,7 +549,7 @@ def key_text(loc, data) -> str:
         k = loc[i + 1]
         if isinstance(nxt, list) and isinstance(k, int) and 0 <= k < len(nxt) \
                 and isinstance(nxt[k], dict):
-            item = array_item(".".join([*table, p]), k, nxt[k].get("name"))
+            item = array_item(".".join([*table, p]), k, nxt[k])
             head = f"{head}.{item}" if head else item
             table, node, i = [], nxt[k], i + 2
             continue

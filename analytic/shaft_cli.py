@@ -322,7 +322,7 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
 
     seats, C = [], []
     for k, s in enumerate(spec.seat):
-        where = array_item("seat", k, s.name)
+        where = array_item("seat", k, s)
         if s.bearing not in bearings:
             raise err(f"{where}.bearing", f"no bearing named {s.bearing!r} in [bearings] "
                       f"(have: {', '.join(bearings) or 'none'})")
@@ -360,14 +360,14 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
     order = sorted(range(len(seats)), key=lambda i: seats[i].position)
     for i, j in zip(order[:-1], order[1:]):
         if seats[j].position - seats[i].position < 1e-6 * L:
-            raise err(f"{array_item('seat', j, spec.seat[j].name)}.position",
-                      f"on top of {array_item('seat', i, spec.seat[i].name)} (x = "
+            raise err(f"{array_item('seat', j, spec.seat[j])}.position",
+                      f"on top of {array_item('seat', i, spec.seat[i])} (x = "
                       f"{seats[i].position * 1e3:g} mm); two bearings at one place are a "
                       "pair (pair = \"DB\" in [bearings])")
 
     loads = []
     for k, p in enumerate(spec.load):
-        where = array_item("load", k, p.name)
+        where = array_item("load", k, p)
         loads.append(S.PointLoad(position(p.position, f"{where}.position"),
                                  Fa=q(p.Fa, "[force]", f"{where}.Fa"),
                                  Fy=q(p.Fy, "[force]", f"{where}.Fy"),
@@ -376,7 +376,7 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
                                  Mz=q(p.Mz, "[force] * [length]", f"{where}.Mz"),
                                  name=p.name or f"load {k + 1}"))
     for k, g in enumerate(spec.gear):
-        where = array_item("gear", k, g.name)
+        where = array_item("gear", k, g)
         try:
             loads.append(S.gear_mesh(
                 position(g.position, f"{where}.position"),
@@ -391,7 +391,7 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
         except ValueError as exc:
             raise err(where, exc) from None
     for k, b in enumerate(spec.belt):
-        where = array_item("belt", k, b.name)
+        where = array_item("belt", k, b)
         try:
             loads.append(S.belt_pull(position(b.position, f"{where}.position"),
                                      q(b.force, "[force]", f"{where}.force"),
