@@ -412,10 +412,6 @@ def register(app: typer.Typer) -> None:
         if miss:
             fail(f"the FE check needs the fem extra ({', '.join(miss)} not installed): "
                  f"{FEM_INSTALL}")
-        if render and _missing("matplotlib"):
-            typer.echo('note: the PNG renders need matplotlib (pip install "ballrace[report]"); '
-                       "this run writes result.json only", err=True)
-            render = False
         if load is not None:                  # named as the option, not as [case].load
             from ballrace.units import parse_quantity
 
@@ -441,6 +437,10 @@ def register(app: typer.Typer) -> None:
                 n_sizes = tuple(int(s) for s in sizes.split(","))
             except ValueError:
                 fail(f"--sizes must be comma-separated integers, e.g. 4,6,8; got {sizes!r}")
+        if render and case_file != "convergence" and _missing("matplotlib"):
+            typer.echo('note: the PNG renders need matplotlib (pip install "ballrace[report]"); '
+                       "this run writes result.json only", err=True)
+            render = False
         overrides = dict(contact=case, load=load, level=level, mode=mode, gap=gap, solver=solver,
                          traction=traction, traction_pressure=traction_pressure)
         try:
