@@ -44,16 +44,19 @@ _BARE = {"[length] ** 2 / [time]": "mm^2/s", "[temperature]": "degC", "[pressure
          "[length]": "mm", "1 / [time]": "rpm", "[angle]": "deg"}
 
 
-def example_unit(dimension: str, name: str = "") -> str:
+def example_unit(dimension: str, name: str = "", value=None) -> str:
     """The unit to suggest after a bare number of ``dimension`` for the field ``name``
-    (a Young's modulus ``E`` in GPa, other pressures in MPa, lengths in mm, forces in N).
+    (a Young's modulus ``E`` in GPa, or in Pa when ``value`` is already pascals; other
+    pressures in MPa, lengths in mm, forces in N).
 
-    >>> example_unit("[force]", "load"), example_unit("[pressure]", "--E1")
+    >>> example_unit("[force]", "load"), example_unit("[pressure]", "--E1", 200)
     ('N', 'GPa')
+    >>> example_unit("[pressure]", "E", 2e11)
+    'Pa'
     """
     key = name.rsplit(".", 1)[-1].lstrip("-").rstrip("12")
     if dimension == "[pressure]" and key in ("E", "modulus"):
-        return "GPa"
+        return "Pa" if value is not None and abs(value) >= 1e4 else "GPa"
     return _BARE.get(dimension, _SI.get(dimension, ""))
 
 
@@ -106,7 +109,7 @@ def parse_quantity(text, dimension: str, name: str, *, allow_inf: bool = False) 
         if dimension in ("", "dimensionless"):
             return float(text)
         raise ValueError(f"{name}: give a unit with the number, e.g. "
-                         f"'{text:g} {example_unit(dimension, name)}'")
+                         f"'{text:g} {example_unit(dimension, name, text)}'")
     s = str(text).strip()
     if s.lower() in ("inf", "+inf", "-inf", "infinity"):
         if not allow_inf:

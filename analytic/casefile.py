@@ -511,7 +511,7 @@ def validate_spec(model, data: dict, source: str):
                     and not isinstance(x, bool):
                 # a bare number where a quantity string is expected: say how to write it
                 msg = (f"give the value with its unit as a string, e.g. "
-                       f"\"{x:g} {_unit_example(loc)}\"; got {x!r}")
+                       f"\"{x:g} {_unit_example(loc, x)}\"; got {x!r}")
             if err.get("type") in ("float_parsing", "int_parsing") and isinstance(x, str):
                 msg = _number_hint(loc, x, err["type"])
             lines.append(f"{source}: {key}: {msg}")
@@ -591,15 +591,27 @@ _UNIT_BY_KEY = {
 }
 
 
-def _unit_example(loc) -> str:
-    """The unit to suggest after a bare number at the error location ``loc``."""
+def _unit_example(loc, x: float = 1.0) -> str:
+    """The unit to suggest after the bare number ``x`` at the error location ``loc``: the
+    key's usual unit, or the one the number's size shows it is in (``E = 2e11`` is
+    pascals, ``diametral_clearance = 0.015`` millimetres)."""
     keys = [p for p in loc if isinstance(p, str)]
     last = keys[-1] if keys else ""
+    x = abs(float(x))
     if "housing_stiffness" in keys and last in ("axial", "radial"):
         return "N/um"
     if last == "viscosity" and "lubricant" in keys:
-        return "Pa*s"                          # [lubricant]: dynamic viscosity
-    return _UNIT_BY_KEY.get(last, "mm")        # the other keys are lengths
+        return "Pa*s" if x < 1 else "mPa*s"    # [lubricant]: dynamic viscosity
+    unit = _UNIT_BY_KEY.get(last, "mm")        # the other keys are lengths
+    if unit == "GPa" and x >= 1e4:
+        return "Pa"
+    if unit == "1/GPa" and x < 1e-3:
+        return "1/Pa"
+    if unit == "um" and 0 < x < 1:
+        return "mm"
+    if unit == "kN" and x >= 1e3:
+        return "N"
+    return unit
 
 
 def _number_hint(loc, text: str, kind: str) -> str:
