@@ -408,10 +408,6 @@ def register(app: typer.Typer) -> None:
         from ballrace.cli import check_units, fail
         from ballrace.validation.cli import FEM_INSTALL, _missing, missing_fem
 
-        miss = missing_fem()                  # before any work: no output folder, no solver hint
-        if miss:
-            fail(f"the FE check needs the fem extra ({', '.join(miss)} not installed): "
-                 f"{FEM_INSTALL}")
         if load is not None:                  # named as the option, not as [case].load
             from ballrace.units import parse_quantity
 
@@ -437,10 +433,6 @@ def register(app: typer.Typer) -> None:
                 n_sizes = tuple(int(s) for s in sizes.split(","))
             except ValueError:
                 fail(f"--sizes must be comma-separated integers, e.g. 4,6,8; got {sizes!r}")
-        if render and case_file != "convergence" and _missing("matplotlib"):
-            typer.echo('note: the PNG renders need matplotlib (pip install "ballrace[report]"); '
-                       "this run writes result.json only", err=True)
-            render = False
         overrides = dict(contact=case, load=load, level=level, mode=mode, gap=gap, solver=solver,
                          traction=traction, traction_pressure=traction_pressure)
         try:
@@ -450,6 +442,14 @@ def register(app: typer.Typer) -> None:
                 fc = parse_fe_case({}, "command line", **overrides)
         except CaseFileError as exc:
             fail(str(exc))
+        miss = missing_fem()      # options checked, no work done: no output folder, no solver hint
+        if miss:
+            fail(f"the FE check needs the fem extra ({', '.join(miss)} not installed): "
+                 f"{FEM_INSTALL}")
+        if render and case_file != "convergence" and _missing("matplotlib"):
+            typer.echo('note: the PNG renders need matplotlib (pip install "ballrace[report]"); '
+                       "this run writes result.json only", err=True)
+            render = False
         from ballrace.console import output_folder
 
         try:

@@ -251,12 +251,9 @@ def test_key_text_of_nested_and_array_tables():
 
 
 # ------------------------------------------------------------------------------ fem
-def test_fem_load_error_names_the_option(monkeypatch):
+def test_fem_load_error_names_the_option():
     """fem --load abc names --load (not the case file's [case].load), with a force example;
-    checked whether or not the fem extra is installed here."""
-    import ballrace.validation.cli as vcli
-
-    monkeypatch.setattr(vcli, "missing_fem", lambda: [])
+    the options are checked before the fem extra is looked for."""
     res = runner.invoke(_app(), ["fem", "--load", "abc"])
     assert res.exit_code == 2
     assert res.stderr == ("error: --load: cannot parse 'abc' as a quantity: it does not start "

@@ -52,6 +52,14 @@ def test_fem_without_gmsh_alone_names_gmsh(tmp_path):
     assert not (tmp_path / "ballrace-out").exists()
 
 
+def test_fem_checks_its_options_before_the_extra(tmp_path):
+    """A bad option is named as such with or without the extra (the extra's line comes
+    after the options are checked and before any work)."""
+    r = run_without(FEM, ["fem", "--case", "inner", "--load", "-5 N"], tmp_path)
+    assert r.returncode == 2 and "load must be > 0" in r.stderr, r.stderr
+    assert "fem extra" not in r.stderr and not (tmp_path / "ballrace-out").exists()
+
+
 def test_fem_help_needs_no_extra(tmp_path):
     r = run_without(FEM + REPORT, ["fem", "--help"], tmp_path)
     assert r.returncode == 0 and "--load" in r.stdout, r.stderr
