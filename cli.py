@@ -141,21 +141,26 @@ def contact(
     units: Annotated[str, typer.Option("--units", help=UNITS_HELP)] = "eng",
 ):
     """Elliptical Hertz contact of two bodies, with the subsurface shear stresses."""
-    from ballrace import Material
     from ballrace.analytic import hertz
 
     check_units(units)
-    try:
-        q = parse_quantity(load, "[force]", "load")
-        radii = [parse_quantity(v, "[length]", n, allow_inf=True)
-                 for n, v in (("rx1", rx1), ("ry1", ry1), ("rx2", rx2), ("ry2", ry2))]
-        m1 = Material(E=parse_quantity(e1, "[pressure]", "E1"), nu=nu1)
-        m2 = Material(E=parse_quantity(e2, "[pressure]", "E2") if e2 else m1.E,
-                      nu=nu1 if nu2 is None else nu2)
-        import warnings
+    import warnings
 
+    from ballrace.units import plausible
+
+    try:
+        q = parse_quantity(load, "[force]", "--load")
+        radii = []
+        for n, v in (("--rx1", rx1), ("--ry1", ry1), ("--rx2", rx2), ("--ry2", ry2)):
+            radii.append(parse_quantity(v, "[length]", n, allow_inf=True))
+            plausible(radii[-1], v, n, "radius")        # "6.35 m" for "6.35 mm": a warning
+        m1 = _material(e1, nu1, "--E1", "--nu1")
+        m2 = m1 if e2 is None and nu2 is None else _material(
+            e2 or e1, nu1 if nu2 is None else nu2, "--E2" if e2 else "--E1",
+            "--nu2" if nu2 is not None else "--nu1")
         with warnings.catch_warnings():       # a/R beyond Hertz: said in the table instead
-            warnings.simplefilter("ignore", UserWarning)
+            warnings.filterwarnings("ignore", message=r"point_contact: a / R",
+                                    category=UserWarning)
             c = hertz.point_contact(q, *radii, m1, m2, method=method)
     except (ValueError, TypeError) as exc:
         fail(str(exc))
@@ -213,6 +218,26 @@ def contact(
                           [(label, val, k) for _, label, val, k in rows])], units)
     if note:
         con.print(literal(f"note: {note}"))
+
+
+def _material(e_text: str, nu: float, e_opt: str, nu_opt: str):
+    """A Material from the ``--E1``/``--nu1`` (or ``--E2``/``--nu2``) options; errors and
+    the modulus warning name the option and quote what was typed."""
+    import warnings
+
+    from ballrace import Material
+    from ballrace.units import plausible
+
+    E = parse_quantity(e_text, "[pressure]", e_opt)
+    plausible(E, e_text, e_opt, "modulus")          # "200 MPa" for "200 GPa": a warning
+    try:
+        with warnings.catch_warnings():             # the library's warning speaks of Pa;
+            warnings.filterwarnings("ignore", message=r".*moduli are in pascals")  # said above
+            return Material(E=E, nu=nu)
+    except ValueError as exc:
+        opt = nu_opt if str(exc).startswith("nu") else e_opt
+        hint = " (steel: 0.3)" if opt == nu_opt else ""
+        raise ValueError(f"{opt}: {exc}{hint}") from None
 
 
 def fail(message: str) -> None:

@@ -255,6 +255,16 @@ def output_folder(folder, option: str = "--out"):
 
 
 def _writable(folder) -> bool:
+    """Whether a file can be created in ``folder``: tried, not asked (``os.access`` says yes
+    to root everywhere, also where the file system then refuses, e.g. /sys)."""
     import os
+    import tempfile
 
-    return os.access(folder, os.W_OK | os.X_OK)
+    if not os.access(folder, os.W_OK | os.X_OK):
+        return False
+    try:
+        with tempfile.TemporaryFile(dir=folder):
+            pass
+    except OSError:
+        return False
+    return True

@@ -12,7 +12,7 @@ import warnings
 
 import numpy as np
 
-__all__ = ["modulus", "length"]
+__all__ = ["modulus", "length", "depth"]
 
 #: Young's moduli outside this range [Pa] are not bearing materials (elastomers start near
 #: 1e6 Pa, polymers 1e9 Pa, steel 2e11 Pa, diamond 1.2e12 Pa).
@@ -92,3 +92,29 @@ def viscosity(nu, name: str):
         raise ValueError(f"{name} must be a kinematic viscosity in [{lo:g}, {hi:g}] [m^2/s]; "
                          f"got {x:g}{hint}")
     return np.asarray(nu, float)
+
+
+#: Depths below a contact beyond this many of its larger semi-axis are warned about: the
+#: stressed zone reaches a few semi-axes (the maxima lie within one), and 100 of them is
+#: where a depth typed in millimetres (z = 0.5 for 0.5 mm) lands for bearing contacts.
+DEPTH_FACTOR = 100.0
+
+
+def depth(z, semi_axis, name: str = "z", stacklevel: int = 3) -> None:
+    """Warn when a depth [m] is more than :data:`DEPTH_FACTOR` times the contact's larger
+    semi-axis ``semi_axis`` [m] (0 or non-finite semi-axes are skipped)."""
+    try:
+        zz, aa = np.broadcast_arrays(np.asarray(z, float), np.asarray(semi_axis, float))
+    except ValueError:                       # the callers report shapes that do not fit
+        return
+    ok = np.isfinite(zz) & np.isfinite(aa) & (aa > 0)
+    if not np.any(ok):
+        return
+    ratio = np.where(ok, zz / np.where(ok, aa, 1.0), 0.0)
+    i = int(np.argmax(ratio))
+    r = float(ratio.flat[i])
+    if r > DEPTH_FACTOR:
+        zi, ai = float(zz.flat[i]), float(aa.flat[i])
+        _warn(f"{name} = {zi:g} m is {r:.3g} times the contact's semi-axis ({ai:.3g} m), far "
+              f"below its stressed zone (a few semi-axes deep); depths are in metres [m] - "
+              f"were millimetres given? ({zi:g} mm is {zi * 1e-3:g} m)", stacklevel)

@@ -74,6 +74,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import math
+import re
 import tomllib
 from dataclasses import dataclass
 from pathlib import Path
@@ -332,7 +333,7 @@ def _speed(text: str, where: str) -> float:
 
     s = str(text).strip()
     try:
-        check_form(s, where)          # "4000,5 rpm" is 40005 rpm to pint
+        check_form(s, where, "4000 rpm")     # "4000,5 rpm" is 40005 rpm to pint
     except ValueError as exc:
         raise CaseFileError(str(exc)) from None
     low = s.lower()
@@ -390,10 +391,12 @@ def _temperature(text, where: str) -> float:
     return T
 
 
-def _positive(value: float, text, where: str) -> float:
-    """``value`` if > 0, else an error quoting what the file says (not the SI float)."""
+def _positive(value: float, text, where: str, example: str = "") -> float:
+    """``value`` if > 0, else an error quoting what the file says (not the SI float) and a
+    valid ``example``."""
     if not value > 0:
-        raise CaseFileError(f"{where} must be > 0; got {text!r}")
+        raise CaseFileError(f"{where} must be > 0; got {text!r}"
+                            + (f" (e.g. \"{example}\")" if example else ""))
     return value
 
 
@@ -429,16 +432,17 @@ def _iso_inputs(spec, brg, source, q):
                                     f"temperature) is given, so {' and '.join(given)} must not "
                                     f"be: give viscosity, or nu40, nu100 and temperature")
             out["oil_viscosity"] = _positive(q(oil.viscosity, visc_dim, "[oil].viscosity"),
-                                             oil.viscosity, f"{source}: [oil].viscosity")
+                                             oil.viscosity, f"{source}: [oil].viscosity",
+                                             "20 mm^2/s")
         else:
             missing = [k for k in ("nu40", "nu100", "temperature") if getattr(oil, k) is None]
             if missing:
                 raise CaseFileError(f"{source}: [oil]: missing {', '.join(missing)} (or give "
                                     "viscosity at the operating temperature)")
             d = dict(nu40=_positive(q(oil.nu40, visc_dim, "[oil].nu40"), oil.nu40,
-                                    f"{source}: [oil].nu40"),
+                                    f"{source}: [oil].nu40", "68 mm^2/s"),
                      nu100=_positive(q(oil.nu100, visc_dim, "[oil].nu100"), oil.nu100,
-                                     f"{source}: [oil].nu100"),
+                                     f"{source}: [oil].nu100", "8.7 mm^2/s"),
                      temperature=_temperature(oil.temperature, f"{source}: [oil].temperature"))
             try:
                 out["oil_viscosity"] = float(iso281.operating_viscosity(**d))
@@ -447,14 +451,12 @@ def _iso_inputs(spec, brg, source, q):
             out["oil"] = d
     f = spec.fits
     if f is not None:
-        import ballrace
-
         mats = {}
         for which in ("shaft", "housing"):
             m = getattr(f, which)
             if m is not None:
-                mats[which] = ballrace.Material(E=q(m.E, "[pressure]", f"[fits.{which}].E"),
-                                                nu=m.nu, name=m.name or which)
+                mats[which] = material(E=q(m.E, "[pressure]", f"[fits.{which}].E"),
+                                       nu=m.nu, name=m.name or which)
         exp = {k: q(getattr(f, k), "1 / [temperature]", f"[fits].{k}")
                for k in ("shaft_expansion", "housing_expansion")}
         T = {k: _temperature(getattr(f, k), f"{source}: [fits].{k}")
@@ -485,8 +487,10 @@ def parse_inf(q, value, where):
 def validate_spec(model, data: dict, source: str):
     """``model.model_validate(data)``; pydantic's errors as one :class:`CaseFileError`.
 
-    Each error becomes a line ``SOURCE: [table].key: message`` (shared by the bearing and
-    FE case-file loaders).
+    Each error becomes a line ``SOURCE: [table].key: message`` (shared by the bearing,
+    shaft and FE case-file loaders); an entry of an array of tables is named by its
+    position from 1 and its ``name`` (``[[seat]] #2 ("B").position``, see
+    :func:`array_item`).
     """
     from pydantic import ValidationError
 
@@ -495,36 +499,137 @@ def validate_spec(model, data: dict, source: str):
     except ValidationError as exc:
         lines = []
         for err in exc.errors():
-            loc = [str(p) for p in err["loc"]]
-            key = f"[{loc[0]}]." + ".".join(loc[1:]) if len(loc) > 1 else (loc[0] if loc else "")
+            loc = list(err["loc"])
+            key = key_text(loc, data)
             msg = err["msg"]
             x = err.get("input")
             le = (err.get("ctx") or {}).get("le")
             if (err.get("type") == "less_than_equal" and isinstance(x, (int, float))
                     and le is not None and float(le) <= 1.0 < float(x) <= 100.0):
                 msg += (f"; a fraction, not a percentage: {float(x) / 100:g} for {x:g} %")
-            if err.get("type") == "string_type" and isinstance(err.get("input"),
-                                                               (int, float)):
+            if err.get("type") == "string_type" and isinstance(x, (int, float)) \
+                    and not isinstance(x, bool):
                 # a bare number where a quantity string is expected: say how to write it
                 msg = (f"give the value with its unit as a string, e.g. "
-                       f"\"{err['input']} {_unit_example(loc[-1] if loc else '')}\"; got "
-                       f"{err['input']!r}")
+                       f"\"{x:g} {_unit_example(loc, x)}\"; got {x!r}")
+            if err.get("type") in ("float_parsing", "int_parsing") and isinstance(x, str):
+                msg = _number_hint(loc, x, err["type"])
             lines.append(f"{source}: {key}: {msg}")
         raise CaseFileError("\n".join(lines)) from None
 
 
-#: Units to suggest for a bare number, by the key's name (first match wins).
-_UNIT_HINTS = (("temperature", "degC"), ("viscosity", "mm^2/s"), ("nu40", "mm^2/s"),
-               ("nu100", "mm^2/s"), ("speed", "rpm"), ("angle", "deg"), ("load", "N"),
-               ("radial", "N"), ("axial", "N"), ("interference", "um"), ("clearance", "um"),
-               ("roughness", "um"), ("expansion", "1/K"), ("E", "GPa"), ("", "mm"))
+def array_item(table: str, k: int, item=None) -> str:
+    """How a message names entry ``k`` (from 0) of an array of tables: its position from 1
+    and the ``name`` the file gives it, if any, e.g. ``[[seat]] #2 ("B (floating)")``.
+
+    ``item`` is the entry: its name as a string, its TOML table (a dict) or its validated
+    pydantic model (a default name the file does not give is left out).
+
+    >>> array_item("seat", 1, "B"), array_item("load", 0), array_item("gear", 2, {"name": "g"})
+    ('[[seat]] #2 ("B")', '[[load]] #1', '[[gear]] #3 ("g")')
+    """
+    if hasattr(item, "model_fields_set"):
+        name = getattr(item, "name", "") if "name" in item.model_fields_set else ""
+    elif isinstance(item, dict):
+        name = item.get("name")
+    else:
+        name = item
+    return f"[[{table}]] #{k + 1}" + (f' ("{name}")' if isinstance(name, str) and name else "")
 
 
-def _unit_example(key: str) -> str:
-    for part, unit in _UNIT_HINTS:
-        if part in key or part == "":
-            return unit
-    return "mm"                                                      # pragma: no cover
+def key_text(loc, data) -> str:
+    """``[table].key`` of a pydantic error location ``loc`` in the document ``data``:
+    nested tables joined (``[bearings.b6208].n_balls``), an entry of an array of tables
+    named by :func:`array_item`, a plain array's element by its index (``sections[0]``).
+    """
+    node, table, head, i = data, [], "", 0
+    while i < len(loc) - 1:
+        p = loc[i]
+        nxt = node.get(p) if isinstance(node, dict) and isinstance(p, str) else None
+        k = loc[i + 1]
+        if isinstance(nxt, list) and isinstance(k, int) and 0 <= k < len(nxt) \
+                and isinstance(nxt[k], dict):
+            item = array_item(".".join([*table, p]), k, nxt[k])
+            head = f"{head}.{item}" if head else item
+            table, node, i = [], nxt[k], i + 2
+            continue
+        if isinstance(nxt, dict):
+            table.append(p)
+            node, i = nxt, i + 1
+            continue
+        break
+    if not head and not table and i < len(loc) - 1 and isinstance(loc[i], str):
+        if isinstance(loc[i + 1], int):        # not in the document: a table by its name
+            head, i = array_item(loc[i], loc[i + 1]), i + 2
+        else:
+            table, i = [loc[i]], i + 1
+    if table:
+        head = f"{head}.{'.'.join(table)}" if head else f"[{'.'.join(table)}]"
+    rest = ""
+    for p in loc[i:]:
+        rest += f"[{p}]" if isinstance(p, int) else (f".{p}" if rest or head else str(p))
+    return head + rest
+
+
+#: Units to suggest for a bare number, by the key's name (last key first, then the tables
+#: it sits in): the dimension each key is read with.
+_UNIT_BY_KEY = {
+    "E": "GPa", "density": "kg/m^3", "speed": "rpm", "viscosity": "mm^2/s",
+    "pressure_viscosity": "1/GPa", "nu40": "mm^2/s", "nu100": "mm^2/s",
+    "temperature": "degC", "inner_temperature": "degC", "outer_temperature": "degC",
+    "reference_temperature": "degC", "shaft_temperature_change": "K",
+    "housing_temperature_change": "K",
+    "load": "N", "radial": "N", "axial": "N", "force": "N", "tangential_force": "N",
+    "preload": "N", "spring_preload": "N", "Fa": "N", "Fy": "N", "Fz": "N",
+    "dynamic_rating": "kN", "fatigue_limit": "kN", "My": "N*m", "Mz": "N*m",
+    "tilt": "N*m", "free_contact_angle": "deg", "nominal_contact_angle": "deg",
+    "contact_angle": "deg", "pressure_angle": "deg", "helix_angle": "deg",
+    "mesh_azimuth": "deg", "azimuth": "deg", "shaft_expansion": "1/K",
+    "housing_expansion": "1/K", "thermal_expansion": "1/K", "shaft_interference": "um",
+    "housing_interference": "um", "diametral_clearance": "um", "clearance": "um",
+    "roughness_race": "um", "roughness_ball": "um", "offset": "um",
+}
+
+
+def _unit_example(loc, x: float = 1.0) -> str:
+    """The unit to suggest after the bare number ``x`` at the error location ``loc``: the
+    key's usual unit, or the one the number's size shows it is in (``E = 2e11`` is
+    pascals, ``diametral_clearance = 0.015`` millimetres)."""
+    keys = [p for p in loc if isinstance(p, str)]
+    last = keys[-1] if keys else ""
+    x = abs(float(x))
+    if "housing_stiffness" in keys and last in ("axial", "radial"):
+        return "N/um"
+    if last == "viscosity" and "lubricant" in keys:
+        return "Pa*s" if x < 1 else "mPa*s"    # [lubricant]: dynamic viscosity
+    unit = _UNIT_BY_KEY.get(last, "mm")        # the other keys are lengths
+    if unit == "GPa" and x >= 1e4:
+        return "Pa"
+    if unit == "1/GPa" and x < 1e-3:
+        return "1/Pa"
+    if unit == "um" and 0 < x < 1:
+        return "mm"
+    if unit == "kN" and x >= 1e3:
+        return "N"
+    return unit
+
+
+def _number_hint(loc, text: str, kind: str) -> str:
+    """The message for text where a plain number is expected (``reliability = "99 %"``)."""
+    keys = [p for p in loc if isinstance(p, str)]
+    key = keys[-1] if keys else "value"
+    s = text.strip()
+    pct = re.fullmatch(r"([+-]?\d+(?:\.\d*)?|\.\d+)\s*(%|percent)", s)
+    if pct and kind == "float_parsing":
+        v = float(pct.group(1))
+        return (f"give a fraction as a plain number, not a percentage: {key} = {v / 100:g} "
+                f"for {v:g} %; got {text!r}")
+    what = "an integer" if kind == "int_parsing" else "a number"
+    example = {"reliability": "0.99", "n_balls": "9", "f_inner": "0.52",
+               "f_outer": "0.52", "nu": "0.3", "hardness_hrc": "60", "elements": "40",
+               "contamination": "0.5", "fraction": "0.5"}.get(key, "1" if kind ==
+                                                              "int_parsing" else "0.5")
+    return f"give {what} without quotes or unit, e.g. {key} = {example}; got {text!r}"
 
 
 def quantity_reader(source: str):
@@ -536,11 +641,44 @@ def quantity_reader(source: str):
         if value is None:
             return None
         try:
-            return parse_quantity(value, dim, where)
+            v = parse_quantity(value, dim, where)
         except ValueError as exc:
             raise CaseFileError(f"{source}: {exc}") from None
+        if dim == "[pressure]" and where.rsplit(".", 1)[-1] == "E":
+            modulus_slip(v, value, f"{source}: {where}")
+        return v
 
     return q
+
+
+def modulus_slip(E: float, text, where: str) -> None:
+    """Warn, naming ``where`` and quoting ``text``, when a Young's modulus [Pa] is not that
+    of a rolling-contact material (``E = "200 MPa"`` for steel's 200 GPa): before any
+    calculation, so that the load distribution's complaint is not the first word."""
+    from ballrace.units import plausible
+
+    plausible(E, text, where, "modulus", stacklevel=3)
+
+
+def material(**kw):
+    """:class:`ballrace.Material` of a case file's values, whose modulus
+    :func:`quantity_reader` has checked already (the library's warning, which speaks of
+    pascals typed as numbers, would repeat it)."""
+    import warnings
+
+    import ballrace
+
+    with warnings.catch_warnings():
+        warnings.filterwarnings("ignore", message=r".*moduli are in pascals")
+        return ballrace.Material(**kw)
+
+
+def _kind_hint(data: dict, source: str):
+    """A one-line pointer when ``data`` is a shaft case file, not a bearing case file."""
+    if data.get("kind") == "shaft" or "shaft" in data or "seat" in data:
+        return (f"{source}: this is a shaft case file (kind = \"shaft\": bearings on a shaft), "
+                f"not a bearing case file; run it with `ballrace shaft {source}`")
+    return None
 
 
 def parse_case(data: dict, source: str = "<case>") -> BearingCase:
@@ -575,8 +713,9 @@ def parse_case(data: dict, source: str = "<case>") -> BearingCase:
     ...
     ballrace.analytic.casefile.CaseFileError: <case>: [bearing].ball_diameter: Field required...
     """
-    import ballrace
-
+    hint = _kind_hint(data, source)
+    if hint:
+        raise CaseFileError(hint)
     spec = validate_spec(_models(), data, source)
     q = quantity_reader(source)
 
@@ -591,7 +730,7 @@ def parse_case(data: dict, source: str = "<case>") -> BearingCase:
                 kw["density"] = q(m.density, "[mass] / [length] ** 3",
                                   f"[materials.{which}].density")
             try:
-                mats[which] = ballrace.Material(**kw)
+                mats[which] = material(**kw)
             except ValueError as exc:
                 raise CaseFileError(f"{source}: [materials.{which}]: {exc}") from None
     if (b.diametral_clearance is None) == (b.free_contact_angle is None):
@@ -605,7 +744,8 @@ def parse_case(data: dict, source: str = "<case>") -> BearingCase:
     Fa = q(spec.loads.axial, "[force]", "[loads].axial")
     for name, v in (("radial", Fr), ("axial", Fa)):
         if v < 0:
-            raise CaseFileError(f"{source}: [loads].{name} must be >= 0 N; got {v!r}")
+            raise CaseFileError(f"{source}: [loads].{name} must be >= 0 N; got "
+                                f"{getattr(spec.loads, name)!r} (e.g. \"8900 N\")")
     if Fr == 0 and Fa == 0:
         raise CaseFileError(f"{source}: [loads]: radial and axial are both zero")
     ecc = q(spec.loads.eccentricity, "[length]", "[loads].eccentricity")

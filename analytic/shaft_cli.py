@@ -256,8 +256,8 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
     """
     import ballrace
     from ballrace.analytic import shaft as S
-    from ballrace.analytic.casefile import (CaseFileError, _speed, bearing_from_keys,
-                                            quantity_reader, validate_spec)
+    from ballrace.analytic.casefile import (CaseFileError, _speed, array_item,
+                                            bearing_from_keys, quantity_reader, validate_spec)
     from ballrace.analytic.duplex import DuplexPair
 
     hint = _kind_hint(data, source)
@@ -322,7 +322,7 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
 
     seats, C = [], []
     for k, s in enumerate(spec.seat):
-        where = f"[[seat]][{k}]"
+        where = array_item("seat", k, s)
         if s.bearing not in bearings:
             raise err(f"{where}.bearing", f"no bearing named {s.bearing!r} in [bearings] "
                       f"(have: {', '.join(bearings) or 'none'})")
@@ -352,19 +352,22 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
             kw["housing_stiffness"] = [min(v, big) for v in (ka, kr, kr, kt, kt)]
         try:
             seats.append(S.Seat(position(s.position, f"{where}.position"), brg, **kw))
+        except CaseFileError:
+            raise
         except (ValueError, TypeError) as exc:
             raise err(where, exc) from None
         C.append(ratings[s.bearing])
     order = sorted(range(len(seats)), key=lambda i: seats[i].position)
     for i, j in zip(order[:-1], order[1:]):
         if seats[j].position - seats[i].position < 1e-6 * L:
-            raise err(f"[[seat]][{j}].position", f"on top of [[seat]][{i}] (x = "
+            raise err(f"{array_item('seat', j, spec.seat[j])}.position",
+                      f"on top of {array_item('seat', i, spec.seat[i])} (x = "
                       f"{seats[i].position * 1e3:g} mm); two bearings at one place are a "
                       "pair (pair = \"DB\" in [bearings])")
 
     loads = []
     for k, p in enumerate(spec.load):
-        where = f"[[load]][{k}]"
+        where = array_item("load", k, p)
         loads.append(S.PointLoad(position(p.position, f"{where}.position"),
                                  Fa=q(p.Fa, "[force]", f"{where}.Fa"),
                                  Fy=q(p.Fy, "[force]", f"{where}.Fy"),
@@ -373,7 +376,7 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
                                  Mz=q(p.Mz, "[force] * [length]", f"{where}.Mz"),
                                  name=p.name or f"load {k + 1}"))
     for k, g in enumerate(spec.gear):
-        where = f"[[gear]][{k}]"
+        where = array_item("gear", k, g)
         try:
             loads.append(S.gear_mesh(
                 position(g.position, f"{where}.position"),
@@ -383,14 +386,18 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
                 helix_angle=q(g.helix_angle, "[angle]", f"{where}.helix_angle"),
                 mesh_azimuth=q(g.mesh_azimuth, "[angle]", f"{where}.mesh_azimuth"),
                 name=g.name))
+        except CaseFileError:
+            raise
         except ValueError as exc:
             raise err(where, exc) from None
     for k, b in enumerate(spec.belt):
-        where = f"[[belt]][{k}]"
+        where = array_item("belt", k, b)
         try:
             loads.append(S.belt_pull(position(b.position, f"{where}.position"),
                                      q(b.force, "[force]", f"{where}.force"),
                                      q(b.azimuth, "[angle]", f"{where}.azimuth"), name=b.name))
+        except CaseFileError:
+            raise
         except ValueError as exc:
             raise err(where, exc) from None
 
@@ -407,7 +414,7 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
                   "needs [shaft].thermal_expansion (e.g. \"11.5e-6 1/K\")")
     duty = []
     for k, d in enumerate(spec.duty):
-        w = _speed(d.speed, f"{source}: [[duty]][{k}].speed")
+        w = _speed(d.speed, f"{source}: {array_item('duty', k)}.speed")
         duty.append((d.fraction, w * 60 / (2 * math.pi), d.load_factor))
     if duty and abs(sum(d[0] for d in duty) - 1.0) > 1e-6:
         raise err("[[duty]]", f"the fractions must sum to 1; got "
@@ -441,6 +448,8 @@ def _fits(f, brg, shaft, x, q, source, where):
             shaft_bore=float(shaft.diameters(x)[1]), shaft_material=shaft.material,
             housing_diameter=parse_inf(q, f.housing_diameter, f"{w}.housing_diameter"),
             **T, **exp)
+    except CaseFileError:
+        raise
     except ValueError as exc:
         raise CaseFileError(f"{source}: {w}: {exc}") from None
 

@@ -406,7 +406,15 @@ def register(app: typer.Typer) -> None:
         """
         from ballrace.analytic.casefile import CaseFileError
         from ballrace.cli import check_units, fail
+        from ballrace.validation.cli import FEM_INSTALL, _missing, missing_fem
 
+        if load is not None:                  # named as the option, not as [case].load
+            from ballrace.units import parse_quantity
+
+            try:
+                parse_quantity(load, "[force]", "--load")
+            except ValueError as exc:
+                fail(str(exc))
         check_units(units)
         _check_choice(case, "--case", CONTACTS)
         _check_choice(level, "--level", LEVELS)
@@ -434,6 +442,14 @@ def register(app: typer.Typer) -> None:
                 fc = parse_fe_case({}, "command line", **overrides)
         except CaseFileError as exc:
             fail(str(exc))
+        miss = missing_fem()      # options checked, no work done: no output folder, no solver hint
+        if miss:
+            fail(f"the FE check needs the fem extra ({', '.join(miss)} not installed): "
+                 f"{FEM_INSTALL}")
+        if render and case_file != "convergence" and _missing("matplotlib"):
+            typer.echo('note: the PNG renders need matplotlib (pip install "ballrace[report]"); '
+                       "this run writes result.json only", err=True)
+            render = False
         from ballrace.console import output_folder
 
         try:

@@ -538,15 +538,15 @@ Fy = "1 kN"
 
 
 @pytest.mark.parametrize("kw, match", [
-    (dict(x1="250 mm"), r"\[\[seat\]\]\[0\]\.position: must be within the shaft"),
-    (dict(x2="20 mm"), r"\[\[seat\]\]\[1\]\.position: on top of"),
-    (dict(xl="-5 mm"), r"\[\[load\]\]\[0\]\.position: must be within the shaft"),
+    (dict(x1="250 mm"), r"\[\[seat\]\] #1\.position: must be within the shaft"),
+    (dict(x2="20 mm"), r"\[\[seat\]\] #2\.position: on top of \[\[seat\]\] #1 "),
+    (dict(xl="-5 mm"), r"\[\[load\]\] #1\.position: must be within the shaft"),
     (dict(extra="colour = 1"), r"colour"),
     (dict(extra="[operation]\nspede = \"1 rpm\""), r"\[operation\]\.spede"),
     (dict(extra="[[gear]]\nposition = \"100 mm\"\ntangential_force = \"1 kN\"\n"
-                "pitch_diameter = \"10 kg\""), r"\[\[gear\]\]\[0\]\.pitch_diameter"),
+                "pitch_diameter = \"10 kg\""), r"\[\[gear\]\] #1\.pitch_diameter"),
     (dict(extra="[seat.fits]\nbore = \"30 mm\"\noutside_diameter = \"40 mm\""),
-     r"\[\[seat\]\]\[1\]\.fits: outside_diameter must exceed"),
+     r"\[\[seat\]\] #2\.fits: outside_diameter must exceed"),
 ])
 def test_case_file_errors_are_one_line_naming_the_key(tmp_path, kw, match):
     runner, app = _cli()

@@ -65,8 +65,6 @@ def validate(
     from .schema import CaseFileError, load_cases
 
     console = Console()
-    if logging.getLogger().level > logging.DEBUG:   # dask's INFO chatter drowns the progress
-        _quiet_dask()
     if fem not in FEM_LEVELS:
         _usage(console, f"--fem must be one of {', '.join(FEM_LEVELS)}; got {fem!r}")
     if update_baseline and baseline is None:
@@ -84,10 +82,25 @@ def validate(
         _usage(console, str(exc))
     serial = _preflight(console, selected, fem=fem, serial=serial, scheduler=scheduler,
                         workers=workers, report=report, plots=not no_plots)
+    if logging.getLogger().level > logging.DEBUG:   # dask's INFO chatter drowns the progress
+        _quiet_dask()
     code = run_and_report(selected, console=console, fem=fem, scheduler=scheduler,
                           workers=workers, serial=serial, report=report, baseline=baseline,
                           update_baseline=update_baseline, plots=not no_plots)
     raise typer.Exit(code=code)
+
+
+#: The modules of the fem extra the FE check imports (pip names: gmsh, scikit-fem, meshio)
+#: and the line that installs them.
+FEM_MODULES = ("gmsh", "skfem", "meshio")
+FEM_INSTALL = 'pip install "ballrace[fem]" (in a checkout: pip install ".[fem]")'
+
+
+def missing_fem() -> list[str]:
+    """The pip names of the fem extra's modules that are not installed (checked without
+    importing them)."""
+    names = {"skfem": "scikit-fem"}
+    return [names.get(m, m) for m in _missing(*FEM_MODULES)]
 
 
 def _missing(*modules: str) -> list[str]:
@@ -107,10 +120,19 @@ def _missing(*modules: str) -> list[str]:
 def _preflight(console, selected, *, fem, serial, scheduler, workers, report, plots) -> bool:
     """Optional dependencies checked before any case runs; returns the serial flag to use.
 
-    Without dask (``ballrace[report]``) the cases run in this process, said in one line;
-    an explicit ``--scheduler``/``--workers`` without dask, or ``--report`` without jinja2
-    (or without matplotlib unless ``--no-plots``), is a one-line error before any work.
+    FE cases at the requested level without the fem extra (gmsh, scikit-fem, meshio) are a
+    one-line error naming the extra and ``--fem none``.  Without dask (``ballrace[report]``)
+    the cases run in this process, said in one line; an explicit ``--scheduler``/``--workers``
+    without dask, or ``--report`` without jinja2 (or without matplotlib unless
+    ``--no-plots``), is a one-line error before any work, as is a ``--report`` folder that
+    cannot be written.
     """
+    if fem != "none" and any(c.fem and fem in c.fem_levels for c in selected):
+        miss = missing_fem()
+        if miss:
+            _usage(console, f"--fem {fem}: the FE cases need the fem extra ({', '.join(miss)} "
+                            f"not installed): {FEM_INSTALL}; or run the analytic cases "
+                            "alone with --fem none")
     if not serial and _missing("dask", "distributed"):
         if scheduler or workers:
             _usage(console, f"{'--scheduler' if scheduler else '--workers'} needs dask.distributed: "
@@ -126,6 +148,12 @@ def _preflight(console, selected, *, fem, serial, scheduler, workers, report, pl
             _usage(console, f"--report needs {' and '.join(miss)}: pip install "
                             f"\"ballrace[report]\""
                             + (" (or add --no-plots)" if miss == ["matplotlib"] else ""))
+        from ballrace.console import output_folder
+
+        try:
+            output_folder(report, "--report")
+        except ValueError as exc:
+            _usage(console, str(exc))
     return serial
 
 
@@ -240,7 +268,7 @@ def _summary(console, run) -> None:
 
     from .runner import STATUSES
 
-    t = Table(title=literal(f"Validation summary (--fem {run.fem}, {run.scheduler}, "
+    t = Table(title=literal(f"Validation summary (--fem {run.fem}, {_where_run(run.scheduler)}, "
                             f"wall-clock {run.duration:.1f} s)"),
               caption=literal("case time: each case's own computing time, summed; FE cases "
                               "and sweeps run in parallel, so the sum can exceed the wall time"))
@@ -270,6 +298,15 @@ def _summary(console, run) -> None:
             console.print(line)
             if r.message:
                 console.print(Text("        ") + literal(r.message))
+
+
+def _where_run(scheduler: str) -> str:
+    """Where the cases ran, for the summary, as the report says it: ``serial``, ``dask,
+    local (1 worker(s), 2 thread(s))`` for a cluster on this machine (its ``inproc://`` or
+    127.0.0.1 address means nothing to a reader), or a remote scheduler's address."""
+    from ballrace.reports.html import scheduler_text
+
+    return scheduler_text(scheduler)
 
 
 def _baseline_summary(console, drift, path) -> None:
