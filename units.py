@@ -161,6 +161,8 @@ def parse_quantity(text, dimension: str, name: str, *, allow_inf: bool = False) 
 _NUMBER = re.compile(r"\s*[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?(?:\s*/\s*\d+(?:\.\d*)?)?")
 #: Exponents inside a unit expression ("m^2", "m**-3"): the only digits allowed there.
 _EXPONENT = re.compile(r"(?:\^|\*\*)\s*\(?\s*[+-]?\d+(?:\.\d+)?\s*\)?")
+#: An exponent raised again ("m^2^9"): pint would evaluate a power tower.
+_CHAINED = re.compile(_EXPONENT.pattern + r"\s*(?:\^|\*\*)")
 
 
 #: A valid value of each dimension, for the examples in messages.
@@ -200,6 +202,10 @@ def check_form(s: str, name: str, example: str = "6.35 mm") -> None:
     unit = s[m.end():].strip()
     if unit.startswith("1/"):                  # "2.2e-8 1/Pa"
         unit = unit[2:]
+    if re.match(r"(?:\^|\*\*)", unit) or _CHAINED.search(unit) or any(
+            len(re.sub(r"\D", "", e.split(".")[0])) > 2 for e in _EXPONENT.findall(unit)):
+        raise ValueError(f"{name}: {s!r}: an exponent is a unit's power of at most two "
+                         f"digits, not raised again (e.g. '68 mm^2/s')")
     if re.search(r"\d", _EXPONENT.sub("", unit)):
         raise ValueError(f"{name}: {s!r}: write one number followed by its unit (pint would "
                          "multiply the numbers in it, e.g. '6 35 mm' = 210 mm)")

@@ -320,3 +320,14 @@ def test_a_depth_typed_in_millimetres_warns():
         subsurface.stress(c, 0.0, 0.0, np.linspace(0, 5, 11) * float(c.a), traction=0.3)
         subsurface.stress(c, 0.0, 0.0, 100 * float(c.a))
         subsurface.line_stress(lc, 0.0, 100 * float(lc.b))
+
+
+@pytest.mark.parametrize("text", ["9^9^9 N", "2**2**2**2**2 N", "1 N*m^99999999", "3 m^2^9 N"])
+def test_exponent_bombs_refused_at_once(text):
+    """pint evaluates '9^9^9' as an integer of 370 million digits (it never returns); the
+    boundary refuses a power tower or a long exponent before pint sees it."""
+    from ballrace.units import parse_quantity
+
+    with pytest.raises(ValueError, match="exponent"):
+        parse_quantity(text, "[force]", "load")
+    assert parse_quantity("68 mm^2/s", "[length] ** 2 / [time]", "nu40") == pytest.approx(6.8e-5)
