@@ -1392,7 +1392,8 @@ def _checked(r: LoadDistribution) -> LoadDistribution:
     """``r``, after warning (UserWarning, once per check) where the bearing works beyond its
     limits: static safety s0 < 1 (:attr:`LoadDistribution.static_safety`), a deep-groove
     bearing beyond :data:`~ballrace.analytic.ratings.DEEP_GROOVE_ANGLE_LIMIT`, a tilt
-    beyond :data:`~ballrace.analytic.ratings.PERMISSIBLE_MISALIGNMENT`."""
+    beyond :data:`~ballrace.analytic.ratings.PERMISSIBLE_MISALIGNMENT` that the loads
+    caused (not one the caller imposed)."""
     from . import _operating as op
 
     if op.silenced():
@@ -1402,9 +1403,14 @@ def _checked(r: LoadDistribution) -> LoadDistribution:
     if op.may_be_overloaded(r.bearing, r.ball_loads):
         p, s0 = op.pressure_and_safety(r.inner, r.outer)
         safety = op.safety_message(what, s0, p)
-    op.emit(safety, op.angle_message(what, r.bearing, r.ball_loads, r.contact_angles),
-            op.tilt_message(what, r.bearing, np.hypot(r.displacements[..., 3],
-                                                      r.displacements[..., 4])))
+    tilt = None
+    if not np.all(r.imposed[..., 3:]):            # an imposed tilt is the caller's choice
+        tilt = op.tilt_message(what, r.bearing, np.hypot(r.displacements[..., 3],
+                                                         r.displacements[..., 4]))
+        if tilt:
+            tilt += ("; the ring is free to tilt here: where a shaft holds it, impose its tilt "
+                     "(displacements) or solve the shaft (ballrace.analytic.shaft)")
+    op.emit(safety, op.angle_message(what, r.bearing, r.ball_loads, r.contact_angles), tilt)
     return r
 
 

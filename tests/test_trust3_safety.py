@@ -222,17 +222,24 @@ def test_deep_groove_angle_warning():
         AC.thrust(0.5 * C0_AC)
 
 
-@pytest.mark.parametrize("brg, ok, bad", [(B6208, 2.5e-3, 3.5e-3), (AC, 0.5e-3, 0.7e-3)])
-def test_tilt_warning_at_the_permissible_misalignment(brg, ok, bad):
-    """Imposed tilt with a light radial load: 2.5 / 3.5 mrad against the deep-groove 2.91
-    mrad, 0.5 / 0.7 mrad against the angular-contact 0.58 mrad."""
-    def solve(t):
-        return loaddist.solve(brg, Fy=500.0, Fa=200.0,
-                              displacements=[np.nan, np.nan, np.nan, 0.0, t])
+@pytest.mark.parametrize("brg, Fa, ok, bad, limit", [
+    (B6208, 200.0, 1.0, 3.0, "10 arcmin (2.91 mrad)"),       # 2.61 / 3.22 mrad
+    (AC, 5000.0, 5.0, 20.0, "2 arcmin (0.58 mrad)")])        # 0.32 / 1.20 mrad
+def test_tilt_warning_at_the_permissible_misalignment(brg, Fa, ok, bad, limit):
+    """A moment tilts the ring below and beyond the permissible misalignment of the type
+    (deep-groove 2.91 mrad, angular-contact 0.58 mrad): one warning for the second, none
+    for the first; an imposed tilt (the caller's choice) is not flagged."""
     with _quiet():
-        solve(ok)
-    with pytest.warns(UserWarning, match=r"inner ring is tilted .* more than the "):
-        solve(bad)
+        r = loaddist.solve(brg, Fa=Fa, Fy=500.0 if brg is B6208 else 0.0, Mz=ok)
+    assert r.misalignment < ratings.PERMISSIBLE_MISALIGNMENT[ratings.bearing_type(brg)]
+    with warnings.catch_warnings(record=True) as rec:
+        warnings.simplefilter("always")
+        r = loaddist.solve(brg, Fa=Fa, Fy=500.0 if brg is B6208 else 0.0, Mz=bad)
+    msg = [str(w.message) for w in rec]
+    assert len(msg) == 1 and "inner ring is tilted" in msg[0] and limit in msg[0], msg
+    assert r.misalignment > ratings.PERMISSIBLE_MISALIGNMENT[ratings.bearing_type(brg)]
+    with _quiet():
+        loaddist.solve(brg, Fa=Fa, displacements=[np.nan, np.nan, np.nan, 0.0, 2 * r.misalignment])
 
 
 # ----------------------------------------------------------------------- temperatures
