@@ -88,6 +88,9 @@ def analyze(case) -> dict:
         notes.append(f"equivalent load not available: {exc}")
     P0 = float(ratings.static_equivalent_load(Fr, Fa, a_nom, i))
     lp = life.bearing_life(brg, res, rotating=case.rotating_ring)
+    notes.append("static safety: s0 = C0/P0 with P0 = X0 Fr + Y0 Fa (ISO 76, the catalogue "
+                 "check); from p_max: s0 = (4200 MPa / p_max)^3 on the most loaded contact of "
+                 "the load distribution (ISO 76 bases C0 on 4200 MPa)")
     out_life.update(P0=P0, s0=float(ratings.static_safety_factor(C0, P0)),
                     static_safety=float(res.static_safety),
                     LP_inner=lp.L_inner, LP_outer=lp.L_outer, LP_L10=lp.L10,
@@ -249,9 +252,9 @@ def sections(r: dict) -> list:
                  ("X / Y / e", f"{lf['X']:.3g} / {lf['Y']:.3g} / {lf['e']:.3g}", None),
                  (f"L10 ({lf['standard']}){cat}", lf["L10"], "=1e6 rev"),
                  (f"L10h ({lf['standard']}){cat}", lf["L10h"], "=h")]
-    rows += [("static equivalent load P0 = X0 Fr + Y0 Fa", lf["P0"], "force"),
-             (f"static safety s0 = C0/P0 (ISO 76){cat}", lf["s0"], None),
-             ("static safety s0 = (4200 MPa / p_max)^3", lf["static_safety"], None),
+    rows += [("static equivalent load P0", lf["P0"], "force"),
+             (f"static safety s0 = C0/P0{cat}", lf["s0"], None),
+             ("static safety from p_max", lf["static_safety"], None),
              ("LP inner-ring life", lf["LP_inner"], "=1e6 rev"),
              ("LP outer-ring life", lf["LP_outer"], "=1e6 rev"),
              ("LP bearing L10 (e = 10/9)", lf["LP_L10"], "=1e6 rev"),
