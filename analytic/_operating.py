@@ -135,8 +135,9 @@ def tilt_message(what: str, bearing, tilt) -> str | None:
     return (f"{what}: the inner ring is tilted {big * 1e3:.3g} mrad "
             f"({math.degrees(big) * 60:.3g} arcmin) against the outer ring{_cases(t > lim)}, "
             f"more than the {math.degrees(lim) * 60:.0f} arcmin ({lim * 1e3:.2f} mrad) "
-            f"{'a' if kind == 'deep-groove' else 'an'} {kind} ball bearing tolerates (ratings.PERMISSIBLE_MISALIGNMENT, manufacturers' "
-            "guide values): expect edge loading, noise and a shorter life")
+            f"{'a' if kind == 'deep-groove' else 'an'} {kind} ball bearing tolerates "
+            "(ratings.PERMISSIBLE_MISALIGNMENT, manufacturers' guide values): expect edge "
+            "loading, noise and a shorter life")
 
 
 def emit(*messages) -> None:
