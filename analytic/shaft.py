@@ -724,11 +724,6 @@ class ShaftResult:
         from .ratings import static_safety_from_pressure
         return np.asarray(static_safety_from_pressure(self.max_pressure), float)
 
-    @property
-    def locating_seats(self) -> int:
-        """Number of seats that locate the shaft axially (not ``floating``)."""
-        return sum(not s.floating for s in self.seats)
-
     def stiffness(self, x) -> np.ndarray:
         r"""Linearised 5x5 stiffness of the whole shaft on its bearings at a node [N/m, N/rad,
         N m/m, N m/rad].
