@@ -22,6 +22,13 @@ __all__ = ["register", "analyze", "sections", "ball_columns"]
 
 log = logging.getLogger(__name__)
 
+#: Marks a number computed by a formula outside the range it was fitted on (a note says
+#: which formula and which range).
+FIT_MARK = " †"
+#: Ellipticity parameters k of the Hamrock & Dowson (1977) film-thickness fits (1 <= k <= 8,
+#: the range ``ehl.film_thickness_parts`` logs as extrapolated).
+EHL_K_RANGE = (1.0, 8.0)
+
 
 def analyze(case) -> dict:
     """Run a validated :class:`~ballrace.analytic.casefile.BearingCase`.
@@ -81,7 +88,11 @@ def analyze(case) -> dict:
         notes.append(f"equivalent load not available: {exc}")
     P0 = float(ratings.static_equivalent_load(Fr, Fa, a_nom, i))
     lp = life.bearing_life(brg, res, rotating=case.rotating_ring)
+    notes.append("static safety: s0 = C0/P0 with P0 = X0 Fr + Y0 Fa (ISO 76, the catalogue "
+                 "check); from p_max: s0 = (4200 MPa / p_max)^3 on the most loaded contact of "
+                 "the load distribution (ISO 76 bases C0 on 4200 MPa)")
     out_life.update(P0=P0, s0=float(ratings.static_safety_factor(C0, P0)),
+                    static_safety=float(res.static_safety),
                     LP_inner=lp.L_inner, LP_outer=lp.L_outer, LP_L10=lp.L10,
                     LP_L10h=lp.hours(case.speed_rpm), Q_e_inner=lp.Q_e_inner,
                     Q_e_outer=lp.Q_e_outer)
@@ -98,15 +109,34 @@ def analyze(case) -> dict:
         fo = ehl.film_thickness(co, entrainment_speed=u, viscosity=case.viscosity,
                                 pressure_viscosity=case.pressure_viscosity)
         loaded = Q > 0
+        k_lo, k_hi = EHL_K_RANGE
+
+        def outside(k):                   # any loaded ball beyond the fits' ellipticities
+            k = np.broadcast_to(np.asarray(k, dtype=float), Q.shape)[loaded]
+            return bool(np.any((k < k_lo) | (k > k_hi)))
+
+        hi_i = np.nanmin(fi.h_min[loaded] if fi.h_min.ndim else fi.h_min)
+        hi_o = np.nanmin(fo.h_min[loaded] if fo.h_min.ndim else fo.h_min)
         film = {
             "entrainment_speed": _list(u),
             "h_min_inner": _list(fi.h_min), "h_central_inner": _list(fi.h_central),
             "h_min_outer": _list(fo.h_min), "h_central_outer": _list(fo.h_central),
             "k_inner": float(np.max(fi.k)), "k_outer": float(np.max(fo.k)),
             "G": float(np.max(fi.G)),
-            "h_min": float(min(np.nanmin(fi.h_min[loaded] if fi.h_min.ndim else fi.h_min),
-                               np.nanmin(fo.h_min[loaded] if fo.h_min.ndim else fo.h_min))),
+            "h_min": float(min(hi_i, hi_o)),
+            "h_min_race": "inner" if hi_i <= hi_o else "outer",
+            "k_fit_range": [k_lo, k_hi],
+            "extrapolated_inner": outside(fi.k), "extrapolated_outer": outside(fo.k),
         }
+        if film["extrapolated_inner"] or film["extrapolated_outer"]:
+            ks = ", ".join(f"{k:.3g} ({race} race)" for k, race, x in (
+                (film["k_inner"], "inner", film["extrapolated_inner"]),
+                (film["k_outer"], "outer", film["extrapolated_outer"])) if x)
+            notes.append(f"{FIT_MARK.strip()} extrapolated: the ellipticity parameter k = {ks} "
+                         f"is outside the range {k_lo:g} <= k <= {k_hi:g} of the Hamrock & "
+                         "Dowson (1977) film-thickness fits; the film thicknesses marked "
+                         f"{FIT_MARK.strip()} (and Lambda, F from them) are the fits used "
+                         "beyond their range, an estimate")
         if case.roughness_race is not None and case.roughness_ball is not None:
             lam = float(ehl.film_parameter(film["h_min"], case.roughness_race,
                                            case.roughness_ball))
@@ -153,10 +183,11 @@ def analyze(case) -> dict:
         # every number of the report from one operating state: say which do not see it
         notes.append("* the operating clearance (fits, temperatures; in the tables)"
                      " is used by the load distribution, the Lundberg-Palmgren and the "
-                     "ISO/TS 16281 lives (L10r, L10mr); the catalogue lives L10 and L_nm come "
-                     "from P = X Fr + Y Fa, which does not see the clearance"
-                     + (" - for this preloaded bearing they are not its life"
-                        if oc.operating < 0 else ""))
+                     "ISO/TS 16281 lives (L10r, L10mr) and the static safety from p_max; the "
+                     "catalogue lives L10 and L_nm come from P = X Fr + Y Fa, and s0 = C0/P0 "
+                     "from P0 = X0 Fr + Y0 Fa, which do not see the clearance"
+                     + (" - for this preloaded bearing they are not its life and not its "
+                        "static safety" if oc.operating < 0 else ""))
 
     return {
         "title": case.title,
@@ -222,7 +253,8 @@ def sections(r: dict) -> list:
                  (f"L10 ({lf['standard']}){cat}", lf["L10"], "=1e6 rev"),
                  (f"L10h ({lf['standard']}){cat}", lf["L10h"], "=h")]
     rows += [("static equivalent load P0", lf["P0"], "force"),
-             ("static safety s0 = C0/P0", lf["s0"], None),
+             (f"static safety s0 = C0/P0{cat}", lf["s0"], None),
+             ("static safety from p_max", lf["static_safety"], None),
              ("LP inner-ring life", lf["LP_inner"], "=1e6 rev"),
              ("LP outer-ring life", lf["LP_outer"], "=1e6 rev"),
              ("LP bearing L10 (e = 10/9)", lf["LP_L10"], "=1e6 rev"),
@@ -233,12 +265,16 @@ def sections(r: dict) -> list:
              ("adjusted LP life", lf["adjusted_LP_L10h"], "=h")]
     out.append(("Life", rows))
     if f:
+        xi, xo = f.get("extrapolated_inner", False), f.get("extrapolated_outer", False)
+        xmin = xi if f.get("h_min_race") == "inner" else xo
         rows = [("entrainment speed u (ball 1)", f["entrainment_speed"][0], "speed"),
                 ("G = xi E'", f["G"], None),
-                ("k inner / outer", f"{f['k_inner']:.3f} / {f['k_outer']:.3f}", None),
-                ("smallest h_min", f["h_min"], "small")]
+                ("k inner / outer", f"{f['k_inner']:.3f}{FIT_MARK if xi else ''} / "
+                                    f"{f['k_outer']:.3f}{FIT_MARK if xo else ''}", None),
+                ("smallest h_min" + (FIT_MARK if xmin else ""), f["h_min"], "small")]
         if "Lambda" in f:
-            rows.append(("film parameter Lambda", f["Lambda"], None))
+            rows.append(("film parameter Lambda" + (FIT_MARK if xmin else ""), f["Lambda"],
+                         None))
         out.append(("Lubricant film (Hamrock & Dowson 1977)", rows))
     if r.get("iso"):                      # ISO 281 / ISO/TS 16281 block
         from ballrace.analytic import isocase
@@ -274,7 +310,8 @@ def ball_columns(r: dict, units: str = "eng") -> tuple[list, list]:
                f"p_i [{ul('stress', units)}]", f"p_o [{ul('stress', units)}]",
                f"a_i x b_i [{L}]", f"a_o x b_o [{L}]"]
     if f:
-        headers += [f"h_min,i [{S}]", f"h_min,o [{S}]"]
+        headers += [f"h_min,i{FIT_MARK if f.get('extrapolated_inner') else ''} [{S}]",
+                    f"h_min,o{FIT_MARK if f.get('extrapolated_outer') else ''} [{S}]"]
 
     def g(x, kind, digits=5):
         return fmt(cv(x, kind, units), digits)

@@ -355,6 +355,50 @@ class DuplexResult:
         """Pair radial stiffness dFr/d(delta_r) at fixed axial displacement [N/m]."""
         return float(self.stiffness[1, 1])
 
+    @functools.cached_property
+    def inner_contacts(self):
+        """Hertz contacts on the inner races (a, b, p_max, ...), shape (2, Z)."""
+        return self.pair.bearing.contacts(self.ball_loads, self.contact_angles, "inner")
+
+    @functools.cached_property
+    def outer_contacts(self):
+        """Hertz contacts on the outer races, shape (2, Z)."""
+        return self.pair.bearing.contacts(self.ball_loads, self.contact_angles, "outer")
+
+    @property
+    def max_pressure(self) -> float:
+        """Largest contact pressure p_max of the pair (both bearings, both races) [Pa]."""
+        return float(max(np.max(self.inner_contacts.p_max), np.max(self.outer_contacts.p_max)))
+
+    @property
+    def static_safety(self) -> float:
+        r"""Static safety of the pair's most loaded contact, s0 = (4200 MPa / p_max)^3 [-].
+
+        From the actual largest contact pressure of either bearing, preload included
+        (:func:`~ballrace.analytic.ratings.static_safety_from_pressure`; ISO 76:2006 bases
+        C0 on 4200 MPa); :meth:`DuplexPair.solve` warns when it is below 1.
+        """
+        from .ratings import static_safety_from_pressure
+        return float(static_safety_from_pressure(self.max_pressure))
+
+
+def _checked(r: DuplexResult) -> DuplexResult:
+    """``r``, after a UserWarning where a bearing of the pair works beyond its limits:
+    s0 < 1 or, for deep-groove bearings, contact angles beyond
+    :data:`~ballrace.analytic.ratings.DEEP_GROOVE_ANGLE_LIMIT` (the pair is not tilted in
+    this model)."""
+    from . import _operating as op
+
+    if op.silenced():
+        return r
+    what = f"duplex pair ({r.pair.arrangement})"
+    b = r.pair.bearing
+    safety = None
+    if op.may_be_overloaded(b, r.ball_loads):
+        safety = op.safety_message(what, r.static_safety, r.max_pressure)
+    op.emit(safety, op.angle_message(what, b, r.ball_loads, r.contact_angles))
+    return r
+
 
 @dataclass(frozen=True)
 class DuplexPair:
@@ -583,9 +627,9 @@ class DuplexPair:
                                    f"{err:.3e} after {it} iterations (Fa={Fa!r} N, Fr={Fr!r} N)")
         d, Fa_b, Fr_b, Q, b = self._state(x, dr)
         K = J                                       # analytic, at the solution
-        return DuplexResult(
+        return _checked(DuplexResult(
             pair=self, Fa=Fa, Fr=Fr, axial_loads=np.maximum(Fa_b, 0.0), radial_loads=Fr_b,
             axial_deflections=d, axial_displacement=float(x), radial_displacement=float(dr),
             ball_loads=Q, contact_angles=b, stiffness=K, unloading_load=self.unloading_load,
             separated=bool(np.any(np.max(Q, axis=-1) == 0.0)),
-            residual=float(np.max(np.abs(r if radial_free else r[:1]))))
+            residual=float(np.max(np.abs(r if radial_free else r[:1])))))

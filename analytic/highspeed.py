@@ -112,7 +112,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import hertz
+from . import _operating, hertz
 from ._checks import as_array, broadcast, check_choice, check_positive, check_range
 from .bearing import BallBearing
 from .loaddist import ConvergenceError
@@ -804,6 +804,50 @@ class HighSpeedResult:
         """Hertz contacts on the outer race per ball."""
         return self.bearing.contacts(self.outer_loads, self.outer_contact_angles, "outer")
 
+    @property
+    def max_pressure(self) -> float:
+        """Largest contact pressure p_max over the balls and both races [Pa]."""
+        return float(max(np.max(self.inner_contacts.p_max), np.max(self.outer_contacts.p_max)))
+
+    @property
+    def static_safety(self) -> float:
+        r"""Static safety of the most loaded contact, s0 = (4200 MPa / p_max)^3 [-].
+
+        From the actual largest contact pressure, inner or outer race (at speed the outer
+        contacts also carry the centrifugal force), by
+        :func:`~ballrace.analytic.ratings.static_safety_from_pressure` (ISO 76:2006 bases C0
+        on 4200 MPa); :func:`solve` warns when it is below 1.
+        """
+        from .ratings import static_safety_from_pressure
+        return float(static_safety_from_pressure(self.max_pressure))
+
+    @property
+    def misalignment(self) -> float:
+        """Tilt of the inner ring sqrt(theta_y^2 + theta_z^2) [rad]."""
+        return float(np.hypot(self.displacements[3], self.displacements[4]))
+
+
+def _checked(r: HighSpeedResult) -> HighSpeedResult:
+    """``r``, after a UserWarning (once per check) where the bearing works beyond its
+    limits: s0 < 1, a deep-groove bearing beyond
+    :data:`~ballrace.analytic.ratings.DEEP_GROOVE_ANGLE_LIMIT`, a tilt beyond
+    :data:`~ballrace.analytic.ratings.PERMISSIBLE_MISALIGNMENT` (these are not part of
+    ``r.warnings``, which lists where the quasi-static model itself breaks)."""
+    from . import _operating as op
+
+    if op.silenced():
+        return r
+    what = "high-speed equilibrium"
+    b = r.bearing
+    safety = None
+    if op.may_be_overloaded(b, np.maximum(r.inner_loads, r.outer_loads)):
+        safety = op.safety_message(what, r.static_safety, r.max_pressure)
+    Q = np.concatenate([r.inner_loads, r.outer_loads])
+    angles = np.concatenate([r.inner_contact_angles, r.outer_contact_angles])
+    op.emit(safety, op.angle_message(what, b, Q, angles),
+            op.tilt_message(what, b, r.misalignment))
+    return r
+
 
 # =========================================================================== solver
 def _free_dofs(L, tilt):
@@ -1274,8 +1318,9 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
         d = np.zeros(5)
         d[free] = np.nan
         try:
-            st = static_solve(bearing, Fa=L[0], Fy=L[1], Fz=L[2], My=L[3], Mz=L[4],
-                              displacements=d)
+            with _operating.quiet():            # the result below says it, if need be
+                st = static_solve(bearing, Fa=L[0], Fy=L[1], Fz=L[2], My=L[3], Mz=L[4],
+                                  displacements=d)
             u0 = np.asarray(st.displacements, float).reshape(5)
         except (ConvergenceError, ValueError) as exc:       # pragma: no cover - fallback
             log.info("highspeed: static start failed (%s); starting from the free state", exc)
@@ -1312,8 +1357,8 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
         log.warning("highspeed: Jones race-control choice did not settle after 8 rounds")
     total_it = count[0]
 
-    return _result(bearing, model, psi, sysm, x, b, L, wi, wo, sysm.outer, gyroscopic, mu,
-                   total_it, F_ref, Q_ref, rtol)
+    return _checked(_result(bearing, model, psi, sysm, x, b, L, wi, wo, sysm.outer, gyroscopic,
+                            mu, total_it, F_ref, Q_ref, rtol))
 
 
 def _equilibrium(model, psi, L, free, wi, wo, gyro, static, F_ref, Q_ref, orbital, outer,

@@ -1127,6 +1127,26 @@ class LoadDistribution:
         """Tilt of the inner ring sqrt(theta_y^2 + theta_z^2) [rad]."""
         return hertz._scalar(np.hypot(self.displacements[..., 3], self.displacements[..., 4]))
 
+    @property
+    def max_pressure(self):
+        """Largest contact pressure p_max over the balls and both races [Pa] (per case)."""
+        return hertz._scalar(np.maximum(np.max(np.asarray(self.inner.p_max), axis=-1),
+                                        np.max(np.asarray(self.outer.p_max), axis=-1)))
+
+    @property
+    def static_safety(self):
+        r"""Static safety of the most loaded contact, s0 = (4200 MPa / p_max)^3 [-] (per case).
+
+        From the actual largest contact pressure (inner or outer race; clearance, preload,
+        moment and tilt included) by
+        :func:`~ballrace.analytic.ratings.static_safety_from_pressure` (ISO 76:2006 bases
+        C0 on 4200 MPa); inf without load.  The solvers warn when it is below 1.  Unlike
+        the catalogue check C0/P0 (:func:`~ballrace.analytic.ratings.static_safety_factor`,
+        P0 = X0 Fr + Y0 Fa) it sees the load distribution the bearing really has.
+        """
+        from .ratings import static_safety_from_pressure
+        return hertz._scalar(static_safety_from_pressure(self.max_pressure))
+
     @functools.cached_property
     def loaded_zone(self):
         r"""Half-angle psi_l of the loaded arc [rad], in [0, pi].
@@ -1321,14 +1341,14 @@ def _result(bearing, model, psi, x0, z0, Pd, u, applied, imposed, arm, iters, sh
             f"(> {tol:g}) after {int(np.max(iters, initial=0))} iterations in load case {i}; "
             f"loads {app[i].tolist()}, displacements {u[i].tolist()}")
     beta = _fold_unloaded(st.beta, st.Q)
-    return LoadDistribution(
+    return _checked(LoadDistribution(
         bearing=bearing, azimuths=psi,
         displacements=u.reshape(shape + (5,)), loads=st.F.reshape(shape + (5,)),
         applied=app.reshape(shape + (5,)),
         imposed=imposed.reshape(shape + (5,)),
         ball_loads=st.Q.reshape(shape + (Z,)), contact_angles=beta.reshape(shape + (Z,)),
         stiffness=st.J.reshape(shape + (5, 5)), clearance=float(Pd), axial_offset=float(z0),
-        moment_arm=arm, iterations=int(np.max(iters, initial=0)), method=method)
+        moment_arm=arm, iterations=int(np.max(iters, initial=0)), method=method))
 
 
 def _result_one(bearing, model, psi, z0, Pd, u, applied, imposed, arm, iters, shape, method,
@@ -1359,13 +1379,39 @@ def _result_one(bearing, model, psi, z0, Pd, u, applied, imposed, arm, iters, sh
         beta = _fold_unloaded(beta, o.Q)
     J = _unscaled_J(Jl, Ri)
     Z = model.Z
-    return LoadDistribution(
+    return _checked(LoadDistribution(
         bearing=bearing, azimuths=psi, displacements=u.reshape(shape + (5,)),
         loads=np.array([Fs[0], Fs[1], Fs[2], Fs[3] * Ri, Fs[4] * Ri]).reshape(shape + (5,)),
         applied=np.array(app).reshape(shape + (5,)), imposed=imposed.reshape(shape + (5,)),
         ball_loads=o.Q.reshape(shape + (Z,)), contact_angles=beta.reshape(shape + (Z,)),
         stiffness=J.reshape(shape + (5, 5)), clearance=float(Pd), axial_offset=float(z0),
-        moment_arm=arm, iterations=int(iters[0]), method=method)
+        moment_arm=arm, iterations=int(iters[0]), method=method))
+
+
+def _checked(r: LoadDistribution) -> LoadDistribution:
+    """``r``, after warning (UserWarning, once per check) where the bearing works beyond its
+    limits: static safety s0 < 1 (:attr:`LoadDistribution.static_safety`), a deep-groove
+    bearing beyond :data:`~ballrace.analytic.ratings.DEEP_GROOVE_ANGLE_LIMIT`, a tilt
+    beyond :data:`~ballrace.analytic.ratings.PERMISSIBLE_MISALIGNMENT` that the loads
+    caused (not one the caller imposed)."""
+    from . import _operating as op
+
+    if op.silenced():
+        return r
+    what = "load distribution"
+    safety = None
+    if op.may_be_overloaded(r.bearing, r.ball_loads):
+        p, s0 = op.pressure_and_safety(r.inner, r.outer)
+        safety = op.safety_message(what, s0, p)
+    tilt = None
+    if not np.all(r.imposed[..., 3:]):            # an imposed tilt is the caller's choice
+        tilt = op.tilt_message(what, r.bearing, np.hypot(r.displacements[..., 3],
+                                                         r.displacements[..., 4]))
+        if tilt:
+            tilt += ("; the ring is free to tilt here: where a shaft holds it, impose its tilt "
+                     "(displacements) or solve the shaft (ballrace.analytic.shaft)")
+    op.emit(safety, op.angle_message(what, r.bearing, r.ball_loads, r.contact_angles), tilt)
+    return r
 
 
 def solve(bearing: BallBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *, displacements=None,

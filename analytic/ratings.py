@@ -9,7 +9,13 @@ Everything here is SI at the interface (m, N, rad); the standards' own unit syst
 * :func:`static_rating_pressure` — the contact pressure that C0 stands for (4200 MPa),
   computed with the library's exact Hertz solution, as a check of the f0 table;
 * :func:`static_equivalent_load`, :func:`static_safety_factor` — ISO 76 P0 = X0 Fr + Y0 Fa
-  and s0 = C0/P0.
+  and s0 = C0/P0;
+* :func:`static_safety_from_pressure` — s0 from the largest contact pressure of an actual
+  load distribution, s0 = (4200 MPa / p_max)^3, what the solvers' ``static_safety``
+  reports;
+* :data:`PERMISSIBLE_MISALIGNMENT`, :data:`DEEP_GROOVE_ANGLE_LIMIT` — the limits beyond
+  which the solvers warn that a bearing is tilted more than its type tolerates, or a
+  deep-groove bearing runs as an angular-contact one.
 
 Each rating function takes either plain numbers ``(ball_diameter, n_balls,
 pitch_diameter, contact_angle, n_rows)`` or a bearing object that has those attributes
@@ -52,6 +58,9 @@ __all__ = [
     "F0_TABLE",
     "ISO76_STEEL",
     "STATIC_RATING_PRESSURE",
+    "STATIC_RATING_PRESSURES",
+    "PERMISSIBLE_MISALIGNMENT",
+    "DEEP_GROOVE_ANGLE_LIMIT",
     "LBF",
     "INCH",
     "fc_factor",
@@ -63,6 +72,8 @@ __all__ = [
     "StaticRatingPressure",
     "static_equivalent_load",
     "static_safety_factor",
+    "static_safety_from_pressure",
+    "bearing_type",
     "bearing_numbers",
 ]
 
@@ -109,6 +120,38 @@ ISO76_STEEL = Material(E=207e9, nu=0.3, name="ISO 76 reference steel")
 #: Contact pressure at the centre of the most heavily loaded ball–raceway contact that
 #: defines C0 for radial and angular-contact ball bearings (ISO 76:2006 §3.2) [Pa].
 STATIC_RATING_PRESSURE = 4200e6
+#: The contact pressure that defines C0, by bearing kind [Pa], with the exponent n of
+#: load ~ p^n (point contact 3, line contact 2): ISO 76:2006 (4600 MPa self-aligning ball
+#: bearings, 4200 MPa other ball bearings, 4000 MPa roller bearings; the values as
+#: reproduced by the SKF rolling bearings catalogue, "Static bearing loads").
+STATIC_RATING_PRESSURES = {"ball": (4200e6, 3), "self-aligning ball": (4600e6, 3),
+                           "roller": (4000e6, 2)}
+
+#: Permissible misalignment (tilt of the inner ring relative to the outer ring) by bearing
+#: type [rad], above which the solvers warn (:func:`bearing_type` gives the key):
+#:
+#: * ``"deep-groove"``: 10 arcmin = 2.91 mrad, the upper end of the 2-10 arcmin that the
+#:   SKF rolling bearings catalogue gives for single-row deep-groove ball bearings
+#:   ("Misalignment"; RBC Bearings' guide, 0.0005-0.003 in/in = 0.5-3 mrad, agrees);
+#: * ``"angular-contact"``: 2 arcmin = 0.58 mrad, the value commonly quoted for
+#:   single-row angular-contact ball bearings, which tolerate very little tilt; this
+#:   figure could not be checked against a manufacturer's table here.
+#:
+#: Guide values for quiet running and full life; misalignment beyond them brings edge
+#: loading, noise and a shorter life, not immediate failure.
+PERMISSIBLE_MISALIGNMENT = {"deep-groove": float(np.radians(10.0 / 60.0)),
+                            "angular-contact": float(np.radians(2.0 / 60.0))}
+
+#: Largest operating contact angle [rad] (30 deg) at which a deep-groove bearing (nominal
+#: contact angle 0) is still treated as a radial bearing; beyond it the solvers warn that
+#: it runs as an angular-contact bearing, whose life its ratings (C, C0 and X/Y at 0 deg)
+#: do not describe.  A screening limit chosen here, not a standard's value: the largest
+#: pure thrust SKF permits on a single-row deep-groove bearing (Fa <= 0.5 C0, SKF
+#: catalogue, deep groove ball bearings, "Loads") puts a 6208-size bearing at 21-24 deg
+#: for diametral clearances of 5-30 um (this library's load distribution), and the
+#: radial-bearing X/Y table of ISO 281:2007 (e <= 0.44) corresponds, by e ~ 1.5 tan(alpha),
+#: to about 16 deg.
+DEEP_GROOVE_ANGLE_LIMIT = float(np.radians(30.0))
 
 _B_M = {"ISO 281:2007": 1.3, "ABMA 9-1990": 1.0}
 
@@ -542,6 +585,92 @@ def static_safety_factor(static_rating_N, static_equivalent_load_N):
     P0 = check_positive(static_equivalent_load_N, "static_equivalent_load_N", "N", bounded=True)
     C0, P0 = broadcast(static_rating_N=C0, static_equivalent_load_N=P0)
     return _s(C0 / P0)
+
+
+def static_safety_from_pressure(p_max, kind: str = "ball"):
+    r"""Static safety factor s0 from the largest contact pressure of a load distribution [-].
+
+    .. math:: s_0 = \left(\frac{p_0}{p_{max}}\right)^{n}, \qquad
+              p_0 = 4200\ \mathrm{MPa},\ n = 3 \ \text{(ball bearings)}
+
+    ISO 76:2006 defines the basic static rating C0 as the load that produces a contact
+    pressure p_0 at the centre of the most heavily loaded rolling element–raceway
+    contact: 4200 MPa for radial and angular-contact ball bearings, 4600 MPa for
+    self-aligning ball bearings, 4000 MPa for roller bearings.  In a point contact the load
+    grows as p_max^3 (Hertz), in a line contact as p_max^2, so the load ratio C0/P0 of the
+    catalogue check is, for the actual most loaded contact, (p_0 / p_max)^n.  Applied to
+    the largest pressure of a computed load distribution (inner or outer raceway, any
+    contact angle, clearance, preload, moment and tilt included -- the rolling-element
+    loads of ISO/TS 16281:2008 rather than the X0 Fr + Y0 Fa of ISO 76) it is the static
+    safety the solvers report as ``static_safety``.  The pressure basis is that of
+    ISO 76:2006 and the exponents are those of the stress-based static safety of
+    rolling-bearing calculation programs, both as reproduced by secondary sources (the
+    SKF rolling bearings catalogue, "Static bearing loads"; the MESYS rolling bearing
+    calculation manual, "static safety factor based on stress"); the standards' text was
+    not consulted.  The 4200 MPa refers to bearing steel (ISO 76's E = 207 GPa,
+    ν = 0.3); for ceramic balls manufacturers use other limits.
+
+    Parameters
+    ----------
+    p_max : float or array_like
+        Largest contact pressure (centre of the most heavily loaded contact) [Pa], >= 0;
+        0 (no load) gives inf.
+    kind : {"ball", "self-aligning ball", "roller"}
+        Bearing kind: selects p_0 and n (:data:`STATIC_RATING_PRESSURES`).
+
+    Returns
+    -------
+    float or ndarray
+        s0 [-]; < 1 means the permanent deformation exceeds the one C0 allows (about
+        1e-4 of the rolling-element diameter).
+
+    References
+    ----------
+    ISO 76:2006 (definition of C0 by the contact stress; §3.2 as cited for
+    :data:`STATIC_RATING_PRESSURE`); ISO/TS 16281:2008 (rolling-element loads of the
+    actual load distribution); Hamrock & Dowson (1981) eqs. (3.8)–(3.16) (p_max ~ Q^1/3).
+
+    Examples
+    --------
+    >>> float(static_safety_from_pressure(4200e6))
+    1.0
+    >>> round(float(static_safety_from_pressure(3000e6)), 4)      # (4.2/3)^3
+    2.744
+    """
+    check_choice(kind, "kind", tuple(STATIC_RATING_PRESSURES))
+    p = check_nonnegative(p_max, "p_max", "Pa", bounded=True)
+    if np.any((p > 0) & (p < 1e5)):
+        import warnings
+
+        warnings.warn(f"p_max = {float(p[(p > 0) & (p < 1e5)].flat[0]):g} Pa: contact pressures "
+                      "are in pascals [Pa] (4200 MPa = 4.2e9 Pa) - were MPa given?",
+                      UserWarning, stacklevel=2)
+    p0, n = STATIC_RATING_PRESSURES[kind]
+    with np.errstate(divide="ignore"):
+        return _s(np.where(p > 0, (p0 / np.where(p > 0, p, 1.0)) ** n, np.inf))
+
+
+def bearing_type(bearing) -> str:
+    """``"deep-groove"`` for a bearing rated as radial (nominal contact angle 0), else
+    ``"angular-contact"``: the key of :data:`PERMISSIBLE_MISALIGNMENT`.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        Anything with a ``nominal_contact_angle`` [rad].
+
+    Examples
+    --------
+    >>> import ballrace
+    >>> bearing_type(ballrace.BallBearing(0.0127, 9, 0.065, 0.52, 0.52,
+    ...                                   diametral_clearance=15e-6))
+    'deep-groove'
+    """
+    a = getattr(bearing, "nominal_contact_angle", None)
+    if a is None:
+        raise TypeError("bearing must have a nominal_contact_angle [rad] (a ballrace."
+                        f"BallBearing); got {type(bearing).__name__}")
+    return "deep-groove" if a == 0.0 else "angular-contact"
 
 
 def _s(x):

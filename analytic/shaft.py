@@ -691,11 +691,38 @@ class ShaftResult:
         (bearing 1, bearing 2) for a duplex pair; ball loads, contact angles, Hertz
         contacts, subsurface shear and truncation as for a single bearing.  Built on
         first access by loaddist's own checked solver with every DOF imposed."""
+        from . import _operating
+
         out = []
-        for k in range(len(self.seats)):
-            ld = [_ring_result(b, c, ul) for kk, b, c, ul in self._rows if kk == k]
-            out.append(ld[0] if len(ld) == 1 else tuple(ld))
+        with _operating.quiet():            # solve() has said what needs saying
+            for k in range(len(self.seats)):
+                ld = [_ring_result(b, c, ul) for kk, b, c, ul in self._rows if kk == k]
+                out.append(ld[0] if len(ld) == 1 else tuple(ld))
         return tuple(out)
+
+    def _seat_rows(self, k) -> tuple:
+        b = self.bearings[k]
+        return b if isinstance(b, tuple) else (b,)
+
+    @property
+    def max_pressure(self) -> np.ndarray:
+        """Largest contact pressure p_max of each seat (all its rows, both races) [Pa],
+        (n_seats,)."""
+        return np.array([max(float(np.max(ld.max_pressure)) for ld in self._seat_rows(k))
+                         for k in range(len(self.seats))])
+
+    @property
+    def static_safety(self) -> np.ndarray:
+        r"""Static safety of each seat's most loaded contact, s0 = (4200 MPa / p_max)^3 [-],
+        (n_seats,).
+
+        From the actual largest contact pressure at the seat -- radial and axial load,
+        moment, tilt, clearance and preload included -- by
+        :func:`~ballrace.analytic.ratings.static_safety_from_pressure` (ISO 76:2006 bases
+        C0 on 4200 MPa); inf for an unloaded seat.  :func:`solve` warns when it is below 1.
+        """
+        from .ratings import static_safety_from_pressure
+        return np.asarray(static_safety_from_pressure(self.max_pressure), float)
 
     def stiffness(self, x) -> np.ndarray:
         r"""Linearised 5x5 stiffness of the whole shaft on its bearings at a node [N/m, N/rad,
@@ -1175,6 +1202,7 @@ def solve(shaft: Shaft, seats, loads=(), *, gravity=None, shaft_temperature_chan
     max_iter = _count(max_iter, "max_iter")
     if dTs and shaft.thermal_expansion == 0.0:
         raise ValueError("shaft_temperature_change needs shaft.thermal_expansion [1/K] > 0")
+    _thermal_checks(seats, dTs, dTh, ah)
     if thermal_reference is None:
         loc = [s.position for s in seats if not s.floating]
         thermal_reference = loc[0] if loc else seats[0].position
@@ -1214,12 +1242,73 @@ def solve(shaft: Shaft, seats, loads=(), *, gravity=None, shaft_temperature_chan
         ul[0] += off
         rows.append((k, b, c, ul))
     U = pb.full(X)
-    return ShaftResult(shaft=shaft, seats=seats, loads=loads, nodes=pb.nodes,
-                       node_displacements=U, reactions=Rs,
-                       ring_displacements=rel, housing_displacements=W, seat_stiffness=Ks,
-                       iterations=its, residual=res,
-                       gravity=np.zeros(3) if gravity is None else gravity,
-                       _phi=pb.phi, _weight=pb.weight, _rows=tuple(rows), _X=X, _pb=pb)
+    return _checked(ShaftResult(shaft=shaft, seats=seats, loads=loads, nodes=pb.nodes,
+                                node_displacements=U, reactions=Rs,
+                                ring_displacements=rel, housing_displacements=W,
+                                seat_stiffness=Ks, iterations=its, residual=res,
+                                gravity=np.zeros(3) if gravity is None else gravity,
+                                _phi=pb.phi, _weight=pb.weight, _rows=tuple(rows), _X=X,
+                                _pb=pb))
+
+
+#: A uniform temperature change from assembly [K] beyond which :func:`solve` asks whether
+#: the value is meant: service temperatures of steel shafts in rolling bearings stay
+#: within about 150 K of assembly (bearing steels are dimensionally stabilised for
+#: 120-200 degC).
+TEMPERATURE_CHANGE_WARN = 150.0
+
+
+def _thermal_checks(seats, dTs, dTh, ah) -> None:
+    """UserWarnings for temperature changes that do nothing (one axial location) or that
+    are implausibly large."""
+    from . import _operating
+
+    for name, dT in (("shaft_temperature_change", dTs), ("housing_temperature_change", dTh)):
+        if abs(dT) > TEMPERATURE_CHANGE_WARN:
+            _operating.warn(f"{name} = {dT:g} K: a uniform temperature change of more than "
+                            f"{TEMPERATURE_CHANGE_WARN:g} K from assembly is unusual for a "
+                            "bearing shaft and its housing - check the value (a temperature "
+                            "given where a change is meant?)")
+    n_loc = sum(not s.floating for s in seats)
+    if n_loc <= 1:
+        for name, dT, active in (("shaft_temperature_change", dTs, dTs != 0.0),
+                                 ("housing_temperature_change", dTh, dTh != 0.0 and ah != 0.0)):
+            if active:
+                _operating.warn(
+                    f"{name} = {dT:g} K has no effect: "
+                    + ("only one seat locates" if n_loc else "no seat locates")
+                    + " the shaft axially (the others float), so the thermal growth of shaft "
+                    "and housing is free and changes no load; it matters with two or more "
+                    "locating seats (e.g. an O or X arrangement of two angular-contact seats)")
+
+
+def _checked(r: ShaftResult) -> ShaftResult:
+    """``r``, after UserWarnings for each seat working beyond its limits: static safety
+    s0 < 1, a deep-groove bearing beyond
+    :data:`~ballrace.analytic.ratings.DEEP_GROOVE_ANGLE_LIMIT`, a tilt beyond
+    :data:`~ballrace.analytic.ratings.PERMISSIBLE_MISALIGNMENT`."""
+    from . import _operating as op
+
+    if op.silenced():
+        return r
+    try:
+        r.bearings
+    except (ValueError, ConvergenceError) as exc:         # pragma: no cover - defensive
+        log.debug("shaft: seat checks skipped (%s)", exc)
+        return r
+    for k, s in enumerate(r.seats):
+        what = (f"shaft seat {k}" + (f" '{s.name}'" if s.name else "")
+                + f" (x = {s.position * 1e3:g} mm)")
+        b = s.ball_bearing
+        rows = r._seat_rows(k)
+        Q = np.concatenate([np.atleast_1d(ld.ball_loads) for ld in rows])
+        beta = np.concatenate([np.atleast_1d(ld.contact_angles) for ld in rows])
+        safety = None
+        if op.may_be_overloaded(b, Q):
+            safety = op.safety_message(what, r.static_safety[k], r.max_pressure[k])
+        op.emit(safety, op.angle_message(what, b, Q, beta),
+                op.tilt_message(what, b, r.misalignment[k]))
+    return r
 
 
 def _scales(pb):

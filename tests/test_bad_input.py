@@ -248,6 +248,9 @@ TABLE.update({
                                      dict(static_rating_N="scale",
                                           static_equivalent_load_N="scale"),
                                      ("static_rating_N", "static_equivalent_load_N")),
+    "ratings.static_safety_from_pressure": (dict(p_max=3e9, kind="ball"),
+                                            dict(p_max="load", kind="choice"), ()),
+    "ratings.bearing_type": (dict(bearing=BEARING), dict(bearing="object"), ()),
 })
 
 # life
