@@ -1392,8 +1392,8 @@ def _checked(r: LoadDistribution) -> LoadDistribution:
     """``r``, after warning (UserWarning, once per check) where the bearing works beyond its
     limits: static safety s0 < 1 (:attr:`LoadDistribution.static_safety`), a deep-groove
     bearing beyond :data:`~ballrace.analytic.ratings.DEEP_GROOVE_ANGLE_LIMIT`, a tilt
-    beyond :data:`~ballrace.analytic.ratings.PERMISSIBLE_MISALIGNMENT` that the loads
-    caused (not one the caller imposed)."""
+    beyond :data:`~ballrace.analytic.ratings.PERMISSIBLE_MISALIGNMENT` that an applied
+    moment caused (not one the caller imposed, nor the zero-moment tilt of a free ring)."""
     from . import _operating as op
 
     if op.silenced():
@@ -1404,7 +1404,11 @@ def _checked(r: LoadDistribution) -> LoadDistribution:
         p, s0 = op.pressure_and_safety(r.inner, r.outer)
         safety = op.safety_message(what, s0, p)
     tilt = None
-    if not np.all(r.imposed[..., 3:]):            # an imposed tilt is the caller's choice
+    # An imposed tilt is the caller's choice; a free ring under no moment takes whatever tilt
+    # makes its moment zero, an artefact of that boundary condition (a shaft holds it): only
+    # a tilt caused by an applied moment is the bearing's.
+    free = ~np.asarray(r.imposed[..., 3:], bool)
+    if np.any(free & (np.asarray(r.applied[..., 3:]) != 0.0)):
         tilt = op.tilt_message(what, r.bearing, np.hypot(r.displacements[..., 3],
                                                          r.displacements[..., 4]))
         if tilt:
