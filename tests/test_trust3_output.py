@@ -248,9 +248,16 @@ def test_double_hyphens_are_never_typeset_as_dashes(tmp_path):
 
     import casepages
 
+    import logging
+
+    levels = {n: logging.getLogger(n).level for n in ("ballrace", "skfem")}
     spec = importlib.util.spec_from_file_location("ballrace_docs_conf_t3", DOCS / "conf.py")
     conf = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(conf)
+    try:
+        spec.loader.exec_module(conf)               # conf.py sets these loggers' levels
+    finally:
+        for n, level in levels.items():
+            logging.getLogger(n).setLevel(level)
     assert "d" not in conf.smartquotes_action.lower()
     casepages.write_pages(tmp_path)
     page = (tmp_path / "cases" / "fem_hertz_limits.rst").read_text(encoding="utf-8")
