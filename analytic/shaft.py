@@ -1297,7 +1297,7 @@ def _checked(r: ShaftResult) -> ShaftResult:
         log.debug("shaft: seat checks skipped (%s)", exc)
         return r
     for k, s in enumerate(r.seats):
-        what = (f"shaft seat {k}" + (f" '{s.name}'" if s.name else "")
+        what = (f"shaft seats[{k}]" + (f" '{s.name}'" if s.name else "")
                 + f" (x = {s.position * 1e3:g} mm)")
         b = s.ball_bearing
         rows = r._seat_rows(k)

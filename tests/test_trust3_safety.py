@@ -179,8 +179,8 @@ def test_shaft_seat_warns_at_2_to_3_c0():
         warnings.simplefilter("always")
         r = S.solve(shaft, seats, [S.PointLoad(0.1, Fy=5 * C0_6208)])
     msg = [str(w.message) for w in rec]
-    assert sum(m.startswith("shaft seat 0 'A' (x = 20 mm): static safety s0 = ") for m in msg) == 1
-    assert sum(m.startswith("shaft seat 1 'B' (x = 180 mm): static safety s0 = ") for m in msg) == 1
+    assert sum(m.startswith("shaft seats[0] 'A' (x = 20 mm): static safety s0 = ") for m in msg) == 1
+    assert sum(m.startswith("shaft seats[1] 'B' (x = 180 mm): static safety s0 = ") for m in msg) == 1
     assert np.all(r.static_safety < 1.0)
     np.testing.assert_allclose(r.static_safety,
                                ratings.static_safety_from_pressure(r.max_pressure), rtol=1e-14)

@@ -85,7 +85,7 @@ def test_overhung_6208_is_flagged(overhung):
     assert res.returncode == 0, res.stderr
     err = res.stderr.splitlines()
     assert len(err) == 3, res.stderr
-    assert err[0].startswith("warning: shaft seat 0 'A' (x = 10 mm): static safety s0 = 0.796 < 1")
+    assert err[0].startswith("warning: shaft seats[0] 'A' (x = 10 mm): static safety s0 = 0.796 < 1")
     assert "contact angles up to 39.4 deg (limit 30 deg" in err[1]
     assert "tilted 14 mrad (48.1 arcmin)" in err[2]
     out = res.stdout
