@@ -331,3 +331,13 @@ def test_exponent_bombs_refused_at_once(text):
     with pytest.raises(ValueError, match="exponent"):
         parse_quantity(text, "[force]", "load")
     assert parse_quantity("68 mm^2/s", "[length] ** 2 / [time]", "nu40") == pytest.approx(6.8e-5)
+
+
+def test_teach_subsurface_warns_unit_slips_like_contact(tmp_path):
+    """`teach subsurface` reads the same options as `contact`: the same one-line warnings."""
+    r = _main(["teach", "subsurface", "--E1", "200 MPa", "--rx1", "6.35 m",
+               "--out", str(tmp_path / "t.png")])
+    lines = r.stderr.splitlines()
+    assert lines[0].startswith("warning: --rx1 = '6.35 m' (6.35 m) is larger than")
+    assert lines[1] == ("warning: --E1 = '200 MPa' (0.2 GPa) is softer than the materials of "
+                        "rolling contacts (0.5 ... 2000 GPa); was '200 GPa' meant?")

@@ -369,6 +369,11 @@ def teach_subsurface(
         e = parse_quantity(e1, "[pressure]", "E1")
     except ValueError as exc:
         _usage(console, str(exc))
+    from ballrace.units import plausible
+
+    for (n, v), r in zip((("--rx1", rx1), ("--ry1", ry1), ("--rx2", rx2), ("--ry2", ry2)), radii):
+        plausible(r, v, n, "radius")                # "6.35 m" for "6.35 mm": a warning
+    plausible(e, e1, "--E1", "modulus")             # "200 MPa" for "200 GPa": a warning
     from ballrace.console import output_folder
 
     if _missing("matplotlib"):
