@@ -1297,9 +1297,26 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
     what = (f"Fa={L[0]:g} N, Fr={L[1]:g} N, Fz={L[2]:g} N, speed_inner={wi:g} rad/s, "
             f"speed_outer={wo:g} rad/s, control={control!r}, gyroscopic={gyroscopic!r}, "
             f"orbital={orbital!r}")
+    prev = None
     for _ in range(8 if control == "jones" else 1):
-        sysm, x, b = _equilibrium(model, psi, L, free, wi, wo, gyroscopic, static, F_ref,
-                                  Q_ref, orbital, outer, u0, rtol, max_iter, count, what)
+        try:
+            sysm, x, b = _equilibrium(model, psi, L, free, wi, wo, gyroscopic, static, F_ref,
+                                      Q_ref, orbital, outer, u0, rtol, max_iter, count, what)
+        except ConvergenceError:
+            if prev is None:
+                raise
+            # a new Jones race-control choice: the equilibrium of the previous choice is the
+            # start (continuation in the choice; from the static start, and in speed from
+            # the static solution, a few balls changed to inner control can fail where the
+            # neighbouring equilibrium is a few Newton steps away)
+            sysm = _System(model, psi, L, free, wi, wo, gyroscopic, static, F_ref, Q_ref,
+                           orbital)
+            sysm.outer = outer
+            x, b, err, it = _damped_newton(sysm, prev, rtol, max_iter)
+            count[0] += it
+            if not err <= rtol:
+                raise
+            log.debug("highspeed: Jones round solved from the previous round's equilibrium")
         if control != "jones" or static:
             break
         new = _jones_outer(bearing, b)
@@ -1308,6 +1325,7 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
         log.debug("highspeed: Jones race control changed for %d balls", int(np.sum(new != outer)))
         outer = new
         u0 = sysm.unpack(x)[2]
+        prev = x
     else:
         log.warning("highspeed: Jones race-control choice did not settle after 8 rounds")
     total_it = count[0]
