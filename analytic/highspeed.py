@@ -1436,6 +1436,15 @@ def _equilibrium(model, psi, L, free, wi, wo, gyro, static, F_ref, Q_ref, orbita
             + "".join(f"; at the last full-speed iterate {w}"
                       for w in _model_limits(model, b_direct)) + hint)
     reasons = _model_limits(model, last[2])
+    Fmax = max(abs(L[0]), abs(L[1]), abs(L[2]), abs(L[3]) / model.Ri, abs(L[4]) / model.Ri)
+    if not reasons and Fmax <= 1e3 * rtol * F_ref:
+        # not a property of the model: the load is lost in the tolerance of the residual
+        raise ConvergenceError(
+            f"high-speed equilibrium not found (scaled residual {err:.3e}, rtol {rtol:g}, "
+            f"after {count[0]} Newton iterations; {what}): the applied load, {Fmax:.3g} N, "
+            f"is below 1e3 rtol of the load scale {F_ref:.4g} N (the balls' centrifugal "
+            f"forces), so the inner ring is hardly located at this tolerance and round-off "
+            f"hides the equilibrium; a larger load (or a larger rtol) may solve")
     if exhausted:
         raise ConvergenceError(
             f"high-speed equilibrium not found: Newton from the static start failed, and the "

@@ -1253,6 +1253,15 @@ def _scales(pb):
 def _newton(pb, rtol, max_iter, X0=None):
     """Global Newton with load stepping; returns (X, iterations, relative residual)."""
     sc, _ = _scales(pb)
+    Fext = max([float(np.abs(p.vector).max()) for p in pb.loads]
+               + [float(np.abs(pb.f_base).max()), 0.0])
+    if 0.0 < Fext < 1e-290:
+        # the residual's scale has a floor of 1e-300 N: such loads would "converge" at the
+        # unloaded position without being carried
+        raise ConvergenceError(
+            f"shaft equilibrium: the loads (largest {Fext:.3g} N) are below what the solver "
+            "resolves (the residual's scale has a floor of 1e-300 N); apply 0 or a load of "
+            "physical size")
     total = 0
     if X0 is not None and X0.shape == (pb.N,):
         X, it, err, ok = _newton_step(pb, X0.copy(), 1.0, sc, rtol, max_iter)
