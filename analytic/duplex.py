@@ -596,7 +596,6 @@ class DuplexPair:
         if self.arrangement != "DT" and P == 0 and Fa == 0 and Fr > 0:
             log.info("duplex: no preload and no axial load; the radial load alone sets "
                      "the axial position")
-        A = self.bearing.curvature_center_distance
         cap = 2.0 * _Model.of(self.bearing).capacity
         if max(abs(Fa) + P, Fr) > cap:
             raise ValueError(

@@ -100,9 +100,10 @@ predictor, Newton corrector, adaptive step; where the branch bends sharply, step
 2^-14 of the speed); where that branch ends before the full speed -- at a groove edge,
 or where the friction needed exceeds the contact loads -- :class:`ConvergenceError` says
 where and why.  Where other equilibria exist for the same inputs, this is the one
-connected to the static solution (see :func:`solve`, Notes).  At zero speed every ball lies on the line
-of centres with the deflection shared in the ratio of the contact stiffnesses, which is
-exactly the static model; this is used when both ring speeds are zero.  The exact-Hertz
+connected to the static solution (see :func:`solve`, Notes).  At zero speed every ball
+lies on the line of centres with the deflection shared in the ratio of the contact
+stiffnesses, which is exactly the static model; this is used when both ring speeds are
+zero.  The exact-Hertz
 K(alpha) of each race is evaluated from a Chebyshev series in cos(alpha) fitted once per
 bearing to 1e-13 of :func:`ballrace.analytic.hertz.contact_stiffness`.
 """
@@ -1492,8 +1493,10 @@ def _continue_carefully(system, s, last, tangent, rtol, max_iter, count):
     of the speed still needs more Newton iterations than the first pass allows.  Here:
     steps down to 2^-14 of the speed, the Euler predictor and, if it fails, the last
     solution itself (zero-order predictor), up to 30 Newton iterations per step, and
-    steps of at most 1/16 of the speed (small steps keep Newton on the branch).  At most _CAREFUL_STEPS steps and _CAREFUL_ITERATIONS Newton iterations.  Returns (s, last, scaled residual, True if
-    the steps ran out before the branch ended or reached s = 1)."""
+    steps of at most 1/16 of the speed (small steps keep Newton on the branch).  At most
+    _CAREFUL_STEPS steps and _CAREFUL_ITERATIONS Newton iterations.  Returns (s, last,
+    scaled residual, True if the budget ran out before the branch ended or reached s = 1).
+    """
     ds, err = 1.0 / 256, np.inf
     used = 0
     for _ in range(_CAREFUL_STEPS):

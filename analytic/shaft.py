@@ -1272,8 +1272,8 @@ def _newton(pb, rtol, max_iter, X0=None):
         ~1e-8 N, which hide the imbalance of a load of a few mN."""
         if _split_error(pb, X, sc) <= 100.0 * rtol:
             return X, err
-        Xr, it, er, okr = _newton_step(pb, X, 1.0, sc, rtol, max_iter, robust=True)
         nonlocal total
+        Xr, it, er, okr = _newton_step(pb, X, 1.0, sc, rtol, max_iter, robust=True)
         total += it
         return (Xr, er) if okr else None
 
