@@ -565,6 +565,14 @@ class DuplexPair:
         -------
         DuplexResult
 
+        Notes
+        -----
+        Damped Newton in (x, delta_r) from a power-law start.  A tandem pair is one row
+        carrying ((F_a + P_s)/2, F_r/2) with its rings parallel; where its Newton fails
+        (little net thrust against the radial load: the equilibrium lies near the groove
+        bottom, far from the thrust-only start) it restarts from the single-row solution
+        (:func:`ballrace.analytic.loaddist.solve` with the tilts imposed zero).
+
         Raises
         ------
         ConvergenceError

@@ -1125,7 +1125,15 @@ def solve(shaft: Shaft, seats, loads=(), *, gravity=None, shaft_temperature_chan
     bearing's relative displacement, a backtracking (Armijo) line search on the total
     potential -- beam, loads, springs and the bearings' contact energies, whose gradient
     is the residual -- or on the scaled residual norm, and load stepping (quarters of the
-    load, then finer) when the full load fails.
+    load, then finer) when the full load fails.  Where that fails, or where its result
+    does not balance once the shaft's rigid-body motion is taken out of its elastic
+    forces (the condensed stiffness maps a rigid motion to zero only to ~1e-13 of its
+    size, ~1e-8 N for a shaft moved 0.1 mm through its clearance), a robust iteration
+    keeps that motion apart from the deformation, scales the Levenberg floor with the
+    loads' geometric stiffness F/A, and starts with the balls of every single-row seat at
+    the bottom of their grooves: a lateral load of a few mN down to 1e-6 N on deep-groove
+    seats with clearance then balances to rtol.  Below that the ConvergenceError names the
+    round-off limit.
 
     Parameters
     ----------
