@@ -193,9 +193,11 @@ def axial_deflection(bearing: BallBearing, Fa, rtol: float = 1e-13, max_iter: in
     bearing : BallBearing
         The bearing.
     Fa : float
-        Thrust load [N], >= 0.
+        Thrust load [N], >= 0.  Loads below the model's round-off resolution, about
+        Z K_n (eps A)^{3/2} (1e-18 N for a 20 mm ball), give a deflection at the round-off
+        level eps A of the groove-centre distance A.
     rtol : float, optional
-        Relative tolerance on the load.
+        Relative tolerance on the load [-].
     max_iter : int, optional
         Iteration limit.
 
@@ -227,7 +229,14 @@ def axial_deflection(bearing: BallBearing, Fa, rtol: float = 1e-13, max_iter: in
     return _inverse(bearing, F, rtol, max_iter)
 
 
-def _inverse(bearing, F, rtol=1e-13, max_iter=200):
+#: Doublings of the bracket in :func:`_inverse`: from the smallest positive float to 10 A
+#: of any bearing is fewer than 1100; the bound only makes the loop visibly finite.
+_MAX_DOUBLINGS = 2200
+
+
+def _inverse(bearing, F, rtol=1e-13, max_iter=200, name="Fa"):
+    """delta_a with F_a(delta_a, 0) = F [m] for F >= 0 [N] (any F down to the smallest
+    positive float: every loop is bounded)."""
     if F == 0.0:
         return 0.0
     A = bearing.curvature_center_distance
@@ -236,12 +245,23 @@ def _inverse(bearing, F, rtol=1e-13, max_iter=200):
     m = _Model.of(bearing)
     sf = max(float(np.sin(m.beta_f)), 0.1)
     lo, hi = 0.0, min(1.5 * (F / (m.Z * m.Kn_free * sf)) ** (2.0 / 3.0) / sf, A)
+    if not hi > 0.0:
+        # F / (Z K_n) underflowed (F of order 1e-300 N or less): the same guess in logs,
+        # never below the smallest positive float, so that doubling can grow it
+        hi = min(max(1.5 * np.exp((np.log(F) - np.log(m.Z * m.Kn_free * sf)) / 1.5) / sf,
+                     5e-324), A)
     f_hi, k_hi = _axial(bearing, hi)
-    while f_hi < F:
+    for _ in range(_MAX_DOUBLINGS):
+        if not f_hi < F:
+            break
         lo, hi = hi, 2.0 * hi
         if hi > 10.0 * A:
-            raise ValueError(f"Fa={F!r} N is beyond the load-deflection range of the bearing")
+            raise ValueError(f"{name}={F!r} N is beyond the load-deflection range of the "
+                             f"bearing")
         f_hi, k_hi = _axial(bearing, hi)
+    else:
+        raise ConvergenceError(f"axial deflection: no upper bound for {name}={F!r} N after "
+                               f"{_MAX_DOUBLINGS} doublings (last {hi:.6g} m)")
     # Newton on the increasing, convex-ish curve from the upper end, kept inside the
     # bracket (bisection when a step leaves it), with the analytic slope dFa/dda
     x, fx, kx = hi, f_hi - F, k_hi
@@ -411,8 +431,11 @@ class DuplexPair:
     arrangement : {"DB", "DF", "DT"}
         Back-to-back, face-to-face or tandem.
     preload : float
-        Axial preload P [N], >= 0: for DB/DF the axial load in each bearing with no
-        external load; for DT a constant axial spring load on the pair.
+        Axial preload P [N]: 0 (no preload) or in [1e-30, 1e30] N; for DB/DF the axial
+        load in each bearing with no external load; for DT a constant axial spring load
+        on the pair.  A positive preload below 1e-30 N (e.g. a subnormal float) is refused
+        with a ValueError rather than read as zero: it would deflect the rings by less
+        than 1e-26 m, which no pair can be set to, and is most likely a slip.
 
     References
     ----------
@@ -439,7 +462,10 @@ class DuplexPair:
             raise TypeError("bearing must be a ballrace.BallBearing; got "
                             f"{type(self.bearing).__name__}")
         check_choice(self.arrangement, "arrangement", ARRANGEMENTS)
-        p = check_nonnegative(self.preload, "preload", "N", bounded=True, tiny_ok=True)
+        # 0 or a physical magnitude in [1e-30, 1e30] N (MIN_MAGNITUDE, MAX_MAGNITUDE): a
+        # preload below 1e-30 N (a subnormal one above all) deflects the rings by less
+        # than 1e-26 m, nothing a pair can be set to; it is refused rather than read as 0
+        p = check_nonnegative(self.preload, "preload", "N", bounded=True)
         if p.ndim:
             raise TypeError("preload must be a scalar [N]")
         object.__setattr__(self, "preload", float(p))
@@ -447,9 +473,12 @@ class DuplexPair:
     @functools.cached_property
     def preload_deflection(self) -> float:
         """Axial deflection delta_0 of each bearing under the preload alone [m]."""
-        if self.arrangement == "DT":
-            return _inverse(self.bearing, 0.5 * self.preload)
-        return _inverse(self.bearing, self.preload)
+        half = 0.5 if self.arrangement == "DT" else 1.0
+        try:
+            return _inverse(self.bearing, half * self.preload)
+        except ValueError:
+            raise ValueError(f"preload={self.preload!r} N is beyond the load-deflection range "
+                             f"of the pair") from None
 
     @functools.cached_property
     def unloading_load(self) -> float:
@@ -502,75 +531,11 @@ class DuplexPair:
             J[:, k] = (self._pair(x + ex, dr + er) - self._pair(x - ex, dr - er)) / (2 * h)
         return J
 
-    def solve(self, Fa=0.0, Fr=0.0, rtol: float = 1e-10, max_iter: int = 100) -> DuplexResult:
-        r"""Load sharing of the pair under external axial and radial loads.
-
-        Parameters
-        ----------
-        Fa : float
-            External axial load on the shaft [N]; positive loads bearing 1.
-        Fr : float
-            External radial load [N], >= 0.
-        rtol : float, optional
-            Equilibrium tolerance relative to max(|Fa|, Fr, preload, 1 N) [-].
-        max_iter : int, optional
-            Newton iteration limit.
-
-        Returns
-        -------
-        DuplexResult
-
-        Raises
-        ------
-        ConvergenceError
-            If equilibrium is not reached (message gives residual and iterations).
-        ValueError
-            If a tandem pair is loaded against its contact direction beyond its preload,
-            or a pair without preload has no load at all in its axial direction.
-
-        References
-        ----------
-        Harris (2001) §7.5; Hamrock & Dowson (1981) eqs. (3.61)–(3.74).
-
-        Examples
-        --------
-        >>> import ballrace
-        >>> brg = ballrace.BallBearing(20.638e-3, 13, 87.5e-3, 0.52, 0.52,
-        ...                            free_contact_angle=np.radians(40))
-        >>> pair = DuplexPair(brg, "DB", preload=5000.0)
-        >>> r = pair.solve(Fa=20000.0)
-        >>> r.separated, round(float(r.axial_loads[0]))
-        (True, 20000)
-        """
-        Fa = float(as_array(Fa, "Fa"))
-        Fr = float(check_nonnegative(Fr, "Fr", "N"))
-        P = self.preload
-        if self.arrangement == "DT" and Fa + P < 0:
-            raise ValueError(f"Fa must be >= -preload = {-P:g} N for a tandem (DT) pair: it "
-                             f"carries thrust in one direction only; got {Fa!r}")
-        if self.arrangement != "DT" and P == 0 and Fa == 0 and Fr > 0:
-            log.info("duplex: no preload and no axial load; the radial load alone sets "
-                     "the axial position")
+    def _newton(self, x, dr, target, scale, radial_free, rtol, max_iter):
+        """Damped Newton on the pair's equilibrium from (x, dr) [m]; returns
+        (x, dr, residual, Jacobian, relative residual, iterations)."""
         A = self.bearing.curvature_center_distance
-        cap = 2.0 * _Model.of(self.bearing).capacity
-        if max(abs(Fa) + P, Fr) > cap:
-            raise ValueError(
-                f"Fa={Fa!r} N, Fr={Fr!r} N (preload {P:g} N) are beyond the load-deflection "
-                f"range of the pair: its {2 * self.bearing.n_balls} balls carry at most "
-                f"{cap:.4g} N at a contact approach of {MAX_APPROACH_RATIO:g} D")
-        scale = max(abs(Fa), Fr, P, 1.0)                 # 1 N floor: tiny loads
-        target = np.array([Fa, Fr])
         d0 = self.preload_deflection
-        # start: rough power-law split for x, small radial displacement
-        if self.arrangement == "DT":
-            x = _inverse(self.bearing, 0.5 * (Fa + P)) - d0 if Fa + P > 0 else 0.0
-        else:
-            # beyond the unloading load bearing 2 is off and bearing 1 carries Fa alone
-            x = 0.0 if Fa == 0 else float(np.sign(Fa)) * (
-                _inverse(self.bearing, abs(Fa)) - d0 if abs(Fa) >= self.unloading_load
-                else min(_inverse(self.bearing, abs(Fa) + P) - d0, d0))
-        dr = 0.0
-        radial_free = Fr > 0
         r, J = self._pair(x, dr, jac=True)
         r = r - target
         err = np.max(np.abs(r if radial_free else r[:1])) / scale
@@ -612,6 +577,109 @@ class DuplexPair:
                 break
             x, dr, r, J = xn, drn, rn, Jn
             err = np.max(np.abs(r)) / scale
+        return x, dr, r, J, err, it
+
+    def _row_start(self, Fa, Fr):
+        """(x, dr) of a tandem pair from the single-row solver [m], or None where it fails."""
+        from .loaddist import solve as _row_solve
+        try:
+            u = _row_solve(self.bearing, Fa=0.5 * (Fa + self.preload), Fy=0.5 * Fr,
+                           displacements=[np.nan, np.nan, np.nan, 0.0, 0.0]).displacements
+        except (ValueError, ConvergenceError):
+            return None
+        if not np.all(np.isfinite(u)):
+            return None
+        return float(u[0]) - self.preload_deflection, float(u[1])
+
+    def solve(self, Fa=0.0, Fr=0.0, rtol: float = 1e-10, max_iter: int = 100) -> DuplexResult:
+        r"""Load sharing of the pair under external axial and radial loads.
+
+        Parameters
+        ----------
+        Fa : float
+            External axial load on the shaft [N]; positive loads bearing 1.
+        Fr : float
+            External radial load [N], >= 0.
+        rtol : float, optional
+            Equilibrium tolerance relative to max(|Fa|, Fr, preload, 1 N) [-].
+        max_iter : int, optional
+            Newton iteration limit.
+
+        Returns
+        -------
+        DuplexResult
+
+        Notes
+        -----
+        Damped Newton in (x, delta_r) from a power-law start.  A tandem pair is one row
+        carrying ((F_a + P_s)/2, F_r/2) with its rings parallel; where its Newton fails
+        (little net thrust against the radial load: the equilibrium lies near the groove
+        bottom, far from the thrust-only start) it restarts from the single-row solution
+        (:func:`ballrace.analytic.loaddist.solve` with the tilts imposed zero).
+
+        Raises
+        ------
+        ConvergenceError
+            If equilibrium is not reached (message gives residual and iterations).
+        ValueError
+            If a tandem pair is loaded against its contact direction beyond its preload,
+            or a pair without preload has no load at all in its axial direction.
+
+        References
+        ----------
+        Harris (2001) §7.5; Hamrock & Dowson (1981) eqs. (3.61)–(3.74).
+
+        Examples
+        --------
+        >>> import ballrace
+        >>> brg = ballrace.BallBearing(20.638e-3, 13, 87.5e-3, 0.52, 0.52,
+        ...                            free_contact_angle=np.radians(40))
+        >>> pair = DuplexPair(brg, "DB", preload=5000.0)
+        >>> r = pair.solve(Fa=20000.0)
+        >>> r.separated, round(float(r.axial_loads[0]))
+        (True, 20000)
+        """
+        Fa = float(as_array(Fa, "Fa"))
+        Fr = float(check_nonnegative(Fr, "Fr", "N"))
+        P = self.preload
+        if self.arrangement == "DT" and Fa + P < 0:
+            raise ValueError(f"Fa must be >= -preload = {-P:g} N for a tandem (DT) pair: it "
+                             f"carries thrust in one direction only; got {Fa!r}")
+        if self.arrangement != "DT" and P == 0 and Fa == 0 and Fr > 0:
+            log.info("duplex: no preload and no axial load; the radial load alone sets "
+                     "the axial position")
+        cap = 2.0 * _Model.of(self.bearing).capacity
+        if max(abs(Fa) + P, Fr) > cap:
+            raise ValueError(
+                f"Fa={Fa!r} N, Fr={Fr!r} N (preload {P:g} N) are beyond the load-deflection "
+                f"range of the pair: its {2 * self.bearing.n_balls} balls carry at most "
+                f"{cap:.4g} N at a contact approach of {MAX_APPROACH_RATIO:g} D")
+        scale = max(abs(Fa), Fr, P, 1.0)                 # 1 N floor: tiny loads
+        target = np.array([Fa, Fr])
+        d0 = self.preload_deflection
+        # start: rough power-law split for x, small radial displacement
+        if self.arrangement == "DT":
+            x = _inverse(self.bearing, 0.5 * (Fa + P)) - d0 if Fa + P > 0 else 0.0
+        else:
+            # beyond the unloading load bearing 2 is off and bearing 1 carries Fa alone
+            x = 0.0 if Fa == 0 else float(np.sign(Fa)) * (
+                _inverse(self.bearing, abs(Fa)) - d0 if abs(Fa) >= self.unloading_load
+                else min(_inverse(self.bearing, abs(Fa) + P) - d0, d0))
+        radial_free = Fr > 0
+        x, dr, r, J, err, it = self._newton(x, 0.0, target, scale, radial_free, rtol, max_iter)
+        if not err <= rtol and self.arrangement == "DT" and radial_free:
+            # A tandem pair is one row carrying ((F_a + P_s)/2, F_r/2) with its rings kept
+            # parallel.  With little net thrust against the radial load its equilibrium lies
+            # far from the thrust-only start (at zero net thrust the balls sit at the groove
+            # bottom, delta_a = -A sin(beta_f)), where the damped Newton above crawls; the
+            # single-row solver (tilts imposed zero) gives a start next to it, polished here.
+            start = self._row_start(Fa, Fr)
+            if start is not None:
+                x2, dr2, r2, J2, err2, it2 = self._newton(start[0], start[1], target, scale,
+                                                          radial_free, rtol, max_iter)
+                it += it2
+                if err2 <= rtol or not err2 >= err:
+                    x, dr, r, J, err = x2, dr2, r2, J2, err2
         if not err <= rtol:
             d, _, _, Q, b = self._state(x, dr)
             lim = MAX_APPROACH_RATIO * self.bearing.ball_diameter

@@ -96,11 +96,14 @@ Starting values come from the static solution (:func:`ballrace.analytic.loaddist
 loaded balls on their static line of centres, unloaded balls pressed by the centrifugal
 force onto the outer race as near its groove bottom as the inner race lets them.  If
 Newton fails from there, the solution is followed in speed from the static one (Euler
-predictor, Newton corrector, adaptive step); where that branch ends before the full
-speed -- at a groove edge, or where the friction needed exceeds the contact loads --
-:class:`ConvergenceError` says where and why.  At zero speed every ball lies on the line
-of centres with the deflection shared in the ratio of the contact stiffnesses, which is
-exactly the static model; this is used when both ring speeds are zero.  The exact-Hertz
+predictor, Newton corrector, adaptive step; where the branch bends sharply, steps down to
+2^-14 of the speed); where that branch ends before the full speed -- at a groove edge,
+or where the friction needed exceeds the contact loads -- :class:`ConvergenceError` says
+where and why.  Where other equilibria exist for the same inputs, this is the one
+connected to the static solution (see :func:`solve`, Notes).  At zero speed every ball
+lies on the line of centres with the deflection shared in the ratio of the contact
+stiffnesses, which is exactly the static model; this is used when both ring speeds are
+zero.  The exact-Hertz
 K(alpha) of each race is evaluated from a Chebyshev series in cos(alpha) fitted once per
 bearing to 1e-13 of :func:`ballrace.analytic.hertz.contact_stiffness`.
 """
@@ -1244,6 +1247,24 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
     -------
     HighSpeedResult
 
+    Notes
+    -----
+    Which equilibrium.  The quasi-static equations can have more than one solution for
+    the same loads and speeds: e.g. under pure thrust, besides the axisymmetric one,
+    equilibria with the inner ring shifted radially and a few balls past the inner
+    groove edge (flagged in ``result.warnings``), or with inner-race control two nearby
+    equilibria.  This solver follows the one connected to the static solution: Newton
+    from the static solution's ball positions (loaded balls on their static line of
+    centres, unloaded ones pressed outwards by F_c) at the full speed, and where Newton
+    does not converge from there, the equilibrium followed in speed from the static
+    solution at zero speed (continuation with an Euler predictor; where that gives up
+    at a sharp bend of the branch -- a contact angle swinging towards the groove edge as
+    F_c grows under a light load -- it goes on from where it stopped with steps down to
+    2^-14 of the speed).  Other equilibria are not searched for.  With
+    ``control="jones"`` it starts with outer-race control for every ball and changes
+    the balls' control round by round to Jones's choice, each round from the static
+    start and, where that fails, from the previous round's equilibrium.
+
     Raises
     ------
     ConvergenceError
@@ -1342,9 +1363,26 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
     what = (f"Fa={L[0]:g} N, Fr={L[1]:g} N, Fz={L[2]:g} N, speed_inner={wi:g} rad/s, "
             f"speed_outer={wo:g} rad/s, control={control!r}, gyroscopic={gyroscopic!r}, "
             f"orbital={orbital!r}")
+    prev = None
     for _ in range(8 if control == "jones" else 1):
-        sysm, x, b = _equilibrium(model, psi, L, free, wi, wo, gyroscopic, static, F_ref,
-                                  Q_ref, orbital, outer, u0, rtol, max_iter, count, what)
+        try:
+            sysm, x, b = _equilibrium(model, psi, L, free, wi, wo, gyroscopic, static, F_ref,
+                                      Q_ref, orbital, outer, u0, rtol, max_iter, count, what)
+        except ConvergenceError:
+            if prev is None:
+                raise
+            # a new Jones race-control choice: the equilibrium of the previous choice is the
+            # start (continuation in the choice; from the static start, and in speed from
+            # the static solution, a few balls changed to inner control can fail where the
+            # neighbouring equilibrium is a few Newton steps away)
+            sysm = _System(model, psi, L, free, wi, wo, gyroscopic, static, F_ref, Q_ref,
+                           orbital)
+            sysm.outer = outer
+            x, b, err, it = _damped_newton(sysm, prev, rtol, max_iter)
+            count[0] += it
+            if not err <= rtol:
+                raise
+            log.debug("highspeed: Jones round solved from the previous round's equilibrium")
         if control != "jones" or static:
             break
         new = _jones_outer(bearing, b)
@@ -1353,6 +1391,7 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
         log.debug("highspeed: Jones race control changed for %d balls", int(np.sum(new != outer)))
         outer = new
         u0 = sysm.unpack(x)[2]
+        prev = x
     else:
         log.warning("highspeed: Jones race-control choice did not settle after 8 rounds")
     total_it = count[0]
@@ -1412,18 +1451,23 @@ def _equilibrium(model, psi, L, free, wi, wo, gyro, static, F_ref, Q_ref, orbita
             s = s_new
             last = (sy, xn, bn)
             if s < 1.0:                         # tangent dx/ds = -J^-1 dR/ds
-                h = 1e-6
-                sp_, sm_ = system(s + h), system(s - h)
-                dR = (sp_.residual(sp_.balls(xn)) - sm_.residual(sm_.balls(xn))) / (2 * h)
-                try:
-                    tangent = np.linalg.solve(sy.jacobian(xn, bn), -dR)
-                except np.linalg.LinAlgError:
-                    tangent = np.zeros_like(xn)
-                if not np.all(np.isfinite(tangent)):
-                    tangent = np.zeros_like(xn)
+                tangent = _tangent(system, s, sy, xn, bn)
             ds = min(2.0 * ds, 0.5)
         else:
             ds = 0.5 * (s_new - s)
+    careful = s < 1.0
+    if careful and last is None:
+        # not even the first step: from the static solution itself (exact at zero speed,
+        # where F_c and M_g vanish with their derivatives in s: zero tangent)
+        s0 = system(0.0)
+        x0 = _start(model, psi, u0, 0.0, 0.0, free, True)
+        b0 = s0.balls(x0)
+        if float(np.abs(s0.scaled(s0.residual(b0))).max()) <= rtol:
+            last, tangent = (s0, x0, b0), np.zeros_like(x0)
+    exhausted = False
+    if careful and last is not None:
+        s, last, err, exhausted = _continue_carefully(system, s, last, tangent, rtol,
+                                                      max_iter, count)
     if s >= 1.0:
         return last
     hint = (". With inner-race control the gyroscopic moment may need more friction than "
@@ -1438,14 +1482,95 @@ def _equilibrium(model, psi, L, free, wi, wo, gyro, static, F_ref, Q_ref, orbita
             + "".join(f"; at the last full-speed iterate {w}"
                       for w in _model_limits(model, b_direct)) + hint)
     reasons = _model_limits(model, last[2])
+    Fmax = max(abs(L[0]), abs(L[1]), abs(L[2]), abs(L[3]) / model.Ri, abs(L[4]) / model.Ri)
+    if not reasons and Fmax <= 1e3 * rtol * F_ref:
+        # not a property of the model: the load is lost in the tolerance of the residual
+        raise ConvergenceError(
+            f"high-speed equilibrium not found (scaled residual {err:.3e}, rtol {rtol:g}, "
+            f"after {count[0]} Newton iterations; {what}): the applied load, {Fmax:.3g} N, "
+            f"is below 1e3 rtol of the load scale {F_ref:.4g} N (the balls' centrifugal "
+            f"forces), so the inner ring is hardly located at this tolerance and round-off "
+            f"hides the equilibrium; a larger load (or a larger rtol) may solve")
+    if exhausted:
+        raise ConvergenceError(
+            f"high-speed equilibrium not found: Newton from the static start failed, and the "
+            f"equilibrium followed in speed from the static solution reached only "
+            f"{100 * s:.4g} % of the speed in the careful steps' budget (scaled "
+            f"residual {err:.3e}, rtol {rtol:g}, after {count[0]} Newton iterations; "
+            f"{what}); whether the branch goes on to the full speed is not known"
+            + "".join(f"; there {w}" for w in reasons) + hint)
     raise ConvergenceError(
         f"high-speed equilibrium not found: Newton from the static start failed, and the "
         f"equilibrium followed in speed from the static solution ends at {100 * s:.4g} % "
-        f"of the speed (none found within {100 / 64:.2g} % beyond; scaled residual "
-        f"{err:.3e}, rtol {rtol:g}, after {count[0]} Newton iterations; {what}). There: "
+        f"of the speed (none found within {100 * 2 * _CAREFUL_DS_MIN:.2g} % beyond; scaled "
+        f"residual {err:.3e}, rtol {rtol:g}, after {count[0]} Newton iterations; {what}). "
+        "There: "
         + ("; ".join(reasons) if reasons else "a turning point of the solution branch")
         + ". The quasi-static model has no solution on this branch at the given speed"
         + hint)
+
+
+def _tangent(system, s, sy, x, b):
+    """dx/ds = -J^-1 dR/ds of the branch at speed fraction s (central differences in s);
+    zero where J is singular."""
+    h = 1e-6
+    sp_, sm_ = system(s + h), system(s - h)
+    dR = (sp_.residual(sp_.balls(x)) - sm_.residual(sm_.balls(x))) / (2 * h)
+    try:
+        t = np.linalg.solve(sy.jacobian(x, b), -dR)
+    except np.linalg.LinAlgError:
+        return np.zeros_like(x)
+    return t if np.all(np.isfinite(t)) else np.zeros_like(x)
+
+
+#: Smallest speed step of the careful continuation [-], its number of steps and of Newton
+#: iterations (bounds on the time a case without equilibrium takes to say so).
+_CAREFUL_DS_MIN = 2.0**-14
+_CAREFUL_STEPS = 400
+_CAREFUL_ITERATIONS = 1000
+
+
+def _continue_carefully(system, s, last, tangent, rtol, max_iter, count):
+    """Go on along the branch from (s, last) where the first continuation gave up.
+
+    Where the branch bends sharply (a contact angle swinging towards the groove edge as
+    F_c grows under a light load), the Euler predictor lands far off and a step of 1/128
+    of the speed still needs more Newton iterations than the first pass allows.  Here:
+    steps down to 2^-14 of the speed, the Euler predictor and, if it fails, the last
+    solution itself (zero-order predictor), up to 30 Newton iterations per step, and
+    steps of at most 1/16 of the speed (small steps keep Newton on the branch).  At most
+    _CAREFUL_STEPS steps and _CAREFUL_ITERATIONS Newton iterations.  Returns (s, last,
+    scaled residual, True if the budget ran out before the branch ended or reached s = 1).
+    """
+    ds, err = 1.0 / 256, np.inf
+    used = 0
+    for _ in range(_CAREFUL_STEPS):
+        if not (s < 1.0 and ds >= _CAREFUL_DS_MIN):
+            return s, last, err, False
+        if used >= _CAREFUL_ITERATIONS:
+            break
+        s_new = min(1.0, s + ds)
+        sy = system(s_new)
+        x0 = last[1]
+        ok = False
+        for xg in (x0 + (s_new - s) * tangent, x0):
+            xn, bn, err, it = _damped_newton(sy, xg, rtol, min(max_iter, 30), 2.0**-20,
+                                             chord_steps=False)
+            count[0] += it
+            used += it
+            ok = err <= rtol
+            if ok:
+                break
+        log.debug("highspeed: careful continuation to %.6g of the speed: %s", s_new,
+                  "converged" if ok else f"failed ({err:.3e})")
+        if ok:
+            s, last = s_new, (sy, xn, bn)
+            if s < 1.0:
+                tangent = _tangent(system, s, sy, xn, bn)
+            ds = min(2.0 * ds, 1.0 / 16)
+        else:
+            ds = 0.5 * (s_new - s)
+    return s, last, err, s < 1.0 and ds >= _CAREFUL_DS_MIN
 
 
 def _model_limits(model, b):

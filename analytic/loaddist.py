@@ -1704,6 +1704,19 @@ def _retry(model, geo, L, u0, imposed, arm, rtol, max_iter, ok, u, iters):
         # hardly changes from one decade to the next); otherwise up in quarters
         k0 = 1e-3 * model.capacity / max(float(np.abs(Lb[k] / sc).max()), 1e-300)
         n = int(np.ceil(np.log10(k0))) if k0 > 10.0 else 0
+        if n:
+            # below the round-off resolution (the approach s - A is resolved to ~20 eps |u|,
+            # see _floor): no decade walk down to it, which would take ~log10(k0) failing
+            # Newton runs (300 for a load of 1e-300 N)
+            Fm = float(np.abs(Lb[k] / sc).max())
+            d_est = (Fm / model.Kn_free) ** (2.0 / 3.0)          # one ball carrying it all
+            travel = max(model.A - geo.x0, geo.z0)              # rigid travel to a seat
+            if not d_est > 20.0 * np.finfo(float).eps * travel:
+                raise ConvergenceError(
+                    f"load distribution: the loads {Lb[k].tolist()} [N, N m] are too small "
+                    f"for the model to resolve: a ball approach of about {d_est:.1e} m is "
+                    f"below the round-off (~{20.0 * np.finfo(float).eps * travel:.1e} m) of "
+                    f"the ring's travel of {travel:.2g} m to its seat in the clearance")
         fracs = np.logspace(n, 0.0, n + 1) if n else (0.25, 0.5, 0.75, 1.0)
         for i, frac in enumerate(fracs):
             last = i == len(fracs) - 1

@@ -1004,8 +1004,24 @@ class _Problem:
         U[self.iidx] = lam * self.zf - self.Zb @ Y[:self.nb]
         return U.reshape(-1, 5)
 
-    def evaluate(self, Y, lam=1.0, want_J=True):
-        """Residual (N,), Jacobian (N, N), seat reactions (n_seats, 5), seat K, max approach."""
+    def rigid_modes(self):
+        """The shaft's five rigid-body motions at the seat nodes, (N, 5): axial, the two
+        lateral translations, rotation about z (v = theta_z x) and about y (w = -theta_y x),
+        zero on the outer-ring DOFs; the condensed stiffness maps them to zero."""
+        T = np.zeros((self.N, 5))
+        for k, i in enumerate(self.seat_node):
+            x, o = float(self.nodes[i]), 5 * k
+            T[o, 0] = T[o + 1, 1] = T[o + 2, 2] = 1.0
+            T[o + 1, 3], T[o + 4, 3] = x, 1.0
+            T[o + 2, 4], T[o + 3, 4] = -x, 1.0
+        return T
+
+    def evaluate(self, Y, lam=1.0, want_J=True, Yd=None):
+        """Residual (N,), Jacobian (N, N), seat reactions (n_seats, 5), seat K, max approach.
+
+        ``Yd``: Y less a rigid-body motion of the shaft (the same residual in exact
+        arithmetic), from which the shaft's elastic forces are taken: they are then not
+        lost in the round-off of a rigid displacement much larger than the deformation."""
         rel, _ = self.seat_rel(Y)
         ns = len(self.seats)
         Rs = self.const.copy()
@@ -1025,10 +1041,11 @@ class _Problem:
         dmax = self.dmax
         nb = self.nb
         R = np.empty(self.N)
-        Kb = self.Kc @ Y[:nb]
+        Ye = Y[:nb] if Yd is None else Yd[:nb]
+        Kb = self.Kc @ Ye
         R[:nb] = Kb - lam * self.fc + Rs.ravel()
         # total potential (the residual is its gradient): shaft, loads, bearings, springs
-        pot = 0.5 * float(Y[:nb] @ Kb) - lam * float(self.fc @ Y[:nb]) + energy + \
+        pot = 0.5 * float(Ye @ Kb) - lam * float(self.fc @ Y[:nb]) + energy + \
             float((self.const * rel).sum())
         for k, (loc, gl, Kh) in enumerate(self.outer):
             if loc.size:
@@ -1135,7 +1152,15 @@ def solve(shaft: Shaft, seats, loads=(), *, gravity=None, shaft_temperature_chan
     bearing's relative displacement, a backtracking (Armijo) line search on the total
     potential -- beam, loads, springs and the bearings' contact energies, whose gradient
     is the residual -- or on the scaled residual norm, and load stepping (quarters of the
-    load, then finer) when the full load fails.
+    load, then finer) when the full load fails.  Where that fails, or where its result
+    does not balance once the shaft's rigid-body motion is taken out of its elastic
+    forces (the condensed stiffness maps a rigid motion to zero only to ~1e-13 of its
+    size, ~1e-8 N for a shaft moved 0.1 mm through its clearance), a robust iteration
+    keeps that motion apart from the deformation, scales the Levenberg floor with the
+    loads' geometric stiffness F/A, and starts with the balls of every single-row seat at
+    the bottom of their grooves: a lateral load of a few mN down to 1e-6 N on deep-groove
+    seats with clearance then balances to rtol.  Below that the ConvergenceError names the
+    round-off limit.
 
     Parameters
     ----------
@@ -1325,12 +1350,37 @@ def _scales(pb):
 def _newton(pb, rtol, max_iter, X0=None):
     """Global Newton with load stepping; returns (X, iterations, relative residual)."""
     sc, _ = _scales(pb)
+    Fext = max([float(np.abs(p.vector).max()) for p in pb.loads]
+               + [float(np.abs(pb.f_base).max()), 0.0])
+    if 0.0 < Fext < 1e-290:
+        # the residual's scale has a floor of 1e-300 N: such loads would "converge" at the
+        # unloaded position without being carried
+        raise ConvergenceError(
+            f"shaft equilibrium: the loads (largest {Fext:.3g} N) are below what the solver "
+            "resolves (the residual's scale has a floor of 1e-300 N); apply 0 or a load of "
+            "physical size")
     total = 0
+
+    def checked(X, err):
+        """(X, err) if the plain iteration's result balances once the shaft's elastic
+        forces are taken without its rigid-body motion, else a robust polish from X (or
+        None).  The condensed stiffness maps a rigid motion to zero only to ~1e-13 of its
+        size: a shaft moved ~0.1 mm through its clearance feels spurious forces of
+        ~1e-8 N, which hide the imbalance of a load of a few mN."""
+        if _split_error(pb, X, sc) <= 100.0 * rtol:
+            return X, err
+        nonlocal total
+        Xr, it, er, okr = _newton_step(pb, X, 1.0, sc, rtol, max_iter, robust=True)
+        total += it
+        return (Xr, er) if okr else None
+
     if X0 is not None and X0.shape == (pb.N,):
         X, it, err, ok = _newton_step(pb, X0.copy(), 1.0, sc, rtol, max_iter)
         total += it
         if ok:
-            return X, total, err
+            good = checked(X, err)
+            if good is not None:
+                return good[0], total, good[1]
     fracs = [1.0]
     last_err = None
     for attempt in range(4):
@@ -1348,19 +1398,126 @@ def _newton(pb, rtol, max_iter, X0=None):
             if not ok:
                 break
         if ok:
-            return X, total, err
+            good = checked(X, err)
+            if good is not None:
+                return good[0], total, good[1]
+            break
         n = 4 ** (attempt + 1)
         fracs = list(np.arange(1, n + 1) / n)
         log.debug("shaft: Newton failed (residual %.2e); load stepping in %d steps", err, n)
+    # Retry (only here, so that what converged above is untouched): the robust iteration
+    # of _newton_step, first from the start with every single-row seat's balls at the
+    # bottom of their grooves (a deep-groove bearing's axial position under a light
+    # radial load, -A sin(beta_f) from the one-sided reference, which the plain iteration
+    # crawls towards in steps of ~sqrt(A delta)), then from the reference position.
+    rnd, umax = 0.0, 0.0
+    for X0 in (_centred_start(pb), np.zeros(pb.N)):
+        X, it, err, ok = _newton_step(pb, X0, 1.0, sc, rtol, max_iter, robust=True)
+        total += it
+        if ok:
+            log.debug("shaft: converged by the robust retry (residual %.2e)", err)
+            return X, total, err
+        last_err = min(last_err, err) if last_err is not None else err
+        r_, u_ = _roundoff(pb, X)
+        rnd, umax = max(rnd, r_), max(umax, u_)
+    F = _load_scale(pb)
     raise ConvergenceError(
         f"shaft equilibrium did not converge: relative residual {last_err:.3e} "
-        f"(> rtol={rtol:g}) after {total} Newton iterations over all load steps")
+        f"(> rtol={rtol:g}) after {total} Newton iterations over all load steps"
+        + (f" (round-off limit here ~{rnd:.1e}: the loads, {F:.3g} N, are too small to be "
+           f"resolved against the shaft's stiffness and the rings' displacement of "
+           f"{umax:.3g} m through their clearance)" if rnd > 0.1 * last_err else ""))
 
 
-def _newton_step(pb, X, lam, sc, rtol, max_iter):
-    """Newton iterations at load factor lam from X; returns (X, its, err, converged)."""
+def _split_error(pb, X, sc):
+    """Relative residual at X (load factor 1) with the shaft's elastic forces taken from X
+    less its rigid-body motion (the same in exact arithmetic; see _Problem.evaluate)."""
+    nb = pb.nb
+    T = pb.rigid_modes()[:nb]
+    Xd = X.copy()
+    Xd[:nb] -= T @ (np.linalg.pinv(T) @ X[:nb])
+    R, _, Rs, _, _ = pb.evaluate(X, 1.0, want_J=False, Yd=Xd)
+    s5 = sc[:5]
+    scf = np.ones(pb.n)
+    scf[3::5] = scf[4::5] = s5[3]
+    ext = max([np.abs(p.vector / s5).max() for p in pb.loads]
+              + [np.abs(pb.f_base / scf).max()])
+    scale = max(ext, np.abs(Rs / sc[:5]).max(), pb.fmax.max(), 1e-300)
+    return float(np.abs(R / sc).max() / scale)
+
+
+def _load_scale(pb):
+    """Largest applied force [N] (else the largest row force)."""
+    F = max([float(np.abs(p.vector[:3]).max()) for p in pb.loads] + [1e-300])
+    return F if F > 1e-300 else max(float(pb.fmax.max()), 1e-300)
+
+
+def _roundoff(pb, X):
+    """(relative residual below which round-off hides equilibrium at X, largest relative
+    ring translation [m]).  The shaft's rigid displacement u (e.g. through a clearance) is
+    resolved to ~eps |u|, so its elastic forces only to ~eps |K| |u| against its
+    stiffness K, and a ball's approach s - A to ~eps |u| (Q ~ delta^1.5, loaddist._floor)."""
+    eps = np.finfo(float).eps
+    rel, _ = pb.seat_rel(X)
+    umax = float(np.abs(rel[:, :3]).max())
+    dm = float(np.max(pb.dmax)) if pb.dmax.size else 0.0
+    rnd = max(eps * float(np.abs(pb.Kc).max()) * float(np.abs(X[:pb.nb]).max())
+              / _load_scale(pb), 20.0 * eps * umax / dm if dm > 0 else 0.0)
+    return rnd, umax
+
+
+def _centred_start(pb):
+    """Start with the balls of every single-row seat at the bottom of their grooves: the
+    shaft's axial position and each floating seat's outer ring chosen (least squares) so
+    that each such row's axial displacement is -z0 of its reference (loaddist._reference);
+    duplex rows keep their reference position."""
+    X = np.zeros(pb.N)
+    cols = {("a",): 0}
+    for k, (loc, gl, _) in enumerate(pb.outer):
+        if pb.seats[k].floating and 0 in loc:
+            cols[("b", k)] = len(cols)
+    A = np.zeros((len(pb.rows), len(cols)))
+    rhs = np.zeros(len(pb.rows))
+    for i, (k, b, c, G, off) in enumerate(pb.rows):
+        g = G[0, 0]
+        A[i, 0] = g
+        if ("b", k) in cols:
+            A[i, cols[("b", k)]] = -g
+        target = off
+        if isinstance(pb.seats[k].bearing, BallBearing):
+            target = -loaddist._reference(loaddist._Model.of(b), c, False)[2]
+        rhs[i] = target - off + g * pb.w0[k, 0]
+    sol = np.linalg.lstsq(A, rhs, rcond=None)[0]
+    X[0:pb.nb:5] = sol[0]
+    for (tag, *k), j in cols.items():
+        if tag == "b":
+            loc, gl, _ = pb.outer[k[0]]
+            X[gl[list(loc).index(0)]] = sol[j]
+    return X
+
+
+def _newton_step(pb, X, lam, sc, rtol, max_iter, robust=False):
+    """Newton iterations at load factor lam from X; returns (X, its, err, converged).
+
+    ``robust`` (the retry after the plain iteration failed): the unknowns are kept as a
+    rigid-body motion of the shaft plus the rest (the shaft's elastic forces from the
+    rest only, see :meth:`_Problem.evaluate`), and the Levenberg term scales with the
+    geometric stiffness of the loads, 1e-6 F/A, instead of 1e-10 of the largest stiffness
+    (which, against a shaft of 1e9 N/m, swamps the ~F/A stiffness of balls at the bottom
+    of their grooves under a load of a few mN and makes Newton crawl)."""
     dlim = 0.25 * pb.A_ref
-    R, J, Rs, _, _ = pb.evaluate(X, lam)
+    nb = pb.nb
+    if robust:
+        T = pb.rigid_modes()[:nb]
+        Tp = np.linalg.pinv(T)
+        r = Tp @ X[:nb]
+        Xd = X.copy()
+        Xd[:nb] -= T @ r
+        X = Xd.copy()
+        X[:nb] += T @ r
+    else:
+        Xd = None
+    R, J, Rs, _, _ = pb.evaluate(X, lam, Yd=Xd)
     # scale of the applied loads: point loads, weight and the thermal strain's nodal
     # forces (self-equilibrated, but the residual's round-off scales with them; without
     # them a shaft free in its end play, loaded by nothing else, has no scale at all)
@@ -1388,7 +1545,10 @@ def _newton_step(pb, X, lam, sc, rtol, max_iter):
             return X, it, err, False
         it += 1
         Jd = (J * D[None, :]) / sc[:, None]
-        mu = 1e-10 * np.abs(np.diag(Jd)).max()
+        if robust:
+            mu = max(1e-16 * np.abs(np.diag(Jd)).max(), 1e-6 * ext / pb.A_ref)
+        else:
+            mu = 1e-10 * np.abs(np.diag(Jd)).max()
         Jd[np.diag_indices_from(Jd)] += mu
         try:
             dY = -np.linalg.solve(Jd, R / sc)
@@ -1421,6 +1581,10 @@ def _newton_step(pb, X, lam, sc, rtol, max_iter):
         if size > dlim:
             dX *= dlim / size
             g *= dlim / size
+        if robust:
+            dr = Tp @ dX[:nb]
+            dXd = dX.copy()
+            dXd[:nb] -= T @ dr
         # Armijo on the total potential (the residual is its gradient; bearing energies
         # with K_n at each ball's angle), which falls through a clearance gap where the
         # residual stays flat and rises on an overshoot into a contact; or on the scaled
@@ -1429,8 +1593,13 @@ def _newton_step(pb, X, lam, sc, rtol, max_iter):
         m0 = float(np.sum((R / sc) ** 2))
         t = 1.0
         for _ in range(40):
-            Xn = X + t * dX
-            Rn, Jn, Rsn, _, _ = pb.evaluate(Xn, lam)
+            if robust:
+                rn, Xdn = r + t * dr, Xd + t * dXd
+                Xn = Xdn.copy()
+                Xn[:nb] += T @ rn
+            else:
+                Xn, Xdn = X + t * dX, None
+            Rn, Jn, Rsn, _, _ = pb.evaluate(Xn, lam, Yd=Xdn)
             if pb.potential <= p0 + 1e-4 * t * g or \
                     float(np.sum((Rn / sc) ** 2)) <= (1 - 1e-4 * t) * m0:
                 break
@@ -1443,6 +1612,8 @@ def _newton_step(pb, X, lam, sc, rtol, max_iter):
                 X, err = Xn, en
             return X, it, best, best <= 100 * rtol
         X, R, J, Rs, err = Xn, Rn, Jn, Rsn, en
+        if robust:
+            r, Xd = rn, Xdn
     return X, it, err, True
 
 

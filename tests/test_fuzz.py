@@ -19,6 +19,12 @@ direction, speeds up to d_m n = 2e6 mm rpm on either ring.  For every solver ent
 * downstream calls accept every result: Hertz contacts on both races, the
   Lundberg-Palmgren orthogonal shear, ``life.bearing_life``.
 
+Extreme magnitudes (``test_extreme_magnitudes``): every entry point -- the static
+load distribution, the duplex pair, the high-speed solver, the shaft -- given a
+subnormal (5e-324), a tiny (1e-300) or a huge (1e300) load, preload or speed returns a
+balanced result or raises a ValueError naming the range / a ConvergenceError saying why,
+within seconds (a preload inversion once looped forever on 5e-324 N).
+
 Profiles (tests/conftest.py): by default (and with ``HYPOTHESIS_PROFILE=ci``) each test
 runs a fixed, derandomized set of examples that takes about a minute in all;
 ``HYPOTHESIS_PROFILE=fuzz`` (``make fuzz``) draws fresh random examples, weighted by
@@ -35,6 +41,8 @@ convergence failures, failures, worst residual per entry point).
 import functools
 import json
 import os
+import re
+import time
 
 import numpy as np
 import pytest
@@ -42,7 +50,7 @@ from hypothesis import HealthCheck, Phase, event, given, settings
 from hypothesis import strategies as st
 
 import ballrace
-from ballrace.analytic import duplex, highspeed, life, loaddist
+from ballrace.analytic import duplex, highspeed, life, loaddist, shaft
 from ballrace.analytic.loaddist import ConvergenceError
 from hsref import rederive_highspeed
 
@@ -158,8 +166,9 @@ def _refused(exc):
             in msg or "beyond what the thrust alone can carry" in msg), msg
 
 
-def check_distribution(brg, r):
-    """Invariants of a LoadDistribution, recomputed from its ball loads; returns residual."""
+def check_distribution(brg, r, downstream=True):
+    """Invariants of a LoadDistribution, recomputed from its ball loads; returns residual.
+    ``downstream``: also the contacts, shear and life of the result."""
     Q, beta = np.asarray(r.ball_loads), np.asarray(r.contact_angles)
     for a in (Q, beta, r.displacements, r.loads, r.stiffness, r.applied):
         assert np.all(np.isfinite(a))
@@ -179,6 +188,8 @@ def check_distribution(brg, r):
     rel = np.where(scale > 0, res / np.where(scale > 0, scale, 1.0), res)
     assert np.all(rel <= RTOL_EQ), rel
     assert np.allclose(rel, r.relative_residual, rtol=0, atol=1e-12)
+    if not downstream:
+        return float(np.max(rel))
     # downstream: contacts, Lundberg-Palmgren shear, life
     for c in (r.inner, r.outer):
         for v in (c.a, c.b, c.p_max):
@@ -429,3 +440,77 @@ def test_fuzz_highspeed_catalogue(data):
 def test_fuzz_run_had_no_failures():
     """The long run records failures instead of stopping at the first; none may occur."""
     assert not FAILURES, json.dumps(FAILURES[:5], indent=1)
+
+
+# --------------------------------------------------------------------------- extremes
+DG = ballrace.BallBearing(12.7e-3, 9, 60e-3, 0.52, 0.525, diametral_clearance=15e-6)
+AC = ballrace.BallBearing(12.7e-3, 12, 60e-3, 0.52, 0.52, free_contact_angle=np.radians(25))
+SHAFT = shaft.Shaft(sections=[(0.26, 45e-3, 0.0)], material=ballrace.BEARING_STEEL)
+EXTREME_ENTRY_POINTS = {
+    "solve Fa": lambda v: AC.solve(Fa=v),
+    "solve Fy (clearance)": lambda v: DG.solve(Fy=v),
+    "solve My": lambda v: AC.solve(Fa=1000.0, My=v),
+    "radial": lambda v: DG.radial(v),
+    "thrust": lambda v: AC.thrust(v),
+    "combined": lambda v: AC.combined(v, v),
+    "eccentric_thrust": lambda v: AC.eccentric_thrust(v, 0.01),
+    "duplex DB preload": lambda v: duplex.DuplexPair(AC, "DB", preload=v).solve(Fa=1.0, Fr=1.0),
+    "duplex DT preload": lambda v: duplex.DuplexPair(AC, "DT", preload=v).solve(Fa=1.0, Fr=1.0),
+    "duplex DB loads": lambda v: duplex.DuplexPair(AC, "DB", preload=100.0).solve(Fa=v, Fr=v),
+    "duplex DT loads": lambda v: duplex.DuplexPair(AC, "DT").solve(Fa=v, Fr=v),
+    "axial_deflection": lambda v: duplex.axial_deflection(AC, v),
+    "highspeed Fa": lambda v: highspeed.solve(AC, Fa=v, speed_inner=1000.0),
+    "highspeed Fr (clearance)": lambda v: highspeed.solve(DG, Fr=v, speed_inner=1000.0),
+    "highspeed speed": lambda v: highspeed.solve(AC, Fa=100.0, speed_inner=v),
+    "shaft Fy (clearance)": lambda v: shaft.solve(
+        SHAFT, [shaft.Seat(0.03, DG), shaft.Seat(0.23, DG, floating=True)],
+        [shaft.PointLoad(0.09, Fy=v)]),
+    "shaft Fa (angular contact)": lambda v: shaft.solve(
+        SHAFT, [shaft.Seat(0.03, AC, direction=1), shaft.Seat(0.23, AC, direction=-1)],
+        [shaft.PointLoad(0.09, Fa=v, Fy=1.0)]),
+}
+
+
+def _check_extreme_result(name, r, v):
+    """The result of an extreme input is balanced (each kind by its own invariant)."""
+    if isinstance(r, loaddist.LoadDistribution):
+        # equilibrium only: the Hertz contacts of ball loads below 1e-30 N are refused
+        # (MIN_MAGNITUDE of the contact formulas)
+        check_distribution(DG if "clearance" in name or name == "radial" else AC, r,
+                           downstream=bool(np.max(r.ball_loads) >= 1e-30))
+    elif isinstance(r, duplex.DuplexResult):
+        psi = r.pair.bearing.azimuths(0.0)
+        fa = (r.ball_loads * np.sin(r.contact_angles)).sum(1)
+        fr = (r.ball_loads * np.cos(r.contact_angles) * np.cos(psi)).sum(1)
+        axial = fa.sum() - r.pair.preload if r.pair.arrangement == "DT" else fa[0] - fa[1]
+        scale = max(abs(r.Fa), r.Fr, r.pair.preload, 1.0)
+        assert abs(axial - r.Fa) <= 1e-9 * scale and abs(fr.sum() - r.Fr) <= 1e-9 * scale
+    elif isinstance(r, highspeed.HighSpeedResult):
+        assert r.relative_residual <= RTOL_EQ
+        check_highspeed(r.bearing, r)
+    elif isinstance(r, shaft.ShaftResult):
+        applied = sum(p.vector for p in r.loads)
+        scale = max(float(np.abs(applied[:3]).max()), 1e-300)
+        assert np.all(np.abs(r.reactions.sum(0)[:3] - applied[:3]) <= 1e-7 * scale)
+    else:                                         # axial_deflection: a deflection [m]
+        assert np.isfinite(r) and r >= 0.0
+
+
+@pytest.mark.timeout(120)
+@pytest.mark.parametrize("v", [5e-324, 1e-300, 1e300])
+@pytest.mark.parametrize("name", list(EXTREME_ENTRY_POINTS))
+def test_extreme_magnitudes(name, v):
+    """Subnormal, tiny and huge inputs: a balanced result, or a ValueError naming the
+    allowed range / a ConvergenceError saying why, within 30 s."""
+    t = time.perf_counter()
+    try:
+        r = EXTREME_ENTRY_POINTS[name](v)
+    except ValueError as exc:
+        assert re.search(r"physical magnitude|beyond the load-deflection range|must be >= 0",
+                         str(exc)), str(exc)
+    except ConvergenceError as exc:
+        assert re.search(r"residual|round-off|too small|below", str(exc)), str(exc)
+    else:
+        _check_extreme_result(name, r, v)
+    assert time.perf_counter() - t < 30.0
+
