@@ -454,9 +454,59 @@ class FEResult:
         return self.case.analytic
 
     @property
-    def passed(self) -> bool:
-        """True when every row with a tolerance is within it."""
-        return all(r["ok"] for r in self.comparison if r["tol"] is not None)
+    def size_ratio(self) -> float:
+        """Hertz's semi-major axis over the smallest radius of the two bodies, a/R [-]
+        (0 when both surfaces are flat); Hertz's theory assumes a << R."""
+        case = self.case
+        return hertz._size_ratio(case.analytic.a, (case.ball_radius, *case.lower_radii))
+
+    @property
+    def flags(self) -> list:
+        """Conditions that qualify the comparison, as dicts ``{"code", "message",
+        "invalidates"}`` (docs/fem.md "Verdict and flags").
+
+        * ``beyond_hertz_size`` (invalidates): a/R > :data:`ballrace.analytic.hertz.SIZE_LIMIT`;
+          the analytic column is an extrapolation of Hertz's theory, not a solution;
+        * ``pressure_at_grid_edge`` (invalidates): the contact reached the edge of the
+          pressure grid, so the FE contact is truncated;
+        * ``exact_gap``: the exact gap has no tolerances; its differences from Hertz are
+          results, not errors.
+        """
+        out = []
+        ratio = self.size_ratio
+        if ratio > hertz.SIZE_LIMIT:
+            out.append({"code": "beyond_hertz_size", "invalidates": True,
+                        "message": f"a / R = {ratio:.3g} > {hertz.SIZE_LIMIT:g}: beyond "
+                                   "Hertz's small-contact assumption (a << R); the rows "
+                                   "compare the FE with an extrapolation of Hertz, not with "
+                                   "a valid solution"})
+        if self.info.get("pressure_at_grid_edge"):
+            out.append({"code": "pressure_at_grid_edge", "invalidates": True,
+                        "message": "the contact reaches the edge of the pressure grid: the "
+                                   "FE contact is truncated and its rows are not a check"})
+        if self.gap == "exact":
+            out.append({"code": "exact_gap", "invalidates": False,
+                        "message": "exact gap: differences from Hertz are 'beyond Hertz' "
+                                   "results, not errors (no tolerances applied)"})
+        return out
+
+    @property
+    def valid(self) -> bool:
+        """False when a flag says the comparison with Hertz means nothing here
+        (:attr:`flags` with ``invalidates``)."""
+        return not any(f["invalidates"] for f in self.flags)
+
+    @property
+    def within_tolerance(self) -> bool | None:
+        """True when every row with a tolerance is within it; None when no row has one."""
+        checked = [r["ok"] for r in self.comparison if r["tol"] is not None]
+        return all(checked) if checked else None
+
+    @property
+    def passed(self) -> bool | None:
+        """The verdict of the check: :attr:`within_tolerance` when the inputs are where
+        the comparison means something (:attr:`valid`), else None (not checked)."""
+        return self.within_tolerance if self.valid else None
 
     def to_dict(self) -> dict:
         """JSON-ready summary (SI units)."""
@@ -471,8 +521,38 @@ class FEResult:
         out["comparison"] = list(self.comparison)
         out["info"] = dict(self.info)
         out["traction"] = float(self.info.get("traction", {}).get("mu", 0.0))
+        out["size_ratio"] = self.size_ratio
+        out["flags"] = self.flags
+        out["valid"] = self.valid
+        out["within_tolerance"] = self.within_tolerance
         out["passed"] = self.passed
+        out["versions"] = versions()
         return out
+
+
+#: Packages whose versions an FE result depends on (the mesher, the FE basis, the mesh
+#: cache format, the linear algebra and the sparse solvers).
+VERSIONED = ("gmsh", "scikit-fem", "meshio", "numpy", "scipy", "pypardiso", "mkl",
+             "scikit-sparse", "pyamg")
+
+
+def versions() -> dict:
+    """Installed versions of :data:`VERSIONED` (None when not installed).
+
+    Examples
+    --------
+    >>> sorted(versions())[:3]
+    ['gmsh', 'meshio', 'mkl']
+    """
+    from importlib import metadata
+
+    out = {}
+    for p in VERSIONED:
+        try:
+            out[p] = metadata.version(p)
+        except metadata.PackageNotFoundError:
+            out[p] = None
+    return out
 
 
 # --------------------------------------------------------------------------- public API
@@ -819,7 +899,8 @@ def _solve_load(case, states, meshes, sz, I, C, level, mode, gap, approach, shar
     t0 = time.perf_counter()
     mom = ex.pressure_moments(sol.lam, I)
     edge = sol.lam[sz.grid.boundary_tents()]
-    if np.any(edge > 1e-6 * np.max(sol.lam)):
+    at_edge = bool(np.any(edge > 1e-6 * np.max(sol.lam)))
+    if at_edge:
         log.warning("contact reaches the edge of the pressure grid: enlarge it")
     a_fe, b_fe = max(mom["ax"], mom["ay"]), min(mom["ax"], mom["ay"])
     us = [ex.displacement(s, sol.lam) for s in states]
@@ -934,7 +1015,8 @@ def _solve_load(case, states, meshes, sz, I, C, level, mode, gap, approach, shar
             "tau_profile_max": float(np.max(np.abs(dprof))),
             "h_contact": sz.h, "stretch": sz.stretch,
             "mesh_nodes": [int(m.n_nodes) for m in meshes],
-            "mesh_digests": [m.digest() for m in meshes]}
+            "mesh_digests": [m.digest() for m in meshes],
+            "pressure_at_grid_edge": at_edge}
     timings["per_load"] = timings["contact"] + timings["extract"]
     timings["total"] = sum(shared.values()) + timings["per_load"]
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
