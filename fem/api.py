@@ -419,8 +419,8 @@ class FEResult:
     fields : sampled fields for plots and checks: the section y = 0 (``section_x``,
         ``section_z`` [m], ``tau_xz``, ``max_shear``, ``von_mises`` [Pa] and their
         ``analytic`` twins), ``tau_xz_y0`` (the nine-section fit to y = 0 over
-        ``section_window``) and ``tau_profile`` (its max over x, whose peak gives tau0
-        and z0) [Pa], the axis profiles, the tent grid and pressures, bodies and
+        ``section_window``) and ``tau_profile`` (its fitted max over x,
+        :func:`ballrace.fem.extract.ridge_max`, whose peak gives tau0 and z0) [Pa], the axis profiles, the tent grid and pressures, bodies and
         displacements; with a surface traction (``run_case(traction=mu)``) also
         ``traction`` (the loaded section over both signs of x with a surface row: FE
         ``von_mises``, ``max_shear``, ``tau_xz``, ``sxx``, ``stress`` [Pa], the
@@ -463,8 +463,7 @@ class FEResult:
     def size_ratio(self) -> float:
         """Hertz's semi-major axis over the smallest radius of the two bodies, a/R [-]
         (0 when both surfaces are flat); Hertz's theory assumes a << R."""
-        case = self.case
-        return hertz._size_ratio(case.analytic.a, (case.ball_radius, *case.lower_radii))
+        return size_ratio(self.case)
 
     @property
     def flags(self) -> list:
@@ -478,14 +477,7 @@ class FEResult:
         * ``exact_gap``: the exact gap has no tolerances; its differences from Hertz are
           results, not errors.
         """
-        out = []
-        ratio = self.size_ratio
-        if ratio > hertz.SIZE_LIMIT:
-            out.append({"code": "beyond_hertz_size", "invalidates": True,
-                        "message": f"a / R = {ratio:.3g} > {hertz.SIZE_LIMIT:g}: beyond "
-                                   "Hertz's small-contact assumption (a << R); the rows "
-                                   "compare the FE with an extrapolation of Hertz, not with "
-                                   "a valid solution"})
+        out = size_flags(self.case)
         if self.info.get("pressure_at_grid_edge"):
             out.append({"code": "pressure_at_grid_edge", "invalidates": True,
                         "message": "the contact reaches the edge of the pressure grid: the "
@@ -534,6 +526,30 @@ class FEResult:
         out["passed"] = self.passed
         out["versions"] = versions()
         return out
+
+
+def size_ratio(case) -> float:
+    """a / R of a :class:`ContactCase`: Hertz's semi-major axis over the smallest finite
+    radius of the ball and the lower body [-] (0 when every surface is flat)."""
+    radii = (case.ball_radius, *getattr(case, "lower_radii", ()))
+    return hertz._size_ratio(case.analytic.a, radii)
+
+
+def size_flags(case) -> list:
+    """The ``beyond_hertz_size`` flag of :attr:`FEResult.flags` for a case, or [].
+
+    Examples
+    --------
+    >>> [f["code"] for f in size_flags(plane_case(12.7e-3, 2000.0))]
+    []
+    """
+    ratio = size_ratio(case)
+    if not ratio > hertz.SIZE_LIMIT:
+        return []
+    return [{"code": "beyond_hertz_size", "invalidates": True,
+             "message": f"a / R = {ratio:.3g} > {hertz.SIZE_LIMIT:g}: beyond Hertz's "
+                        "small-contact assumption (a << R); the rows compare the FE with an "
+                        "extrapolation of Hertz, not with a valid solution"}]
 
 
 #: Packages whose versions an FE result depends on (the mesher, the FE basis, the mesh

@@ -342,7 +342,12 @@ def _table(r, units: str, heading: str = "") -> None:
         con.print(literal(heading), style="bold")
     print_columns(con, title, ["quantity", "FE", "analytic", "unit", "error / tolerance"],
                   rows, justify=["left", "right", "right", "left", "left"])
-    for flag in d.get("flags", []):          # the same notes result.json carries
+    flags = d.get("flags")
+    if flags is None:                        # a result without flags: its size at least
+        from .api import size_flags
+
+        flags = size_flags(r.case) if getattr(r, "case", None) is not None else []
+    for flag in flags:                       # the same notes result.json carries
         con.print(literal(f"note: {flag['message']}"))
     if not d.get("valid", True):
         con.print(literal("verdict: not checked (result.json: \"passed\": null, "
