@@ -420,8 +420,9 @@ class FEResult:
         ``section_z`` [m], ``tau_xz``, ``max_shear``, ``von_mises`` [Pa] and their
         ``analytic`` twins), ``tau_xz_y0`` (the nine-section fit to y = 0 over
         ``section_window``) and ``tau_profile`` (its fitted max over x,
-        :func:`ballrace.fem.extract.ridge_max`, whose peak gives tau0 and z0) [Pa], the axis profiles, the tent grid and pressures, bodies and
-        displacements; with a surface traction (``run_case(traction=mu)``) also
+        :func:`ballrace.fem.extract.ridge_max`, whose peak gives tau0 and z0) [Pa], the
+        axis profiles, the tent grid and pressures, bodies and displacements; with a
+        surface traction (``run_case(traction=mu)``) also
         ``traction`` (the loaded section over both signs of x with a surface row: FE
         ``von_mises``, ``max_shear``, ``tau_xz``, ``sxx``, ``stress`` [Pa], the
         ``analytic`` twins and the ``peaks``) and ``u_traction`` (the tangential
