@@ -166,19 +166,53 @@ def _size_field(gmsh, fine, s: float, zsign: float, z0: float,
     gmsh.model.mesh.field.setAsBackgroundMesh(f)
 
 
+#: gmsh options set before every mesh.  The first group chooses the algorithms; the second
+#: states gmsh's own defaults (identical in 4.13.1 and 4.15.2, checked option by option)
+#: so that a release which changes a default cannot change the meshes unnoticed.  The
+#: meshes still differ between gmsh releases (4.13.1 and 4.15.x give other nodes for the
+#: same options: the OCC kernel and the Delaunay code changed), which is why the cache
+#: key and every FE result record gmsh's version (docs/fem.md "Versions").
+GMSH_OPTIONS = {
+    "General.Terminal": 0,
+    "General.NumThreads": 1,
+    "Mesh.Algorithm": 6,            # Frontal-Delaunay 2-D
+    "Mesh.Algorithm3D": 1,          # Delaunay 3-D: reproducible (HXT with threads is not)
+    "Mesh.MeshSizeExtendFromBoundary": 0,
+    "Mesh.MeshSizeFromPoints": 0,
+    "Mesh.MeshSizeFromCurvature": 0,
+    "Mesh.Optimize": 1,
+    "Mesh.ElementOrder": 1,
+    "Mesh.RandomSeed": 1,
+    # gmsh's defaults, stated
+    "Mesh.MeshSizeFromParametricPoints": 0,
+    "Mesh.MeshSizeMin": 0.0,
+    "Mesh.MeshSizeMax": 1e22,
+    "Mesh.MeshSizeFactor": 1.0,
+    "Mesh.OptimizeNetgen": 0,
+    "Mesh.OptimizeThreshold": 0.3,
+    "Mesh.Smoothing": 1,
+    "Mesh.QualityType": 2,
+    "Mesh.RandomFactor": 1e-9,
+    "Mesh.RandomFactor3D": 1e-12,
+    "Mesh.ToleranceInitialDelaunay": 1e-12,
+    "Mesh.AngleToleranceFacetOverlap": 0.1,
+    "Mesh.MinimumCirclePoints": 7,
+    "Mesh.MinimumCurvePoints": 3,
+    "Mesh.AnisoMax": 1e33,
+    "Mesh.LcIntegrationPrecision": 1e-9,
+    "Geometry.Tolerance": 1e-8,
+    "Geometry.OCCFixDegenerated": 0,
+    "Geometry.OCCFixSmallEdges": 0,
+    "Geometry.OCCFixSmallFaces": 0,
+    "Geometry.OCCSewFaces": 0,
+    "Geometry.OCCParallel": 0,
+    "Geometry.OCCScaling": 1.0,
+    "Geometry.OCCBooleanPreserveNumbering": 1,
+}
+
+
 def _options(gmsh) -> None:
-    for name, value in {
-        "General.Terminal": 0,
-        "General.NumThreads": 1,
-        "Mesh.Algorithm": 6,            # Frontal-Delaunay 2-D
-        "Mesh.Algorithm3D": 1,          # Delaunay 3-D: reproducible (HXT with threads is not)
-        "Mesh.MeshSizeExtendFromBoundary": 0,
-        "Mesh.MeshSizeFromPoints": 0,
-        "Mesh.MeshSizeFromCurvature": 0,
-        "Mesh.Optimize": 1,
-        "Mesh.ElementOrder": 1,
-        "Mesh.RandomSeed": 1,
-    }.items():
+    for name, value in GMSH_OPTIONS.items():
         gmsh.option.setNumber(name, value)
 
 

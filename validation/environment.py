@@ -15,9 +15,13 @@ from pathlib import Path
 
 __all__ = ["environment", "PACKAGES"]
 
+#: Packages whose versions a run records.  The FE checks depend on the mesher (gmsh: its
+#: meshes, hence the discretisation error of the FE rows, change between releases), the
+#: FE basis (scikit-fem), the mesh cache format (meshio) and the sparse solvers
+#: (scikit-sparse, pypardiso with mkl, pyamg): docs/fem.md "Versions".
 PACKAGES = ("ballrace", "numpy", "scipy", "pint", "typer", "rich", "jinja2", "matplotlib",
             "dask", "distributed", "pyvista", "scikit-fem", "gmsh", "meshio", "scikit-sparse",
-            "mpmath")
+            "pypardiso", "mkl", "pyamg", "mpmath")
 
 
 _ROOT = Path(__file__).resolve().parent.parent      # the package folder = the repo root
