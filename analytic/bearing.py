@@ -233,7 +233,7 @@ class BallBearing:
         if not D < dm:
             raise ValueError(f"ball_diameter must be in (0, pitch_diameter) = (0, {dm:g}) [m]; "
                              f"got {D:g}")
-        if D > 0.25 or dm > 20.0:  # issue 11: mm typed as m gives C = 677 MN without a word
+        if D > 0.25 or dm > 20.0:  # mm typed as m would give C = 677 MN without a word
             import warnings
 
             warnings.warn(f"ball_diameter = {D:g} m, pitch_diameter = {dm:g} m: larger than any "

@@ -174,7 +174,7 @@ def analyze(case) -> dict:
                      f"angle {math.degrees(brg.free_contact_angle):.2f} deg is used by the "
                      "load distribution")
 
-    # ---------------------------------------------------------------- ISO 281 / 16281 (issue 12)
+    # ---------------------------------------------------------------- ISO 281 / 16281 -----------
     from ballrace.analytic import isocase
 
     iso = isocase.iso_life(case, res, P=out_life.get("P"))

@@ -131,7 +131,7 @@ MODES = ("half-space", "two-body")
 GAPS = ("hertz", "exact")
 
 #: Relative tolerances of the comparison with Hertz / Lundberg–Palmgren, per level
-#: ("standard": issue 10, met by every half-space case, the ball on a plane in both
+#: ("standard": met by every half-space case, the ball on a plane in both
 #: modes, the inner race in two bodies up to a/(f D) = 0.19 and the outer race up to
 #: 0.094, docs/fem.md; "quick" is a smoke level).
 TOLERANCES = {
@@ -154,7 +154,7 @@ TOLERANCES["fine"] = TOLERANCES["standard"]
 #: deeper at a/R = 0.014 … 0.055.  Measured at the standard level (docs/fem.md): ball on
 #: ball z0 -3.82 %, max shear -1.99 %, its depth +4.13 %, von Mises depth +4.08 % at
 #: a/R = 0.055; 209 inner race z0 -1.98 %, max shear +2.36 % at 4450 N; outer race max
-#: shear +3.56 %, von Mises +4.03 %.  These bounds apply there (issue 5 had 10 % on z0).
+#: shear +3.56 %, von Mises +4.03 %.  These bounds apply there.
 CURVED_BODY_TOLERANCE = {"max_shear": 0.05, "von_mises": 0.05, "z0": 0.05,
                          "max_shear_depth": 0.05, "von_mises_depth": 0.05}
 
