@@ -8,8 +8,8 @@ D = 12.7 mm, d_m = 65 mm, f = 0.52, contact angle 0, Q = 4450 N; half-space / tw
 elastic bodies), ``outer-hs``, ``plane-hs`` / ``plane-2b`` (ball on plane, 2000 N),
 ``outer-2b``, ``ball-2b`` / ``ball-hs`` (two 12.7 mm balls, 2000 N), ``inner-exact`` (exact
 sphere–torus gap), ``inner-hs-loads`` (three loads on one mesh and one factorisation).
-Budgets (issue 10): half-space <= 30 s and 3 GB, two bodies <= 60 s and 6 GB, each extra
-load of a list <= 1 s; accuracy: fem.TOLERANCES["standard"].
+Budgets of the FE check: half-space <= 30 s and 3 GB, two bodies <= 60 s and 6 GB, each
+extra load of a list <= 1 s; accuracy: fem.TOLERANCES["standard"].
 """
 from __future__ import annotations
 
