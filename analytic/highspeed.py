@@ -118,7 +118,7 @@ import numpy as np
 from . import _operating, hertz
 from ._checks import as_array, broadcast, check_choice, check_positive, check_range
 from .bearing import BallBearing
-from .loaddist import ConvergenceError
+from ..errors import ConvergenceError
 
 __all__ = [
     "CAGE_RATIO_RANGE",

@@ -1057,7 +1057,7 @@ def critical_traction(ratio, nu=0.3, criterion: str = "von_mises"):
 
         g0, g1 = g(1e-3), g(_MU_HI)
         if not (g0 < 0 < g1):
-            from .loaddist import ConvergenceError
+            from ..errors import ConvergenceError
             raise ConvergenceError(f"critical_traction: the surface minus interior maximum "
                                    f"does not change sign on [0.001, {_MU_HI}] (b/a = "
                                    f"{ratio[i]:g}, "
