@@ -586,7 +586,10 @@ def _maximize_depth(fun, shape, hi: float = _DEPTH_MAX):
     at_zero = (i == 0) & (take(dv, i) <= 0)
     at_end = (i == _N_GRID - 1) & (take(dv, i) >= 0)
     if np.any(at_end):
-        log.warning("depth search: maximum at the end of the search range, z = %g b", hi)
+        from ..errors import warn
+
+        warn(f"depth search: the maximum lies at the end of the search range, z = {hi:g} b "
+             "(the value reported there is a lower bound)")
     x = np.where(at_zero, 0.0, np.where(at_end, hi, grid[i]))
     done = at_zero | at_end
     side = np.zeros(shape, dtype=int)        # +1: lo moved last, -1: up moved last
