@@ -20,16 +20,12 @@ import contextlib
 import contextvars
 import functools
 import math
-import os
-import sys
-import warnings
 
 import numpy as np
 
 from . import ratings
 
 _QUIET = contextvars.ContextVar("ballrace_operating_quiet", default=False)
-_HERE = os.path.dirname(os.path.abspath(__file__)) + os.sep
 
 
 @contextlib.contextmanager
@@ -51,10 +47,9 @@ def warn(message: str) -> None:
     """A ``UserWarning`` attributed to the first frame outside ``ballrace.analytic``."""
     if _QUIET.get():
         return
-    f, level = sys._getframe(0), 1
-    while f is not None and os.path.abspath(f.f_code.co_filename).startswith(_HERE):
-        f, level = f.f_back, level + 1
-    warnings.warn(message, UserWarning, stacklevel=level)
+    from ..errors import warn as _warn
+
+    _warn(message)
 
 
 @functools.lru_cache(maxsize=128)

@@ -87,11 +87,13 @@ def _nominal_angle(value, free_angle: float, angle_given: bool) -> float:
         if angle_given:
             return free_angle
         if free_angle > np.radians(20.0):
-            log.warning("BallBearing: the diametral clearance gives a free contact angle of "
-                        "%.1f deg, more than a deep-groove bearing's clearance gives; the "
-                        "ratings use the nominal contact angle 0 (radial bearing) - pass "
-                        "nominal_contact_angle (the design angle [rad]) for an "
-                        "angular-contact bearing", np.degrees(free_angle))
+            from ..errors import warn
+
+            warn(f"BallBearing: the diametral clearance gives a free contact angle of "
+                 f"{np.degrees(free_angle):.1f} deg, more than a deep-groove bearing's "
+                 "clearance gives; the ratings use the nominal contact angle 0 (radial "
+                 "bearing) - pass nominal_contact_angle (the design angle [rad]) for an "
+                 "angular-contact bearing")
         return 0.0
     arr = as_array(value, "nominal_contact_angle")
     if arr.ndim:

@@ -85,8 +85,7 @@ import numpy as np
 __all__ = ["CaseFileError", "BearingCase", "load_case", "parse_case"]
 
 
-class CaseFileError(ValueError):
-    """A case file that cannot be read, or whose contents are invalid."""
+from ballrace.errors import CaseFileError  # noqa: E402 - one class for every case file
 
 
 def rating_angle(kind: str, nominal, raw, where: str):
@@ -711,7 +710,7 @@ def parse_case(data: dict, source: str = "<case>") -> BearingCase:
     >>> parse_case({"bearing": {}, "loads": {}, "operation": {}})  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    ballrace.analytic.casefile.CaseFileError: <case>: [bearing].ball_diameter: Field required...
+    ballrace.errors.CaseFileError: <case>: [bearing].ball_diameter: Field required...
     """
     hint = _kind_hint(data, source)
     if hint:

@@ -49,7 +49,8 @@ import numpy as np
 
 from ._checks import as_array, check_choice, check_nonnegative, check_positive
 from .bearing import BallBearing
-from .loaddist import MAX_APPROACH_RATIO, ConvergenceError, _fold_unloaded, _kn, _Model
+from ..errors import ConvergenceError
+from .loaddist import MAX_APPROACH_RATIO, _fold_unloaded, _kn, _Model
 
 __all__ = ["ARRANGEMENTS", "DuplexPair", "DuplexResult", "axial_load", "axial_deflection",
            "power_law_unloading_ratio"]

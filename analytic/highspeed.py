@@ -118,7 +118,7 @@ import numpy as np
 from . import _operating, hertz
 from ._checks import as_array, broadcast, check_choice, check_positive, check_range
 from .bearing import BallBearing
-from .loaddist import ConvergenceError
+from ..errors import ConvergenceError
 
 __all__ = [
     "CAGE_RATIO_RANGE",
@@ -1393,7 +1393,8 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
         u0 = sysm.unpack(x)[2]
         prev = x
     else:
-        log.warning("highspeed: Jones race-control choice did not settle after 8 rounds")
+        _operating.warn("highspeed: Jones race-control choice did not settle after 8 rounds "
+                        "(the result uses the last choice; race control may be mixed)")
     total_it = count[0]
 
     return _checked(_result(bearing, model, psi, sysm, x, b, L, wi, wo, sysm.outer, gyroscopic,
@@ -1673,7 +1674,7 @@ def _result(bearing, model, psi, sysm, x, b, L, wi, wo, outer, gyro, mu, iters, 
                         f"[{lo_:.3g}, {hi_:.3g}]: the balls cannot roll on both races "
                         "(gross sliding; the quasi-static model does not apply)")
     for w in warn:
-        log.warning("highspeed: %s", w)
+        _operating.warn(f"highspeed: {w}")
     loads = b.C.sum(axis=0)
     arrays = (b.Qi, b.Qo, b.ai_k, b.ao_k, b.di, b.do, b.X1, b.X2, b.Fc, b.Mg, b.wc, b.wR,
               b.beta, sr_i, sr_o, u, loads)

@@ -292,8 +292,10 @@ def reference_rating_life(bearing, result, *, dynamic_rating=None, rotating: str
         Lo = np.where(Qee > 0, (Qce / np.where(Qee > 0, Qee, 1.0)) ** 3, np.inf)
         L = (Li ** (-10.0 / 9.0) + Lo ** (-10.0 / 9.0)) ** -0.9
     if Z != bearing.n_balls:
-        log.warning("reference_rating_life: %d ball loads for a bearing of %d balls", Z,
-                    bearing.n_balls)
+        from ..errors import warn
+
+        warn(f"reference_rating_life: {Z} ball loads for a bearing of {bearing.n_balls} "
+             "balls")
     return ReferenceRatingLife(L10r=_s(L), L_inner=_s(Li), L_outer=_s(Lo), Q_ci=Qci,
                                Q_ce=Qce, Q_ei=_s(Qei), Q_ee=_s(Qee),
                                P_ref=_s(C / L ** (1.0 / 3.0)), C=C, rotating=rotating)

@@ -249,8 +249,10 @@ def walther_constants(nu40, nu100):
         raise ValueError(f"nu100 must be < nu40 (oil thins when heated); got nu40 = "
                          f"{np.max(v40):g} mm^2/s, nu100 = {np.max(v100):g} mm^2/s")
     if np.any(v100 < 2.0):
-        log.warning("walther_constants: nu100 < 2 mm^2/s, below the range of the Z = nu + 0.7 "
-                    "form of ASTM D341")
+        from ..errors import warn
+
+        warn("walther_constants: nu100 < 2 mm^2/s, below the range of the Z = nu + 0.7 "
+             "form of ASTM D341 (the viscosity-temperature line is extrapolated)")
     y40, y100 = np.log10(np.log10(v40 + 0.7)), np.log10(np.log10(v100 + 0.7))
     x40, x100 = np.log10(313.15), np.log10(373.15)
     B = (y40 - y100) / (x100 - x40)

@@ -309,8 +309,10 @@ def load_factor(load_stationary_relative_to: str = "outer ring",
         osc = float(check_nonnegative(oscillation_angle, "oscillation_angle", "rad"))
         if osc > np.radians(45.0):
             return ROTATING_LOAD_FACTOR
-        log.warning("oscillation of %.1f deg (< 45 deg): false brinelling can damage the "
-                    "rings (Tata 2012); no load factor applied", np.degrees(osc))
+        from ..errors import warn
+
+        warn(f"oscillation of {np.degrees(osc):.1f} deg (< 45 deg): false brinelling can "
+             "damage the rings (Tata 2012); no load factor applied")
     return ROTATING_LOAD_FACTOR if load_stationary_relative_to == "inner ring" else 1.0
 
 
@@ -632,7 +634,10 @@ def contact_capacity(ball_diameter, n_balls, pitch_diameter, contact_angle, conf
     f = check_range(conformity, "conformity", 0.5, None, unit="-")
     a = check_range(contact_angle, "contact_angle", -np.pi / 2, np.pi / 2, unit="rad")
     if D > 0.0254 * (1 + 1e-12):
-        log.warning("contact_capacity: D = %.4g mm > 25.4 mm, outside the D^1.8 form", D * 1e3)
+        from ..errors import warn
+
+        warn(f"contact_capacity: D = {D * 1e3:.4g} mm > 25.4 mm, outside the D^1.8 form "
+             "(ISO 281 uses D^1.4 above 25.4 mm; extrapolated)")
     g = D * np.cos(a) / dm
     s = -1.0 if race == "inner" else 1.0
     Qc = (98.1 * (2.0 * f / (2.0 * f - 1.0)) ** 0.41 * (1.0 + s * g) ** 1.39
@@ -896,10 +901,12 @@ def lubrication_factor(film_parameter, *, warn: bool = True):
     """
     lam = check_positive(film_parameter, "film_parameter", "-")
     if warn:
-        log.warning("lubrication_factor: this curve is a reconstruction of Hamrock & Dowson "
-                    "(1981) fig. 3.16, not checked against the printed figure (about +/-30 %% "
-                    "between Lambda = 1.2 and 3). Pass an explicit factor to adjusted_life "
-                    "where the answer matters.")
+        from ..errors import warn
+
+        warn("lubrication_factor: this curve is a reconstruction of Hamrock & Dowson "
+             "(1981) fig. 3.16, not checked against the printed figure (about +/-30 % "
+             "between Lambda = 1.2 and 3). Pass an explicit factor to adjusted_life "
+             "where the answer matters.")
     x = np.log([n[0] for n in LUBRICATION_FACTOR_NODES])
     y = np.log([n[1] for n in LUBRICATION_FACTOR_NODES])
     return _s(np.exp(np.interp(np.log(lam), x, y)))

@@ -62,6 +62,7 @@ import numpy as np
 from . import hertz
 from ._checks import (MAX_MAGNITUDE, as_array, broadcast, check_choice, check_integer, check_nonnegative,
                       check_positive, check_range)
+from ..errors import ConvergenceError
 from .bearing import BallBearing
 
 __all__ = [
@@ -91,8 +92,8 @@ DOF = ("x", "y", "z", "theta_y", "theta_z")
 STRIBECK_LIMIT = 2.0 * np.pi / (np.sqrt(np.pi) * 0.9190625268488832 / 1.1330030963193457)
 
 
-class ConvergenceError(RuntimeError):
-    """A load-distribution solve did not converge (message gives residual and iterations)."""
+# ConvergenceError is defined in ballrace.errors and imported above; it stays importable
+# from here (``from ballrace.analytic.loaddist import ConvergenceError``).
 
 
 # =========================================================================== stiffness

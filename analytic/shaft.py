@@ -109,7 +109,7 @@ from ._checks import (as_array, broadcast, check_choice, check_instance, check_i
 from .bearing import BallBearing
 from .clearance import OperatingClearance
 from .duplex import DuplexPair
-from .loaddist import ConvergenceError
+from ..errors import ConvergenceError
 from .materials import BEARING_STEEL, Material
 
 __all__ = ["Shaft", "Seat", "PointLoad", "ShaftResult", "ConvergenceError", "solve",

@@ -253,7 +253,7 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
 
     Raises
     ------
-    ballrace.analytic.casefile.CaseFileError
+    ballrace.errors.CaseFileError
         Naming ``source`` and the offending key.
     """
     import ballrace
@@ -464,7 +464,7 @@ def _fits(f, brg, shaft, x, q, source, where):
 
 def _delta_T(text, source, where) -> float:
     """A temperature difference [K] from "10 K", "10 delta_degC" (not "10 degC")."""
-    from ballrace.analytic.casefile import CaseFileError
+    from ballrace.errors import CaseFileError
     from ballrace.units import ureg
 
     s = str(text).strip()
@@ -482,7 +482,7 @@ def _delta_T(text, source, where) -> float:
 
 def load_shaft_case(path) -> ShaftCase:
     """Read and validate a shaft case file (TOML)."""
-    from ballrace.analytic.casefile import CaseFileError
+    from ballrace.errors import CaseFileError
 
     p = Path(path)
     try:
@@ -859,7 +859,7 @@ def register(app) -> None:
             "--plot", help="Write a picture of the shaft (PNG/SVG/PDF) to this file.")] = None,
     ):
         """An elastic shaft on its ball bearings: reactions, ball loads, deflection, lives."""
-        from ballrace.analytic.casefile import CaseFileError
+        from ballrace.errors import CaseFileError
         from ballrace.cli import check_units, fail
 
         check_units(units)

@@ -586,7 +586,10 @@ def _maximize_depth(fun, shape, hi: float = _DEPTH_MAX):
     at_zero = (i == 0) & (take(dv, i) <= 0)
     at_end = (i == _N_GRID - 1) & (take(dv, i) >= 0)
     if np.any(at_end):
-        log.warning("depth search: maximum at the end of the search range, z = %g b", hi)
+        from ..errors import warn
+
+        warn(f"depth search: the maximum lies at the end of the search range, z = {hi:g} b "
+             "(the value reported there is a lower bound)")
     x = np.where(at_zero, 0.0, np.where(at_end, hi, grid[i]))
     done = at_zero | at_end
     side = np.zeros(shape, dtype=int)        # +1: lo moved last, -1: up moved last
@@ -1057,7 +1060,7 @@ def critical_traction(ratio, nu=0.3, criterion: str = "von_mises"):
 
         g0, g1 = g(1e-3), g(_MU_HI)
         if not (g0 < 0 < g1):
-            from .loaddist import ConvergenceError
+            from ..errors import ConvergenceError
             raise ConvergenceError(f"critical_traction: the surface minus interior maximum "
                                    f"does not change sign on [0.001, {_MU_HI}] (b/a = "
                                    f"{ratio[i]:g}, "

@@ -166,7 +166,7 @@ def parse_fe_case(data: dict, source: str = "<case>", **overrides) -> FECaseFile
 
     Raises
     ------
-    ballrace.analytic.casefile.CaseFileError
+    ballrace.errors.CaseFileError
         Naming ``source`` and the offending ``[table].key``.
 
     Examples
@@ -177,7 +177,7 @@ def parse_fe_case(data: dict, source: str = "<case>", **overrides) -> FECaseFile
     >>> parse_fe_case({"case": {"lod": "2 kN"}}, "x.toml")  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    ballrace.analytic.casefile.CaseFileError: x.toml: [case].lod: Extra inputs are not permitted
+    ballrace.errors.CaseFileError: x.toml: [case].lod: Extra inputs are not permitted
     """
     import ballrace
     from ballrace.analytic.casefile import CaseFileError, quantity_reader, validate_spec
@@ -270,10 +270,10 @@ def load_fe_case(path, **overrides) -> FECaseFile:
 
     Raises
     ------
-    ballrace.analytic.casefile.CaseFileError
+    ballrace.errors.CaseFileError
         File missing, a directory, not TOML, of another kind, or with invalid contents.
     """
-    from ballrace.analytic.casefile import CaseFileError
+    from ballrace.errors import CaseFileError
 
     p = Path(path)
     if p.is_dir():
@@ -393,7 +393,7 @@ def register(app: typer.Typer) -> None:
 
         Options given beside a case file take precedence over the file's values.
         """
-        from ballrace.analytic.casefile import CaseFileError
+        from ballrace.errors import CaseFileError
         from ballrace.cli import check_units, fail
         from ballrace.validation.cli import FEM_INSTALL, _missing, missing_fem
 

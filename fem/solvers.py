@@ -367,7 +367,7 @@ def _amg(A, near_nullspace=None, rtol: float = 1e-10, maxiter: int = 1000):
             res = []
             x = ml.solve(B2[:, j], tol=rtol, accel="cg", maxiter=maxiter, residuals=res)
             if res[-1] > rtol * res[0]:
-                from ballrace.analytic.loaddist import ConvergenceError
+                from ballrace.errors import ConvergenceError
 
                 raise ConvergenceError(f"pyamg+CG: residual {res[-1] / res[0]:.1e} after "
                                        f"{len(res) - 1} iterations (RHS {j})")

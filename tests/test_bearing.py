@@ -265,16 +265,19 @@ def test_nominal_contact_angle_types():
         ricci218(nominal_contact_angle=float("nan"))
 
 
-def test_large_clearance_angle_defaulted_to_zero_is_logged(caplog):
+def test_large_clearance_angle_defaulted_to_zero_warns_the_caller():
     """A clearance giving a 40 deg free angle is an angular-contact bearing's: rated at 0
-    by the default rule, so a warning says to pass the nominal angle."""
+    by the default rule, so a UserWarning (not a log record nobody sees) says to pass the
+    nominal angle, attributed to the caller's line."""
+    import warnings
+
     b = ricci218()
-    with caplog.at_level("WARNING", logger="ballrace.analytic.bearing"):
+    with pytest.warns(UserWarning, match="free contact angle of 40.0 deg.*nominal_contact_angle"
+                      ) as rec:
         ricci218(free_contact_angle=None, diametral_clearance=b.diametral_clearance)
-    assert any("nominal_contact_angle" in r.getMessage() for r in caplog.records)
-    caplog.clear()
-    with caplog.at_level("WARNING", logger="ballrace.analytic.bearing"):
+    assert rec[0].filename == __file__
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
         BallBearing(0.0115, 7, 0.0435, 0.52, 0.53, diametral_clearance=10e-6)
         ricci218(free_contact_angle=None, diametral_clearance=b.diametral_clearance,
                  nominal_contact_angle=np.radians(40))
-    assert not caplog.records

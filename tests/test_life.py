@@ -308,20 +308,22 @@ def test_lp_life_from_library_radial_solution():
     assert 0.8 < np.mean(L_loose) / np.mean(L) < 0.97
 
 
-def test_lubrication_factor_warns_once_per_call_unless_told(caplog):
-    """The approximate curve says so in the log (in plain words), except for a caller that
-    tells its user itself: ``ballrace bearing`` prints it as a note, not twice."""
-    import logging
+def test_lubrication_factor_warns_once_per_call_unless_told():
+    """The approximate curve says so in a UserWarning (in plain words) at the caller's line,
+    except for a caller that tells its user itself: ``ballrace bearing`` prints it as a
+    note, not twice."""
+    import warnings
 
-    with caplog.at_level(logging.WARNING, logger="ballrace"):
+    with warnings.catch_warnings(record=True) as rec:
+        warnings.simplefilter("always")
         life.lubrication_factor(2.0)
-    assert len(caplog.records) == 1
-    msg = caplog.records[0].getMessage()
+    assert len(rec) == 1 and rec[0].filename == __file__
+    msg = str(rec[0].message)
     assert "not checked against the printed figure" in msg and "scan" not in msg
-    caplog.clear()
-    with caplog.at_level(logging.WARNING, logger="ballrace"):
+    with warnings.catch_warnings(record=True) as rec:
+        warnings.simplefilter("always")
         assert life.lubrication_factor(2.0, warn=False) == life.lubrication_factor(2.0)
-    assert len(caplog.records) == 1                       # only the call with warn=True
+    assert len(rec) == 1                                  # only the call with warn=True
 
 
 def test_bearing_cli_prints_the_lubrication_note_once(tmp_path):

@@ -61,7 +61,7 @@ Examples
 >>> parse_cases(text.replace(', reason = "4 digits quoted"', ''), "demo.toml")
 Traceback (most recent call last):
 ...
-ballrace.validation.schema.CaseFileError: demo.toml: case 'demo': expected.a: a tolerance needs a 'reason' (why this tolerance?)
+ballrace.errors.CaseFileError: demo.toml: case 'demo': expected.a: a tolerance needs a 'reason' (why this tolerance?)
 """
 from __future__ import annotations
 
@@ -95,8 +95,7 @@ _FEM_LEVELS = ("quick", "standard")
 _ID_RE = re.compile(r"^[a-z0-9][a-z0-9._-]*$")
 
 
-class CaseFileError(ValueError):
-    """A case file is malformed; the message names the file, the case and the field."""
+from ballrace.errors import CaseFileError  # noqa: E402 - one class for every case file
 
 
 @dataclass(frozen=True)
