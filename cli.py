@@ -5,8 +5,8 @@ library.  Each area registers its own commands from a small module that imports 
 heavy dependencies only when a command runs:
 
 * ``contact``  — this module;
-* ``bearing``  — :mod:`ballrace.analytic.cli` (when present);
-* ``shaft``    — :mod:`ballrace.analytic.shaft_cli`;
+* ``bearing``  — :mod:`ballrace.commands.bearing` (when present);
+* ``shaft``    — :mod:`ballrace.commands.shaft`;
 * ``fem``      — :mod:`ballrace.fem.cli`;
 * ``validate``, ``teach`` — :mod:`ballrace.validation.cli`.
 
@@ -65,7 +65,7 @@ app = typer.Typer(cls=_Group, add_completion=False, no_args_is_help=True,
                   help="ballrace: Hertz contact and ball-bearing calculations (SI inside; "
                        "tables in engineering units, --units to choose; --json in SI).")
 
-_SUBMODULES = ("ballrace.analytic.cli", "ballrace.analytic.shaft_cli", "ballrace.fem.cli",
+_SUBMODULES = ("ballrace.commands.bearing", "ballrace.commands.shaft", "ballrace.fem.cli",
                "ballrace.validation.cli")
 
 #: Values of the ``--units`` option of the table-printing commands.

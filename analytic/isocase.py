@@ -1,6 +1,6 @@
 """ISO 281:2007 / ISO/TS 16281 life and operating clearance of a bearing case.
 
-Used by ``ballrace bearing CASE.toml`` (:mod:`ballrace.analytic.cli`): :func:`iso_life`
+Used by ``ballrace bearing CASE.toml`` (:mod:`ballrace.commands.bearing`): :func:`iso_life`
 computes plain SI numbers from a validated case and its load distribution; :func:`rows`
 turns them into (quantity, value, unit) rows for the report table.
 """
@@ -20,7 +20,7 @@ def iso_life(case, result, P=None) -> dict:
     Parameters
     ----------
     case : BearingCase
-        Validated case (:func:`ballrace.analytic.casefile.load_case`).
+        Validated case (:func:`ballrace.casefiles.bearing.load_case`).
     result : LoadDistribution
         Its load distribution (one load case).
     P : float, optional
@@ -33,7 +33,7 @@ def iso_life(case, result, P=None) -> dict:
 
     Examples
     --------
-    >>> from ballrace.analytic.casefile import parse_case
+    >>> from ballrace.casefiles.bearing import parse_case
     >>> case = parse_case({"bearing": {"ball_diameter": "11.5 mm", "n_balls": 7,
     ...     "pitch_diameter": "43.5 mm", "f_inner": 0.52, "f_outer": 0.53,
     ...     "diametral_clearance": "0 mm"}, "loads": {"radial": "1 kN"},

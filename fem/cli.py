@@ -180,7 +180,7 @@ def parse_fe_case(data: dict, source: str = "<case>", **overrides) -> FECaseFile
     ballrace.errors.CaseFileError: x.toml: [case].lod: Extra inputs are not permitted
     """
     import ballrace
-    from ballrace.analytic.casefile import CaseFileError, quantity_reader, validate_spec
+    from ballrace.casefiles.bearing import CaseFileError, quantity_reader, validate_spec
 
     from . import api
 

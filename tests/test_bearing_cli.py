@@ -7,7 +7,8 @@ import numpy as np
 import pytest
 from typer.testing import CliRunner
 
-from ballrace.analytic import casefile, life, ratings
+from ballrace.analytic import life, ratings
+from ballrace.casefiles import bearing as casefile
 from ballrace.cli import app
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
@@ -144,7 +145,7 @@ def test_angular_contact_nominal_angle_key(tmp_path):
         'free_contact_angle = "25 deg"\nnominal_contact_angle = "15 deg"')))
     assert case.bearing.nominal_contact_angle == pytest.approx(math.radians(15), rel=1e-14)
     assert case.bearing.free_contact_angle == pytest.approx(math.radians(25), rel=1e-14)
-    from ballrace.analytic import cli as bcli
+    from ballrace.commands import bearing as bcli
     r = bcli.analyze(case)
     assert r["ratings"]["C"] == pytest.approx(
         ratings.dynamic_rating(0.0127, 9, 0.065, math.radians(15)), rel=1e-12)

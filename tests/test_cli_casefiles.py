@@ -28,8 +28,8 @@ def _examples():
 
 
 def test_bearing_example_runs_and_matches_the_shipped_209_case(tmp_path):
-    from ballrace.analytic.casefile import load_case
-    from ballrace.analytic.cli import analyze
+    from ballrace.casefiles.bearing import load_case
+    from ballrace.commands.bearing import analyze
 
     p = tmp_path / "bearing.toml"
     p.write_text(_examples()["bearing"])
@@ -105,7 +105,7 @@ def test_bearing_example_documents_every_accepted_key():
     accepted but undocumented), and ep_additives is shown under [oil], where it is read."""
     import re
 
-    from ballrace.analytic.casefile import _models
+    from ballrace.casefiles.bearing import _models
 
     page = PAGE.read_text()
     example = _examples()["bearing"]

@@ -222,7 +222,7 @@ def test_fe_case_plane_and_ball(tmp_path):
     c = hertz.point_contact(2000.0, 6.35e-3, 6.35e-3, math.inf, math.inf,
                             __import__("ballrace").Material(310e9, 0.26))
     assert float(fc.case.analytic.a) == pytest.approx(float(c.a), rel=1e-12)
-    from ballrace.analytic.casefile import CaseFileError
+    from ballrace.casefiles.bearing import CaseFileError
 
     with pytest.raises(CaseFileError, match=r"\[bearing\] applies to inner \| outer"):
         parse_fe_case({"case": {"contact": "ball"}, "bearing": {
@@ -372,8 +372,8 @@ def test_json_stays_si_whatever_the_units():
 
 
 def test_bearing_tables_have_a_unit_in_every_column_header():
-    from ballrace.analytic.cli import analyze, ball_columns
-    from ballrace.analytic.casefile import load_case
+    from ballrace.commands.bearing import analyze, ball_columns
+    from ballrace.casefiles.bearing import load_case
 
     r = analyze(load_case(EXAMPLES / "bearing_209.toml"))
     for units, length in (("eng", "mm"), ("si", "m"), ("us", "in")):
@@ -551,8 +551,8 @@ def test_a_new_block_of_bearing_rows_is_one_more_section():
     """How issue 12's ISO life rows join the bearing output: (title, [(name, SI, kind)])."""
     from rich.console import Console
 
-    from ballrace.analytic.casefile import load_case
-    from ballrace.analytic.cli import analyze, sections
+    from ballrace.casefiles.bearing import load_case
+    from ballrace.commands.bearing import analyze, sections
     from ballrace.console import print_sections
 
     secs = sections(analyze(load_case(EXAMPLES / "bearing_209.toml")))

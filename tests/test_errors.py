@@ -19,7 +19,7 @@ def test_one_convergence_error_everywhere():
 
 
 def test_one_case_file_error_for_bearing_and_validation_files():
-    from ballrace.analytic import casefile
+    from ballrace.casefiles import bearing as casefile
     from ballrace.validation import schema
 
     assert casefile.CaseFileError is schema.CaseFileError is errors.CaseFileError

@@ -580,7 +580,7 @@ def test_traction_bad_input(brg209):
 
 
 def test_traction_in_the_fe_case_file():
-    from ballrace.analytic.casefile import CaseFileError
+    from ballrace.casefiles.bearing import CaseFileError
     from ballrace.fem.cli import parse_fe_case
 
     fc = parse_fe_case({"case": {"contact": "plane", "load": "2 kN"},

@@ -5,7 +5,9 @@ from pathlib import Path
 
 import pytest
 
-from ballrace.analytic import casefile, cli, iso281, life
+from ballrace.analytic import iso281, life
+from ballrace.casefiles import bearing as casefile
+from ballrace.commands import bearing as cli
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "bearing_6305_iso.toml"
 

@@ -90,8 +90,8 @@ def test_one_operating_state_in_the_bearing_report(tmp_path):
     """A 120 um shaft interference preloads the 6305: the geometry shows the operating
     clearance the load distribution used, and the catalogue lives (which cannot see it)
     are marked and explained."""
-    from ballrace.analytic.casefile import load_case
-    from ballrace.analytic.cli import analyze, sections
+    from ballrace.casefiles.bearing import load_case
+    from ballrace.commands.bearing import analyze, sections
 
     p = tmp_path / "c.toml"
     p.write_text(ISO.replace('shaft_interference = "12 um"', 'shaft_interference = "120 um"'))

@@ -588,7 +588,7 @@ def test_case_file_nominal_angle_key():
     import tomllib
 
     from ballrace.analytic import ratings
-    from ballrace.analytic.shaft_cli import parse_shaft_case
+    from ballrace.commands.shaft import parse_shaft_case
 
     def front(text):
         b = parse_shaft_case(tomllib.loads(text)).seats[0].bearing

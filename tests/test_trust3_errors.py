@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 from typer.testing import CliRunner
 
-from ballrace.analytic.casefile import key_text, parse_case
+from ballrace.casefiles.bearing import key_text, parse_case
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = ROOT / "examples"

@@ -187,7 +187,7 @@ def _schema_keys(model, prefix=""):
 
 
 def test_every_shaft_key_is_documented():
-    from ballrace.analytic.shaft_cli import _models
+    from ballrace.commands.shaft import _models
 
     section = _shaft_section()
     keys = sorted({k for _, k in _schema_keys(_models())})
@@ -201,7 +201,7 @@ def test_every_shaft_key_is_documented():
 
 def test_shaft_example_uses_every_table_and_solves(tmp_path):
     from ballrace.analytic import shaft as S
-    from ballrace.analytic.shaft_cli import analyze, load_shaft_case
+    from ballrace.commands.shaft import analyze, load_shaft_case
 
     text = _shaft_example()
     data = tomllib.loads(text)

@@ -199,7 +199,7 @@ def test_plot_draws_both_lateral_planes(tmp_path):
     Fy = -5000 N and Fz = -1884 N are both labelled."""
     import matplotlib
 
-    from ballrace.analytic.shaft_cli import analyze, load_shaft_case, plot
+    from ballrace.commands.shaft import analyze, load_shaft_case, plot
 
     r = analyze(load_shaft_case(EXAMPLES / "shaft_gearbox.toml"))
     f = tmp_path / "s.svg"
@@ -244,8 +244,8 @@ def test_preloaded_bearing_s0_rows(tmp_path):
     """6305 with a 120 um shaft interference (a preload): s0 = C0/P0 comes from the
     external load only, so it is starred with the catalogue lives and the note names it;
     the stress-based s0 (which sees the preload) is the library's and is lower."""
-    from ballrace.analytic.casefile import load_case
-    from ballrace.analytic.cli import analyze, sections
+    from ballrace.casefiles.bearing import load_case
+    from ballrace.commands.bearing import analyze, sections
 
     p = tmp_path / "c.toml"
     p.write_text((EXAMPLES / "bearing_6305_iso.toml").read_text()

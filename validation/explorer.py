@@ -405,7 +405,7 @@ def case_inputs(path: str, race: str = "inner") -> dict:
 
     Uses the free contact angle, the conformity of ``race`` and the ball's material.
     """
-    from ballrace.analytic.casefile import load_case
+    from ballrace.casefiles.bearing import load_case
 
     try:
         case = _guard("case", load_case, path)
