@@ -58,8 +58,9 @@ CONTACT = hertz.point_contact(1000.0, 6.35e-3, 6.35e-3, 30e-3, -6.6e-3, STEEL)
 LINE = hertz.line_contact(1e6, 0.01, np.inf, STEEL)
 RADIAL = loaddist.radial(BEARING, 5000.0)
 
-#: Modules of ballrace.analytic that are not formula/solver APIs: the command line and the
-#: case-file reader (their input errors are CLI usage errors and CaseFileError, tested in
+#: Modules of ballrace.analytic that are not formula/solver APIs: the old paths of the
+#: command line and the case-file reader (now ballrace.commands and ballrace.casefiles;
+#: their input errors are CLI usage errors and CaseFileError, tested in
 #: tests/test_cli*.py and tests/test_bearing_cli.py).
 NOT_API = {"cli", "casefile", "isocase", "shaft_cli"}
 # shaft_cli is the ``ballrace shaft CASE.toml`` command and its case-file reader: its
