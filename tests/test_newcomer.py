@@ -3,7 +3,8 @@ from __future__ import annotations
 
 import ballrace
 
-SUBPACKAGES = {"analytic", "fem", "meshes", "validation", "reports", "cli", "console", "units"}
+SUBPACKAGES = {"analytic", "commands", "casefiles", "fem", "meshes", "validation", "reports", "cli",
+               "console", "units", "errors"}
 
 
 def test_public_namespace_is_the_documented_one():
