@@ -108,7 +108,7 @@ def test_readme_commands_are_found_with_what_they_need():
     assert by_head["contact --load"] == "-"
     assert by_head["fem --case"] == "fem"
     assert by_head["fem --help"] == "-"
-    assert by_head["teach subsurface"] == "report"
+    assert by_head["teach subsurface"] == "report:matplotlib"    # the extra; the module it needs
     assert by_head["teach serve"] == "skip"
     assert {"fem,report", "-"} <= {n for n, c in cmds if c[1] == "validate"}
     contact = next(c for _, c in cmds if c[1] == "contact")
