@@ -10,7 +10,7 @@ in one ``UserWarning`` per check and solve (the result is still returned):
 * the tilt of the inner ring exceeds the
   :data:`~ballrace.analytic.ratings.PERMISSIBLE_MISALIGNMENT` of the bearing type.
 
-The warnings point at the first caller outside ``ballrace.analytic`` (the user's
+The warnings point at the first caller outside the package (the user's
 script), and a solver that calls another one internally (a start value, a per-seat
 result) silences the inner one with :func:`quiet`.
 """
@@ -44,7 +44,8 @@ def silenced() -> bool:
 
 
 def warn(message: str) -> None:
-    """A ``UserWarning`` attributed to the first frame outside ``ballrace.analytic``."""
+    """A ``UserWarning`` through :func:`ballrace.errors.warn` (at the user's line), unless
+    inside :func:`quiet`."""
     if _QUIET.get():
         return
     from ..errors import warn as _warn
@@ -69,13 +70,6 @@ def may_be_overloaded(bearing, ball_loads) -> bool:
     """False when no ball load can reach 4200 MPa (cheap screen before the exact s0)."""
     Q = np.asarray(ball_loads, dtype=float)
     return bool(Q.size) and float(Q.max()) >= _critical_load(bearing)
-
-
-def pressure_and_safety(inner, outer):
-    """Largest contact pressure [Pa] per case (over balls and both races) and its s0 [-]."""
-    p = np.maximum(np.max(np.asarray(inner.p_max, float), axis=-1),
-                   np.max(np.asarray(outer.p_max, float), axis=-1))
-    return p, ratings.static_safety_from_pressure(p)
 
 
 def _cases(mask) -> str:

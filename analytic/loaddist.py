@@ -1402,16 +1402,14 @@ def _checked(r: LoadDistribution) -> LoadDistribution:
     what = "load distribution"
     safety = None
     if op.may_be_overloaded(r.bearing, r.ball_loads):
-        p, s0 = op.pressure_and_safety(r.inner, r.outer)
-        safety = op.safety_message(what, s0, p)
+        safety = op.safety_message(what, r.static_safety, r.max_pressure)
     tilt = None
     # An imposed tilt is the caller's choice; a free ring under no moment takes whatever tilt
     # makes its moment zero, an artefact of that boundary condition (a shaft holds it): only
     # a tilt caused by an applied moment is the bearing's.
     free = ~np.asarray(r.imposed[..., 3:], bool)
     if np.any(free & (np.asarray(r.applied[..., 3:]) != 0.0)):
-        tilt = op.tilt_message(what, r.bearing, np.hypot(r.displacements[..., 3],
-                                                         r.displacements[..., 4]))
+        tilt = op.tilt_message(what, r.bearing, r.misalignment)
         if tilt:
             tilt += ("; the ring is free to tilt here: where a shaft holds it, impose its tilt "
                      "(displacements) or solve the shaft (ballrace.analytic.shaft)")

@@ -1321,6 +1321,7 @@ def _checked(r: ShaftResult) -> ShaftResult:
     except (ValueError, ConvergenceError) as exc:         # pragma: no cover - defensive
         log.debug("shaft: seat checks skipped (%s)", exc)
         return r
+    tilt, pressure = r.misalignment, None            # the seats' pressures only if needed
     for k, s in enumerate(r.seats):
         what = (f"shaft seats[{k}]" + (f" '{s.name}'" if s.name else "")
                 + f" (x = {s.position * 1e3:g} mm)")
@@ -1330,9 +1331,10 @@ def _checked(r: ShaftResult) -> ShaftResult:
         beta = np.concatenate([np.atleast_1d(ld.contact_angles) for ld in rows])
         safety = None
         if op.may_be_overloaded(b, Q):
-            safety = op.safety_message(what, r.static_safety[k], r.max_pressure[k])
-        op.emit(safety, op.angle_message(what, b, Q, beta),
-                op.tilt_message(what, b, r.misalignment[k]))
+            if pressure is None:
+                pressure, s0 = r.max_pressure, r.static_safety
+            safety = op.safety_message(what, s0[k], pressure[k])
+        op.emit(safety, op.angle_message(what, b, Q, beta), op.tilt_message(what, b, tilt[k]))
     return r
 
 

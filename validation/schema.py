@@ -81,7 +81,7 @@ from ballrace.units import parse_quantity
 from . import registry
 
 __all__ = ["KINDS", "CaseFileError", "Source", "Expectation", "Sweep", "Case", "parse_cases",
-           "load_case_file", "load_cases", "default_case_dir", "format_value"]
+           "load_case_file", "load_cases", "default_case_dir"]
 
 KINDS = ("published", "independent derivation", "FE check", "regression baseline")
 _CASE_KEYS = {"id", "title", "kind", "calculation", "source", "inputs", "expected", "sweep",
@@ -150,23 +150,6 @@ class Expectation:
             ok &= got >= self.min
         return bool(ok)
 
-    def tolerance_text(self) -> str:
-        """Human-readable tolerance, in the file's terms."""
-        if self.value is None:
-            parts = []
-            if self.min is not None:
-                parts.append(f">= {format_value(self.min, self.dimension)}")
-            if self.max is not None:
-                parts.append(f"<= {format_value(self.max, self.dimension)}")
-            return " and ".join(parts)
-        parts = []
-        if self.rtol:
-            parts.append(f"±{self.rtol:.3g} rel")
-        if self.atol:
-            parts.append(f"±{format_value(self.atol, self.dimension)}")
-        return " + ".join(parts) or "exact"
-
-
 @dataclass(frozen=True)
 class Sweep:
     """A parameter sweep (frozen): a grid of inputs and reductions of the outputs."""
@@ -228,24 +211,6 @@ class Case:
     def distributed(self) -> bool:
         """FE and sweep cases run through dask."""
         return self.fem or self.sweep is not None
-
-
-def format_value(v: float | None, dimension: str) -> str:
-    """SI value with its SI unit for tables (angles in degrees).
-
-    >>> format_value(0.7740, "[angle]"), format_value(1.5e-4, "[length]"), format_value(0.25, "")
-    ('44.3469 deg', '0.00015 m', '0.25')
-    """
-    if v is None:
-        return ""
-    if dimension == "[angle]":
-        return f"{math.degrees(v):.6g} deg"
-    unit = {"[length]": "m", "[force]": "N", "[pressure]": "Pa", "[time]": "s",
-            "[force] / [length]": "N/m", "[mass] / [length] / [time]": "Pa*s",
-            "1 / [pressure]": "1/Pa", "[length] / [time]": "m/s", "1 / [time]": "1/s",
-            "[force] / [length] ** 1.5": "N/m^1.5", "[mass]": "kg",
-            "[force] * [length]": "N*m"}.get(dimension, "")
-    return f"{v:.6g} {unit}".strip()
 
 
 # --------------------------------------------------------------------------- parsing helpers
