@@ -19,8 +19,6 @@ from __future__ import annotations
 import http.client
 import json
 import logging
-import os
-import shutil
 import threading
 import time
 from pathlib import Path
@@ -29,6 +27,7 @@ import pytest
 from typer.testing import CliRunner
 
 from ballrace.validation import explorer as ex
+from test_explorer import _chromium   # the browser the explorer tests drive
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 REFUSED = "reads only the case file it was started with"
@@ -310,14 +309,6 @@ def test_progress_lines_one_per_tenth(capsys):
 
 
 # ------------------------------------------------------------------ in a real browser
-def _chromium():
-    for p in (os.environ.get("BALLRACE_CHROMIUM"), "/usr/bin/chromium", shutil.which("chromium"),
-              shutil.which("chromium-browser")):
-        if p and Path(p).exists():
-            return p
-    return None
-
-
 @pytest.fixture(scope="module")
 def browser(tmp_path_factory):
     sync_api = pytest.importorskip("playwright.sync_api", reason="pip install playwright")
