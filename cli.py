@@ -164,7 +164,7 @@ def contact(
             c = hertz.point_contact(q, *radii, m1, m2, method=method)
     except (ValueError, TypeError) as exc:
         fail(str(exc))
-    size = hertz._size_ratio(c.a, radii)
+    size = hertz.size_ratio(c.a, radii)
     # (JSON key, table label, SI value, kind of quantity for the display units; None:
     # dimensionless).  The keys are stable identifiers (the HertzContact / subsurface
     # attribute names, CONTACT_JSON_KEYS); the labels are for people and may change.

@@ -55,7 +55,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import _plausible
+from . import plausible
 from ._checks import (as_array, check_choice, check_instance, check_nonnegative,
                       check_positive, check_range)
 
@@ -269,13 +269,13 @@ def operating_clearance(bearing, *, bore, outside_diameter, initial_clearance=No
     if not Do > Er:
         raise ValueError(f"outside_diameter must exceed the outer raceway diameter "
                          f"{Er * 1e3:.4g} mm; got {Do * 1e3:.4g} mm")
-    Ti, Te = (float(_plausible.temperature(check_positive(t, n, "K", bounded=True), n))
+    Ti, Te = (float(plausible.temperature(check_positive(t, n, "K", bounded=True), n))
               for t, n in ((inner_temperature, "inner_temperature"),
                            (outer_temperature, "outer_temperature")))
-    T0 = float(_plausible.temperature(check_positive(
+    T0 = float(plausible.temperature(check_positive(
         reference_temperature, "reference_temperature", "K", bounded=True),
         "reference_temperature"))
-    Tb = 0.5 * (Ti + Te) if ball_temperature is None else float(_plausible.temperature(
+    Tb = 0.5 * (Ti + Te) if ball_temperature is None else float(plausible.temperature(
         check_positive(ball_temperature, "ball_temperature", "K", bounded=True),
         "ball_temperature"))
     ar = float(as_array(ring_expansion, "ring_expansion"))

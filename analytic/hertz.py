@@ -79,6 +79,7 @@ __all__ = [
     "ellipticity",
     "point_contact",
     "elliptical_contact",
+    "size_ratio",
     "contact_stiffness",
     "load_from_approach",
     "line_contact",
@@ -1088,14 +1089,14 @@ def _radius_ok(r: float) -> bool:
 SIZE_LIMIT = 0.5
 
 
-def _size_ratio(a, radii) -> float:
+def size_ratio(a, radii) -> float:
     """max(a) / min |R| over the finite radii [-] (0 when every surface is flat)."""
     rmin = min(float(np.min(np.where(np.isfinite(x), np.abs(x), np.inf))) for x in radii)
     return float(np.max(a)) / rmin if math.isfinite(rmin) and rmin > 0 else 0.0
 
 
 def _warn_size(c, radii):
-    ratio = _size_ratio(c.a, radii)
+    ratio = size_ratio(c.a, radii)
     if ratio > SIZE_LIMIT:
         import warnings
 

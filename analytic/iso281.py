@@ -41,7 +41,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import _plausible
+from . import plausible
 from ._checks import as_array, broadcast, check_choice, check_instance, check_positive, check_range
 
 __all__ = [
@@ -240,9 +240,9 @@ def walther_constants(nu40, nu100):
     >>> round(float(A), 4), round(float(B), 4)
     (9.3097, 3.6244)
     """
-    v40 = _plausible.viscosity(check_positive(nu40, "nu40", "m^2/s", bounded=True),
+    v40 = plausible.viscosity(check_positive(nu40, "nu40", "m^2/s", bounded=True),
                                "nu40") * 1e6
-    v100 = _plausible.viscosity(check_positive(nu100, "nu100", "m^2/s", bounded=True),
+    v100 = plausible.viscosity(check_positive(nu100, "nu100", "m^2/s", bounded=True),
                                 "nu100") * 1e6
     v40, v100 = broadcast(nu40=v40, nu100=v100)
     if np.any(v100 >= v40):
@@ -292,7 +292,7 @@ def operating_viscosity(nu40, nu100, temperature):
     20.12
     """
     A, B = walther_constants(nu40, nu100)
-    T = _plausible.temperature(check_positive(temperature, "temperature", "K", bounded=True),
+    T = plausible.temperature(check_positive(temperature, "temperature", "K", bounded=True),
                                "temperature")
     broadcast(nu40=as_array(nu40, "nu40"), nu100=as_array(nu100, "nu100"), temperature=T)
     nu = 10.0 ** (10.0 ** (A - B * np.log10(T))) - 0.7

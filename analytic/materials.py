@@ -62,7 +62,7 @@ class Material:
                                 f"got shape {arr.shape}")
         if not isinstance(self.name, str):
             raise TypeError(f"name must be a string; got {type(self.name).__name__}")
-        from ._plausible import modulus
+        from .plausible import modulus
 
         modulus(self.E, "E", stacklevel=4)           # Material(E=200): GPa typed as Pa
 

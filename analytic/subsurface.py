@@ -144,7 +144,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import optimize, special
 
-from . import _plausible
+from . import plausible
 from ._checks import as_array, broadcast, check_choice, check_nonnegative, check_range
 from .hertz import HertzContact, LineContact, _scalar
 
@@ -683,7 +683,7 @@ def axis_stress(c: HertzContact, z, nu=0.3) -> StressState:
     z = check_nonnegative(z, "z", "m", bounded=True, tiny_ok=True)
     nu = _check_nu(nu)
     broadcast(z=z, nu=nu, c=np.asarray(c.b))
-    _plausible.depth(z, c.a)                  # z = 0.5 typed for 0.5 mm: a warning
+    plausible.depth(z, c.a)                  # z = 0.5 typed for 0.5 mm: a warning
     axn, ayn, b, p, nu = _axis_inputs(c, nu)
     axn, ayn, b, p, nu, z = np.broadcast_arrays(axn, ayn, b, p, nu, z)
     loaded = b > 0
@@ -1333,7 +1333,7 @@ def stress(c: HertzContact, x, y, z, nu=0.3, traction=0.0) -> StressState:
     nu = _check_nu(nu)
     mu = _check_traction(traction)
     broadcast(x=x, y=y, z=z, nu=nu, traction=mu, c=np.asarray(c.b))
-    _plausible.depth(z, c.a)                  # z = 0.5 typed for 0.5 mm: a warning
+    plausible.depth(z, c.a)                  # z = 0.5 typed for 0.5 mm: a warning
     axn, ayn, b, p, nu = _axis_inputs(c, nu)
     arrs = np.broadcast_arrays(x, y, z, axn, ayn, b, p, nu, mu)
     shape = arrs[0].shape
@@ -1475,7 +1475,7 @@ def line_stress(lc: LineContact, x, z, nu=0.3, traction=0.0) -> StressState:
     nu = _check_nu(nu)
     mu = _check_traction(traction)
     broadcast(x=x, z=z, nu=nu, traction=mu, lc=np.asarray(lc.b))
-    _plausible.depth(z, lc.b)                 # z = 0.5 typed for 0.5 mm: a warning
+    plausible.depth(z, lc.b)                 # z = 0.5 typed for 0.5 mm: a warning
     b, p = np.asarray(lc.b, float), np.asarray(lc.p_max, float)
     x, z, b, p, nu, mu = np.broadcast_arrays(x, z, b, p, nu, mu)
     loaded = b > 0

@@ -327,7 +327,7 @@ class BearingCase:
         return float(self.bearing.nominal_contact_angle)
 
 
-def _speed(text: str, where: str) -> float:
+def parse_speed(text: str, where: str) -> float:
     from ballrace.units import check_form, ureg
 
     s = str(text).strip()
@@ -349,7 +349,7 @@ def _speed(text: str, where: str) -> float:
     return w
 
 
-def _temperature(text, where: str) -> float:
+def parse_temperature(text, where: str) -> float:
     """Absolute temperature [K] from "70 degC", "343.15 K", "158 degF".
 
     Refused, each in one line naming the key: a bare number (no unit), a temperature
@@ -358,7 +358,7 @@ def _temperature(text, where: str) -> float:
     """
     from ballrace.units import ureg
 
-    from ballrace.analytic._plausible import TEMPERATURE_RANGE, temperature
+    from ballrace.analytic.plausible import TEMPERATURE_RANGE, temperature
 
     example = 'write e.g. "70 degC" or "343.15 K"'
     if isinstance(text, bool) or not isinstance(text, str):
@@ -442,7 +442,8 @@ def _iso_inputs(spec, brg, source, q):
                                     f"{source}: [oil].nu40", "68 mm^2/s"),
                      nu100=_positive(q(oil.nu100, visc_dim, "[oil].nu100"), oil.nu100,
                                      f"{source}: [oil].nu100", "8.7 mm^2/s"),
-                     temperature=_temperature(oil.temperature, f"{source}: [oil].temperature"))
+                     temperature=parse_temperature(oil.temperature,
+                                                   f"{source}: [oil].temperature"))
             try:
                 out["oil_viscosity"] = float(iso281.operating_viscosity(**d))
             except ValueError as exc:
@@ -458,7 +459,7 @@ def _iso_inputs(spec, brg, source, q):
                                        nu=m.nu, name=m.name or which)
         exp = {k: q(getattr(f, k), "1 / [temperature]", f"[fits].{k}")
                for k in ("shaft_expansion", "housing_expansion")}
-        T = {k: _temperature(getattr(f, k), f"{source}: [fits].{k}")
+        T = {k: parse_temperature(getattr(f, k), f"{source}: [fits].{k}")
              for k in ("inner_temperature", "outer_temperature", "reference_temperature")}
         try:
             out["clearance"] = _cl.operating_clearance(
@@ -785,7 +786,7 @@ def parse_case(data: dict, source: str = "<case>") -> BearingCase:
                                 "solvers take no preload: give a radial load component")
     return BearingCase(
         title=spec.title, bearing=brg, kind=spec.bearing.type, radial_load=Fr, axial_load=Fa,
-        eccentricity=ecc, speed=_speed(spec.operation.speed, f"{source}: [operation].speed"),
+        eccentricity=ecc, speed=parse_speed(spec.operation.speed, f"{source}: [operation].speed"),
         rotating_ring=spec.operation.rotating_ring, viscosity=visc, pressure_viscosity=xi,
         roughness_race=rq_r, roughness_ball=rq_b, standard=lf.standard, material=lf.material,
         processing=lf.processing, hardness_hrc=lf.hardness_hrc,

@@ -342,12 +342,12 @@ def _render(r: dict, units: str = "eng") -> None:
         con.print(literal(f"note: {n}"), style="dim")
 
 
-def _clean(obj):
+def jsonable(obj):
     """JSON-safe copy: NaN / inf become null."""
     if isinstance(obj, dict):
-        return {k: _clean(v) for k, v in obj.items()}
+        return {k: jsonable(v) for k, v in obj.items()}
     if isinstance(obj, list):
-        return [_clean(v) for v in obj]
+        return [jsonable(v) for v in obj]
     if isinstance(obj, float) and not math.isfinite(obj):
         return None
     return obj
@@ -381,7 +381,7 @@ def register(app) -> None:
         except (OSError, ValueError, RuntimeError) as exc:
             fail(f"{case_file}: {exc}")
         if as_json:
-            typer.echo(json.dumps(_clean(result), indent=2))
+            typer.echo(json.dumps(jsonable(result), indent=2))
             return
         _render(result, units)
 

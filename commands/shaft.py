@@ -258,7 +258,7 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
     """
     import ballrace
     from ballrace.analytic import shaft as S
-    from ballrace.casefiles.bearing import (CaseFileError, _speed, array_item,
+    from ballrace.casefiles.bearing import (CaseFileError, parse_speed, array_item,
                                             bearing_from_keys, quantity_reader, validate_spec)
     from ballrace.analytic.duplex import DuplexPair
 
@@ -409,7 +409,7 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
             raise err(where, exc) from None
 
     op = spec.operation
-    speed = None if op.speed is None else _speed(op.speed, f"{source}: [operation].speed")
+    speed = None if op.speed is None else parse_speed(op.speed, f"{source}: [operation].speed")
     opts = dict(shaft_temperature_change=_delta_T(op.shaft_temperature_change, source,
                                                   "[operation].shaft_temperature_change"),
                 housing_temperature_change=_delta_T(op.housing_temperature_change, source,
@@ -421,7 +421,7 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
                   "needs [shaft].thermal_expansion (e.g. \"11.5e-6 1/K\")")
     duty = []
     for k, d in enumerate(spec.duty):
-        w = _speed(d.speed, f"{source}: {array_item('duty', k)}.speed")
+        w = parse_speed(d.speed, f"{source}: {array_item('duty', k)}.speed")
         duty.append((d.fraction, w * 60 / (2 * math.pi), d.load_factor))
     if duty and abs(sum(d[0] for d in duty) - 1.0) > 1e-6:
         raise err("[[duty]]", f"the fractions must sum to 1; got "
@@ -437,10 +437,10 @@ def _fits(f, brg, shaft, x, q, source, where):
     """OperatingClearance of a seat from its fits and ring temperatures (clearance module;
     the shaft's bore at the seat and its material)."""
     from ballrace.analytic import clearance as _cl
-    from ballrace.casefiles.bearing import CaseFileError, _temperature, parse_inf
+    from ballrace.casefiles.bearing import CaseFileError, parse_inf, parse_temperature
 
     w = f"{where}.fits"
-    T = {k: _temperature(getattr(f, k), f"{source}: {w}.{k}")
+    T = {k: parse_temperature(getattr(f, k), f"{source}: {w}.{k}")
          for k in ("inner_temperature", "outer_temperature", "reference_temperature")}
     exp = {k: q(getattr(f, k), "1 / [temperature]", f"{w}.{k}")
            for k in ("shaft_expansion", "housing_expansion")}
@@ -840,7 +840,7 @@ def plot(r: dict, path) -> float:
 
 def _clean(obj):
     """JSON-safe copy: NaN / inf become null (as ``ballrace bearing --json``)."""
-    from ballrace.commands.bearing import _clean as clean
+    from ballrace.commands.bearing import jsonable as clean
 
     return clean(obj)
 

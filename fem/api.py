@@ -14,7 +14,7 @@ from typing import Callable
 
 import numpy as np
 
-from ballrace.analytic import _plausible, hertz
+from ballrace.analytic import hertz, plausible
 from ballrace.analytic._checks import check_choice, check_positive, check_range
 from ballrace.analytic.materials import BEARING_STEEL, Material, effective_modulus
 from ballrace.meshes import geometry as geo
@@ -308,7 +308,7 @@ def plane_case(ball_diameter: float, load: float, material: Material = BEARING_S
     """
     load = _check_load(load)
     D = float(check_positive(ball_diameter, "ball_diameter", "m"))
-    _plausible.length(D, "ball_diameter", 0.25, "rolling-bearing ball", stacklevel=4)
+    plausible.length(D, "ball_diameter", 0.25, "rolling-bearing ball", stacklevel=4)
     m1 = _check_material(material, "material")
     m2 = _check_material(plane_material or material, "plane_material")
     c = hertz.point_contact(load, D / 2, D / 2, np.inf, np.inf, m1, m2)
@@ -354,7 +354,7 @@ def groove_case(ball_diameter: float, load: float, race_radius: float, groove_ra
     from ballrace.analytic.bearing import BallBearing
 
     D = float(check_positive(ball_diameter, "ball_diameter", "m"))
-    _plausible.length(D, "ball_diameter", 0.25, "rolling-bearing ball", stacklevel=4)
+    plausible.length(D, "ball_diameter", 0.25, "rolling-bearing ball", stacklevel=4)
     check_choice(race, "race", ("inner", "outer"))
     r = float(check_range(groove_radius, "groove_radius", D / 2, None, unit="m"))
     if race == "inner":
@@ -376,7 +376,7 @@ def ball_case(ball_diameter: float, load: float, material: Material = BEARING_ST
     """Two balls pressed together (Hamrock & Dowson 1981 Table 3.2 "ball on ball")."""
     load = _check_load(load)
     D = float(check_positive(ball_diameter, "ball_diameter", "m"))
-    _plausible.length(D, "ball_diameter", 0.25, "rolling-bearing ball", stacklevel=4)
+    plausible.length(D, "ball_diameter", 0.25, "rolling-bearing ball", stacklevel=4)
     D2 = float(check_positive(other_diameter or D, "other_diameter", "m"))
     m1 = _check_material(material, "material")
     m2 = _check_material(other_material or material, "other_material")
@@ -533,7 +533,7 @@ def size_ratio(case) -> float:
     """a / R of a :class:`ContactCase`: Hertz's semi-major axis over the smallest finite
     radius of the ball and the lower body [-] (0 when every surface is flat)."""
     radii = (case.ball_radius, *getattr(case, "lower_radii", ()))
-    return hertz._size_ratio(case.analytic.a, radii)
+    return hertz.size_ratio(case.analytic.a, radii)
 
 
 def size_flags(case) -> list:

@@ -212,11 +212,11 @@ def _gmsh_body(kind: str, size: tuple, r_nodes, fine: tuple, hc: float, hf: floa
     """
     import gmsh
 
-    from ballrace.meshes.contact import _options
+    from ballrace.meshes.contact import deterministic_options
 
     gmsh.initialize(interruptible=False)
     try:
-        _options(gmsh)          # the 3-D meshes' deterministic settings (one thread, ...)
+        deterministic_options(gmsh)     # the 3-D meshes' deterministic settings (one thread, ...)
         gmsh.model.add(kind)
         geo = gmsh.model.geo
         if kind == "ball":

@@ -395,7 +395,7 @@ def register(app: typer.Typer) -> None:
         """
         from ballrace.errors import CaseFileError
         from ballrace.cli import check_units, fail
-        from ballrace.validation.cli import FEM_INSTALL, _missing, missing_fem
+        from ballrace.validation.cli import FEM_INSTALL, missing_modules, missing_fem
 
         if load is not None:                  # named as the option, not as [case].load
             from ballrace.units import parse_quantity
@@ -435,7 +435,7 @@ def register(app: typer.Typer) -> None:
         if miss:
             fail(f"the FE check needs the fem extra ({', '.join(miss)} not installed): "
                  f"{FEM_INSTALL}")
-        if render and case_file != "convergence" and _missing("matplotlib"):
+        if render and case_file != "convergence" and missing_modules("matplotlib"):
             typer.echo('note: the PNG renders need matplotlib (pip install "ballrace[report]"); '
                        "this run writes result.json only", err=True)
             render = False

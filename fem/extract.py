@@ -34,7 +34,7 @@ def displacement(state, lam) -> np.ndarray:
     return state.displacement(lam)
 
 
-def _locator(state):
+def locator(state):
     """KD-tree of element centroids and inverse affine maps, cached on the state."""
     cache = state.__dict__.setdefault("_locator", {})
     if not cache:
@@ -52,7 +52,7 @@ def _locator(state):
 
 def locate(state, pts, k: int = 24):
     """Element index and reference coordinates (n, 3) of points (n, 3) in a body's mesh."""
-    cache = _locator(state)
+    cache = locator(state)
     pts = np.asarray(pts, dtype=float)
     n = pts.shape[0]
     tind = np.full(n, -1)
@@ -92,7 +92,7 @@ def evaluate(state, u, pts):
     el = ElementTetP2()
     edofs = state.scalar_basis.element_dofs[:, tind]      # (10, n)
     U = u.reshape(-1, 3)
-    inv = _locator(state)["inv"][tind]                    # (n, 3, 3) reference <- physical
+    inv = locator(state)["inv"][tind]                    # (n, 3, 3) reference <- physical
     val = np.zeros((len(tind), 3))
     grad = np.zeros((len(tind), 3, 3))
     for i in range(edofs.shape[0]):

@@ -329,11 +329,11 @@ def nodal_stress(state, u) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """
     from skfem import ElementTetP2
 
-    from .extract import _locator
+    from .extract import locator
 
     sb = state.scalar_basis
     edofs = sb.element_dofs                                 # (10, nt)
-    inv = _locator(state)["inv"]                            # (nt, 3, 3)
+    inv = locator(state)["inv"]                            # (nt, 3, 3)
     U = np.asarray(u).reshape(-1, 3)
     E, nu = state.body.E, state.body.nu
     lam = E * nu / ((1 + nu) * (1 - 2 * nu))

@@ -211,7 +211,7 @@ GMSH_OPTIONS = {
 }
 
 
-def _options(gmsh) -> None:
+def deterministic_options(gmsh) -> None:
     for name, value in GMSH_OPTIONS.items():
         gmsh.option.setNumber(name, value)
 
@@ -242,7 +242,7 @@ def _generate(spec: MeshSpec) -> tuple[np.ndarray, np.ndarray]:
     s = float(spec.stretch)
     gmsh.initialize(interruptible=False)
     try:
-        _options(gmsh)
+        deterministic_options(gmsh)
         gmsh.model.add(spec.kind)
         occ = gmsh.model.occ
         if spec.kind == "block":

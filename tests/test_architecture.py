@@ -26,14 +26,7 @@ KNOWN_PRIVATE = {
     ("analytic/highspeed.py", "loaddist._check_loads"), ("analytic/loaddist.py", "hertz._scalar"),
     ("analytic/shaft.py", "loaddist._Model"), ("analytic/shaft.py", "loaddist._State"),
     ("analytic/shaft.py", "loaddist._geo"), ("analytic/shaft.py", "loaddist._reference"),
-    ("commands/shaft.py", "ballrace.casefiles.bearing._speed"),
-    ("commands/shaft.py", "ballrace.casefiles.bearing._temperature"),
-    ("commands/shaft.py", "ballrace.commands.bearing._clean"),
-    ("analytic/subsurface.py", "hertz._scalar"), ("cli.py", "hertz._size_ratio"),
-    ("fem/api.py", "hertz._size_ratio"), ("fem/api.py", "ballrace.analytic._plausible"),
-    ("fem/axisym.py", "ballrace.meshes.contact._options"),
-    ("fem/cli.py", "ballrace.validation.cli._missing"), ("fem/render.py", "extract._locator"),
-    ("validation/explorer.py", "hertz._size_ratio"),
+    ("analytic/subsurface.py", "hertz._scalar"),
 }
 #: Old module paths kept importable after their modules left analytic/: each file is a shim
 #: that puts the moved module in its place in ``sys.modules`` (so it is the same object).

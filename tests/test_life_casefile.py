@@ -98,7 +98,7 @@ def test_analyze_reports_iso_life_of_example():
     assert iso["C_u"] == pytest.approx(iso["C_u_hertz"])
     assert iso["clearance"]["operating"] == pytest.approx(case.bearing.diametral_clearance)
     assert iso["L10mr"] == pytest.approx(iso["a_ISO_ref"] * iso["L10r"], rel=1e-12)
-    json.dumps(cli._clean(r))      # JSON-safe
+    json.dumps(cli.jsonable(r))      # JSON-safe
 
 
 def test_analyze_without_oil_notes_it():

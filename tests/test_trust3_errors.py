@@ -278,7 +278,7 @@ def test_an_unwritable_out_folder_names_the_option(tmp_path, monkeypatch):
     monkeypatch.setattr(vcli, "missing_fem", lambda: [])
     res = runner.invoke(_app(), ["fem", "--out", str(tmp_path / "fe"), "--level", "quick"])
     assert res.exit_code == 2 and "--out" in res.stderr and "Errno" not in res.stderr
-    monkeypatch.setattr(vcli, "_missing", lambda *m: [])
+    monkeypatch.setattr(vcli, "missing_modules", lambda *m: [])
     res = runner.invoke(_app(), ["validate", "--fem", "none", "--cases", "ehl.toml",
                                  "--report", str(tmp_path / "rep")])
     assert res.exit_code == 2, res.output

@@ -325,8 +325,8 @@ def _without(monkeypatch, *modules):
     """Make ``validation.cli`` see ``modules`` as not installed."""
     from ballrace.validation import cli as vcli
 
-    real = vcli._missing
-    monkeypatch.setattr(vcli, "_missing",
+    real = vcli.missing_modules
+    monkeypatch.setattr(vcli, "missing_modules",
                         lambda *m: [x for x in m if x in modules] + real(*[x for x in m
                                                                           if x not in modules]))
 

@@ -100,10 +100,10 @@ def missing_fem() -> list[str]:
     """The pip names of the fem extra's modules that are not installed (checked without
     importing them)."""
     names = {"skfem": "scikit-fem"}
-    return [names.get(m, m) for m in _missing(*FEM_MODULES)]
+    return [names.get(m, m) for m in missing_modules(*FEM_MODULES)]
 
 
-def _missing(*modules: str) -> list[str]:
+def missing_modules(*modules: str) -> list[str]:
     """The modules of ``modules`` that cannot be imported (checked without importing)."""
     import importlib.util
 
@@ -133,7 +133,7 @@ def _preflight(console, selected, *, fem, serial, scheduler, workers, report, pl
             _usage(console, f"--fem {fem}: the FE cases need the fem extra ({', '.join(miss)} "
                             f"not installed): {FEM_INSTALL}; or run the analytic cases "
                             "alone with --fem none")
-    if not serial and _missing("dask", "distributed"):
+    if not serial and missing_modules("dask", "distributed"):
         if scheduler or workers:
             _usage(console, f"{'--scheduler' if scheduler else '--workers'} needs dask.distributed: "
                             "pip install \"ballrace[report]\" (or run without it)")
@@ -143,7 +143,7 @@ def _preflight(console, selected, *, fem, serial, scheduler, workers, report, pl
         serial = True
     if report is not None:
         need = ["jinja2"] + (["matplotlib"] if plots else [])
-        miss = _missing(*need)
+        miss = missing_modules(*need)
         if miss:
             _usage(console, f"--report needs {' and '.join(miss)}: pip install "
                             f"\"ballrace[report]\""
@@ -376,7 +376,7 @@ def teach_subsurface(
     plausible(e, e1, "--E1", "modulus")             # "200 MPa" for "200 GPa": a warning
     from ballrace.console import output_folder
 
-    if _missing("matplotlib"):
+    if missing_modules("matplotlib"):
         _usage(console, 'teach draws with matplotlib: pip install "ballrace[report]"')
     try:
         output_folder(out.parent)

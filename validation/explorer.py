@@ -178,7 +178,7 @@ def _contact(params: dict):
             warnings.simplefilter("ignore", UserWarning)
             c = _guard("rx1", hertz.point_contact, Q, r["rx1"], r["ry1"], r["rx2"], r["ry2"],
                        mat)
-        size = hertz._size_ratio(c.a, tuple(r[n] for n in names))
+        size = hertz.size_ratio(c.a, tuple(r[n] for n in names))
         if size > hertz.SIZE_LIMIT:
             changed["_note"] = (f"a / R = {size:.3g} > {hertz.SIZE_LIMIT:g}: beyond Hertz's "
                                 "small-contact assumption; the numbers are extrapolations")
