@@ -42,7 +42,7 @@ _MODULE_NAMES = {"hertz", "loaddist", "duplex", "shaft", "highspeed", "casefile"
 def _sources():
     files = [p for p in ROOT.glob("*.py") if p.name != "setup.py"]
     for pkg in PACKAGES:
-        files += sorted((ROOT / pkg).glob("*.py"))
+        files += sorted((ROOT / pkg).rglob("*.py"))     # sub-packages too (analytic/roller)
     return [(p.relative_to(ROOT).as_posix(), ast.parse(p.read_text(encoding="utf-8")))
             for p in files]
 

@@ -1,0 +1,11 @@
+"""Roller bearings and the contact of a profiled roller.
+
+* :mod:`~ballrace.analytic.roller.profile` — roller profiles (straight, ISO/TS 16281's
+  default, circular crown, Lundberg's and Johns–Gohar's logarithmic crowns, tables).
+"""
+from . import profile
+from .profile import (ISO, Crowned, JohnsGohar, Lundberg, Profile, ProfileContext, Straight,
+                      Table, as_profile)
+
+__all__ = ["profile", "Profile", "ProfileContext", "Straight", "ISO", "Crowned", "Lundberg",
+           "JohnsGohar", "Table", "as_profile"]
