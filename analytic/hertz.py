@@ -79,7 +79,6 @@ __all__ = [
     "ellipticity",
     "point_contact",
     "elliptical_contact",
-    "size_ratio",
     "contact_stiffness",
     "load_from_approach",
     "line_contact",
