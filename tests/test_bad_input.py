@@ -177,11 +177,11 @@ TABLE: dict[str, tuple[dict, dict, tuple]] = {
                            dict(h_min="load", roughness_race="load", roughness_ball="load"),
                            ("h_min", "roughness_race", "roughness_ball")),
     "ehl.entrainment_speed": (dict(ball_diameter=12.7e-3, pitch_diameter=65e-3,
-                                   contact_angle=0.0, inner_speed=100.0, outer_speed=0.0),
+                                   contact_angle=0.0, speed_inner=100.0, speed_outer=0.0),
                               dict(ball_diameter="scale", pitch_diameter="scale",
-                                   contact_angle="angle", inner_speed="signed",
-                                   outer_speed="signed"),
-                              ("ball_diameter", "pitch_diameter", "inner_speed")),
+                                   contact_angle="angle", speed_inner="signed",
+                                   speed_outer="signed"),
+                              ("ball_diameter", "pitch_diameter", "speed_inner")),
 }
 
 _KIN = dict(D=12.7e-3, d_m=65e-3)
@@ -660,10 +660,10 @@ def test_life_refuses_ball_at_or_above_pitch_diameter():
 def test_entrainment_speed_refuses_nan_inf_none(speed, error):
     """Issue 14 item 6: entrainment_speed returned NaN for these speeds."""
     from ballrace.analytic import ehl
-    with pytest.raises(error, match="inner_speed"):
-        ehl.entrainment_speed(0.0127, 0.065, inner_speed=speed)
-    with pytest.raises(error, match="outer_speed"):
-        ehl.entrainment_speed(0.0127, 0.065, inner_speed=100.0, outer_speed=speed)
+    with pytest.raises(error, match="speed_inner"):
+        ehl.entrainment_speed(0.0127, 0.065, speed_inner=speed)
+    with pytest.raises(error, match="speed_outer"):
+        ehl.entrainment_speed(0.0127, 0.065, speed_inner=100.0, speed_outer=speed)
 
 
 def test_shapes_2_and_3_are_named():
