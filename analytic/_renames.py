@@ -8,7 +8,7 @@ import functools
 import inspect
 import warnings
 
-__all__ = ["renamed_keywords", "deprecated_property", "deprecated_function"]
+__all__ = ["renamed_keywords", "warn_renamed"]
 
 
 def _message(old: str, new: str, where: str) -> str:
@@ -54,26 +54,7 @@ def renamed_keywords(**renames):
     return wrap
 
 
-def deprecated_property(old: str, new: str, owner: str) -> property:
-    """A read-only property ``owner.old`` giving ``getattr(self, new)`` with a
-    DeprecationWarning naming ``owner.new``."""
-    def get(self):
-        warnings.warn(_message(f"{owner}.{old}", f"{owner}.{new}", ""),
-                      DeprecationWarning, stacklevel=2)
-        return getattr(self, new)
-    get.__name__ = old
-    get.__doc__ = f"Deprecated alias of :attr:`{new}` (same value; DeprecationWarning)."
-    return property(get)
-
-
-def deprecated_function(func, old: str, where: str):
-    """``func`` under its old name ``old`` (in ``where``), with a DeprecationWarning."""
-    @functools.wraps(func)
-    def alias(*args, **kwargs):
-        warnings.warn(_message(f"{where}.{old}", f"{where}.{func.__name__}", ""),
-                      DeprecationWarning, stacklevel=2)
-        return func(*args, **kwargs)
-    alias.__name__ = alias.__qualname__ = old
-    alias.__doc__ = (f"Deprecated alias of :func:`{func.__name__}` (same arguments and "
-                     "result; DeprecationWarning).")
-    return alias
+def warn_renamed(old: str, new: str, stacklevel: int = 3) -> None:
+    """DeprecationWarning: ``old`` is now ``new``; attributed to the caller of the function
+    (or property getter) that calls this (``stacklevel=3``)."""
+    warnings.warn(_message(old, new, ""), DeprecationWarning, stacklevel=stacklevel)
