@@ -503,10 +503,10 @@ TABLE.update({
                          thermal_reference="coord", rtol="pos", max_iter="count",
                          initial="object"), ()),
     # modified is a dict of ISO 281 factors (checked by iso281, rows above)
-    "shaft.life": (dict(result=SHAFT_RESULT, rotating="inner", dynamic_rating=30e3,
-                        nominal_contact_angle=0.0, weibull_slope=10 / 9),
-                   dict(result="object", rotating="choice", dynamic_rating="scale",
-                        nominal_contact_angle="angle", weibull_slope="pos"), ()),
+    "shaft.rating_lives": (dict(result=SHAFT_RESULT, rotating="inner", dynamic_rating=30e3,
+                                nominal_contact_angle=0.0, weibull_slope=10 / 9),
+                           dict(result="object", rotating="choice", dynamic_rating="scale",
+                                nominal_contact_angle="angle", weibull_slope="pos"), ()),
     "shaft.system_life": (dict(lives=[1e3, 2e3, np.inf], weibull_slope=10 / 9),
                           dict(lives="life", weibull_slope="pos"), ()),
     "shaft.duty_cycle": (dict(shaft=_SHAFT, seats=_SEATS,
@@ -691,12 +691,12 @@ def test_shaft_arguments_without_a_scalar_role():
     with pytest.raises(TypeError, match=r"cases\[0\] must be \(loads, fraction"):
         shaft_mod.duty_cycle(_SHAFT, _SEATS, [1.0])
     with pytest.raises(ValueError, match=r"dynamic_rating must be a number or one per seat"):
-        shaft_mod.life(SHAFT_RESULT, dynamic_rating=[30e3, 30e3, 30e3])
+        shaft_mod.rating_lives(SHAFT_RESULT, dynamic_rating=[30e3, 30e3, 30e3])
     with pytest.raises(TypeError, match=r"dynamic_rating\[1\] must be a real number"):
-        shaft_mod.life(SHAFT_RESULT, dynamic_rating=[None, "30 kN"])
+        shaft_mod.rating_lives(SHAFT_RESULT, dynamic_rating=[None, "30 kN"])
     # None in a per-seat list: that seat's default rating (as the case-file reader passes)
-    mixed = shaft_mod.life(SHAFT_RESULT, dynamic_rating=[None, 30e3])
-    default = shaft_mod.life(SHAFT_RESULT)
+    mixed = shaft_mod.rating_lives(SHAFT_RESULT, dynamic_rating=[None, 30e3])
+    default = shaft_mod.rating_lives(SHAFT_RESULT)
     assert mixed.ratings[0][0].C == default.ratings[0][0].C
     assert mixed.ratings[1][0].C == 30e3
     with pytest.raises(ValueError, match=r"nodes must give one ROSS node per seat"):
