@@ -1115,12 +1115,14 @@ class LoadDistribution:
 
     @property
     def axial_deflection(self):
-        """Axial inner-ring displacement dx from the reference configuration [m]."""
+        """Axial deflection of the bearing: the inner ring's displacement dx relative to the
+        outer ring from the reference configuration [m]."""
         return hertz._scalar(self.displacements[..., 0])
 
     @property
     def radial_deflection(self):
-        """Radial inner-ring displacement sqrt(dy^2 + dz^2) [m]."""
+        """Radial deflection of the bearing sqrt(dy^2 + dz^2) [m] (inner ring relative to
+        the outer ring, from the reference configuration)."""
         return hertz._scalar(np.hypot(self.displacements[..., 1], self.displacements[..., 2]))
 
     @property
