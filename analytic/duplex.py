@@ -348,7 +348,7 @@ class DuplexResult:
     separated : bool
         True when a bearing carries no load.
     residual : float
-        Largest equilibrium residual [N].
+        Largest equilibrium residual [N] (``relative_residual``: over the load scale).
     """
 
     pair: "DuplexPair"
@@ -365,6 +365,12 @@ class DuplexResult:
     unloading_load: float
     separated: bool
     residual: float
+
+    @property
+    def relative_residual(self) -> float:
+        """``residual`` over the load scale max(|Fa|, Fr, preload, 1 N) [-]: the measure
+        :meth:`DuplexPair.solve` holds below ``rtol``."""
+        return float(self.residual / max(abs(self.Fa), self.Fr, self.pair.preload, 1.0))
 
     @property
     def axial_stiffness(self) -> float:

@@ -30,6 +30,7 @@ import numpy as np
 
 from ._checks import (as_array, broadcast, check_instance, check_nonnegative, check_positive,
                       check_range)
+from ._renames import renamed_keywords
 from .hertz import HertzContact
 
 __all__ = [
@@ -247,8 +248,9 @@ def film_parameter(h_min, roughness_race, roughness_ball):
     return _s(h / s)
 
 
-def entrainment_speed(ball_diameter, pitch_diameter, contact_angle=0.0, *, inner_speed,
-                      outer_speed=0.0):
+@renamed_keywords(inner_speed="speed_inner", outer_speed="speed_outer")
+def entrainment_speed(ball_diameter, pitch_diameter, contact_angle=0.0, *, speed_inner,
+                      speed_outer=0.0):
     r"""Mean entrainment (rolling) speed of the ball–race contacts for pure rolling [m/s].
 
     .. math:: u = \frac{d_m^2 - D^2 \cos^2\beta}{4 d_m}\,\lvert\omega_i - \omega_o\rvert
@@ -264,10 +266,11 @@ def entrainment_speed(ball_diameter, pitch_diameter, contact_angle=0.0, *, inner
         d_m [m], > D.
     contact_angle : float or array_like
         Contact angle β [rad].
-    inner_speed : float or array_like
-        Angular speed of the inner ring ω_i [rad/s] (2π N/60 for N rev/min).
-    outer_speed : float or array_like
-        Angular speed of the outer ring ω_o [rad/s].
+    speed_inner : float or array_like
+        Angular speed of the inner ring ω_i [rad/s] (2π N/60 for N rev/min); the old
+        keyword ``inner_speed`` still works (DeprecationWarning).
+    speed_outer : float or array_like
+        Angular speed of the outer ring ω_o [rad/s]; old keyword ``outer_speed``.
 
     Returns
     -------
@@ -283,16 +286,16 @@ def entrainment_speed(ball_diameter, pitch_diameter, contact_angle=0.0, *, inner
     --------
     209 bearing, inner ring at 4000 rev/min:
 
-    >>> round(float(entrainment_speed(0.0127, 0.065, inner_speed=4000 * 2 * np.pi / 60)), 3)
+    >>> round(float(entrainment_speed(0.0127, 0.065, speed_inner=4000 * 2 * np.pi / 60)), 3)
     6.547
     """
     D = check_positive(ball_diameter, "ball_diameter", "m", bounded=True)
     dm = check_positive(pitch_diameter, "pitch_diameter", "m", bounded=True)
     b = check_range(contact_angle, "contact_angle", -np.pi / 2, np.pi / 2, unit="rad")
-    wi = as_array(inner_speed, "inner_speed", bounded=True, tiny_ok=True, unit="rad/s")
-    wo = as_array(outer_speed, "outer_speed", bounded=True, tiny_ok=True, unit="rad/s")
+    wi = as_array(speed_inner, "speed_inner", bounded=True, tiny_ok=True, unit="rad/s")
+    wo = as_array(speed_outer, "speed_outer", bounded=True, tiny_ok=True, unit="rad/s")
     D, dm, b, wi, wo = broadcast(ball_diameter=D, pitch_diameter=dm, contact_angle=b,
-                                 inner_speed=wi, outer_speed=wo)
+                                 speed_inner=wi, speed_outer=wo)
     if np.any(D >= dm):
         raise ValueError("ball_diameter must be < pitch_diameter [m]")
     return _s((dm**2 - (D * np.cos(b)) ** 2) / (4.0 * dm) * np.abs(wi - wo))

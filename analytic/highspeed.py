@@ -778,14 +778,31 @@ class HighSpeedResult:
     warnings: tuple = ()
 
     @property
-    def axial_displacement(self) -> float:
-        """Axial inner-ring displacement dx [m]."""
+    def axial_deflection(self) -> float:
+        """Axial deflection of the bearing: the inner ring's axial displacement dx relative
+        to the outer ring from the reference configuration [m] (as in
+        :attr:`ballrace.analytic.loaddist.LoadDistribution.axial_deflection`)."""
         return float(self.displacements[0])
 
     @property
-    def radial_displacement(self) -> float:
-        """Radial inner-ring displacement sqrt(dy^2 + dz^2) [m]."""
+    def radial_deflection(self) -> float:
+        """Radial deflection of the bearing sqrt(dy^2 + dz^2) [m] (inner ring relative to
+        the outer ring)."""
         return float(np.hypot(self.displacements[1], self.displacements[2]))
+
+    @property
+    def axial_displacement(self) -> float:
+        """Deprecated name of :attr:`axial_deflection` (same value) [m]."""
+        from ._renames import warn_renamed
+        warn_renamed("HighSpeedResult.axial_displacement", "HighSpeedResult.axial_deflection")
+        return self.axial_deflection
+
+    @property
+    def radial_displacement(self) -> float:
+        """Deprecated name of :attr:`radial_deflection` (same value) [m]."""
+        from ._renames import warn_renamed
+        warn_renamed("HighSpeedResult.radial_displacement", "HighSpeedResult.radial_deflection")
+        return self.radial_deflection
 
     @property
     def max_inner_load(self) -> float:

@@ -1115,12 +1115,14 @@ class LoadDistribution:
 
     @property
     def axial_deflection(self):
-        """Axial inner-ring displacement dx from the reference configuration [m]."""
+        """Axial deflection of the bearing: the inner ring's displacement dx relative to the
+        outer ring from the reference configuration [m]."""
         return hertz._scalar(self.displacements[..., 0])
 
     @property
     def radial_deflection(self):
-        """Radial inner-ring displacement sqrt(dy^2 + dz^2) [m]."""
+        """Radial deflection of the bearing sqrt(dy^2 + dz^2) [m] (inner ring relative to
+        the outer ring, from the reference configuration)."""
         return hertz._scalar(np.hypot(self.displacements[..., 1], self.displacements[..., 2]))
 
     @property
@@ -1419,8 +1421,7 @@ def _checked(r: LoadDistribution) -> LoadDistribution:
 
 def solve(bearing: BallBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *, displacements=None,
           clearance=None, azimuth_offset: float = 0.0, moment_arm: str = "groove",
-          rtol: float = 1e-12, max_iter: int = 200, initial=None,
-          _centered: bool = False, _contact_direct: bool = False) -> LoadDistribution:
+          rtol: float = 1e-12, max_iter: int = 200, initial=None) -> LoadDistribution:
     r"""General five-degree-of-freedom static load distribution (rigid rings, exact Hertz).
 
     Solves, for the inner-ring displacement u = (dx, dy, dz, theta_y, theta_z), the
@@ -1500,6 +1501,17 @@ def solve(bearing: BallBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *, displ
     >>> bool(r.relative_residual < 1e-9), round(float(r.max_ball_load))
     (True, 4073)
     """
+    return _solve(bearing, Fa, Fy, Fz, My, Mz, displacements=displacements,
+                  clearance=clearance, azimuth_offset=azimuth_offset, moment_arm=moment_arm,
+                  rtol=rtol, max_iter=max_iter, initial=initial)
+
+
+def _solve(bearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *, displacements=None,
+           clearance=None, azimuth_offset=0.0, moment_arm="groove", rtol=1e-12, max_iter=200,
+           initial=None, centered: bool = False, contact_direct: bool = False):
+    """:func:`solve`, with the reference configuration centred (``centered``: axial offset 0,
+    as :func:`radial` needs) and, for ``moment_arm="contact"``, Newton started directly on
+    the contact arm from ``initial`` (``contact_direct``: :func:`eccentric_thrust`)."""
     if not isinstance(bearing, BallBearing):
         raise TypeError(f"bearing must be a ballrace.BallBearing; got {type(bearing).__name__}")
     check_choice(moment_arm, "moment_arm", MOMENT_ARMS)
@@ -1526,7 +1538,7 @@ def solve(bearing: BallBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *, displ
             k = int(np.argwhere(imposed & (L != 0))[0][1])
             raise ValueError(f"the load on DOF {DOF[k]!r} must be 0 when its displacement is "
                              "imposed (the reaction is returned in result.loads)")
-    Pd, x0, z0 = _reference(model, clearance, _centered)
+    Pd, x0, z0 = _reference(model, clearance, centered)
     geo = _geo(model, bearing, azimuth_offset, x0, z0)
     psi = geo.psi.copy()
     lim = np.array([1.0, 1.0, 1.0, 1.0 / model.Ri, 1.0 / model.Ri]) * model.D
@@ -1548,7 +1560,7 @@ def solve(bearing: BallBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *, displ
     if not (type(max_iter) is int and max_iter >= 1):
         max_iter = int(check_integer(max_iter, "max_iter", 1))
     return _solve_checked(bearing, model, geo, psi, x0, z0, Pd, L, imposed, u0, shape,
-                          moment_arm, rtol, max_iter, moment_arm == "contact" and _contact_direct)
+                          moment_arm, rtol, max_iter, moment_arm == "contact" and contact_direct)
 
 
 def _solve_checked(bearing, model, geo, psi, x0, z0, Pd, L, imposed, u0, shape, moment_arm,
@@ -1787,8 +1799,8 @@ def radial(bearing: BallBearing, Fr, clearance=None, azimuth_offset: float = 0.0
     Fr = check_nonnegative(Fr, "Fr", "N")
     Fr = as_array(Fr, "Fr", bounded=True, tiny_ok=True)          # named before it becomes Fy
     d = np.array([0.0, np.nan, np.nan, 0.0, 0.0])
-    return solve(bearing, Fy=Fr, displacements=d, clearance=clearance,
-                 azimuth_offset=azimuth_offset, _centered=True, **kwargs)
+    return _solve(bearing, Fy=Fr, displacements=d, clearance=clearance,
+                  azimuth_offset=azimuth_offset, centered=True, **kwargs)
 
 
 def combined(bearing: BallBearing, Fr, Fa, azimuth_offset: float = 0.0,
@@ -2069,8 +2081,8 @@ def eccentric_thrust(bearing: BallBearing, Fa, e, *, rtol: float = 1e-12,
     Lc[..., 0], Lc[..., 4] = F, -e_ * F
     _check_loads(model, Lc.reshape(-1, 5))
     u0 = _eccentric_start(model, F, e_)
-    res = solve(bearing, Fa=F, Mz=-e_ * F, displacements=_ECC_FREE, moment_arm="contact", rtol=rtol,
-                max_iter=max_iter, initial=u0, _contact_direct=True)
+    res = _solve(bearing, Fa=F, Mz=-e_ * F, displacements=_ECC_FREE, moment_arm="contact",
+                 rtol=rtol, max_iter=max_iter, initial=u0, contact_direct=True)
     log.debug("eccentric thrust: converged in %d Newton iterations", res.iterations)
     return res
 

@@ -114,7 +114,7 @@ from .materials import BEARING_STEEL, Material
 
 __all__ = ["Shaft", "Seat", "PointLoad", "ShaftResult", "ConvergenceError", "solve",
            "gear_mesh", "belt_pull", "shear_coefficient", "MIRROR", "STANDARD_GRAVITY",
-           "ShaftLife", "DutyCycleLife", "life", "system_life", "duty_cycle",
+           "ShaftLife", "DutyCycleLife", "rating_lives", "system_life", "duty_cycle",
            "bearing_coefficients", "ross_bearings"]
 
 log = logging.getLogger(__name__)
@@ -723,6 +723,12 @@ class ShaftResult:
         """
         from .ratings import static_safety_from_pressure
         return np.asarray(static_safety_from_pressure(self.max_pressure), float)
+
+    @property
+    def relative_residual(self) -> float:
+        """Relative equilibrium residual of the global system [-] (the number ``residual``
+        holds; ``relative_residual`` is its name on every result)."""
+        return float(self.residual)
 
     def stiffness(self, x) -> np.ndarray:
         r"""Linearised 5x5 stiffness of the whole shaft on its bearings at a node [N/m, N/rad,
@@ -1697,8 +1703,8 @@ def system_life(lives, weibull_slope=None):
     return np.inf if s == 0.0 else s ** (-1.0 / e)
 
 
-def life(result: ShaftResult, *, rotating: str = "inner", dynamic_rating=None,
-         nominal_contact_angle=None, modified=None, weibull_slope=None) -> ShaftLife:
+def rating_lives(result: ShaftResult, *, rotating: str = "inner", dynamic_rating=None,
+                 nominal_contact_angle=None, modified=None, weibull_slope=None) -> ShaftLife:
     r"""ISO/TS 16281 lives of the seats of a solved shaft and of the bearing system.
 
     Each row's ball loads (the seat's :class:`LoadDistribution`) give the basic reference
@@ -1754,6 +1760,14 @@ def life(result: ShaftResult, *, rotating: str = "inner", dynamic_rating=None,
     return ShaftLife(seat_lives=np.array(seat), row_lives=tuple(rows), ratings=tuple(ratings),
                      system=float(system_life(allrows, e)), weibull_slope=e,
                      kind="Lnmr" if modified else "L10r", catalog_lives=tuple(cat))
+
+
+def life(result: ShaftResult, **kwargs) -> ShaftLife:
+    """Deprecated name of :func:`rating_lives` (same arguments, same result; it also
+    hid the :mod:`ballrace.analytic.life` module's name)."""
+    from ._renames import warn_renamed
+    warn_renamed("ballrace.analytic.shaft.life", "ballrace.analytic.shaft.rating_lives")
+    return rating_lives(result, **kwargs)
 
 
 def _per_seat(v, name, ns):
@@ -1849,7 +1863,7 @@ def duty_cycle(shaft: Shaft, seats, cases, *, rotating: str = "inner", dynamic_r
         Loads (a sequence of PointLoad), time fraction [-] (summing to 1) and shaft speed
         [rev/min] of each case.
     rotating, dynamic_rating, nominal_contact_angle, modified, weibull_slope
-        As for :func:`life`.
+        As for :func:`rating_lives`.
     **solve_kwargs
         Passed to :func:`solve` (gravity, temperatures, ...).
 
@@ -1887,7 +1901,7 @@ def duty_cycle(shaft: Shaft, seats, cases, *, rotating: str = "inner", dynamic_r
         fr.append(t)
         res.append(r)
         prev = r
-    # the lives of every row over all cases at once (the same rules as life())
+    # the lives of every row over all cases at once (the same rules as rating_lives())
     ns = len(res[0].seats)
     C = _per_seat(dynamic_rating, "dynamic_rating", ns)
     A = _per_seat(nominal_contact_angle, "nominal_contact_angle", ns)

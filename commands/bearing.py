@@ -102,7 +102,7 @@ def analyze(case) -> dict:
     F_lub = case.lubrication_factor
     if case.viscosity is not None:
         wi, wo = (case.speed, 0.0) if case.rotating_ring == "inner" else (0.0, case.speed)
-        u = np.asarray(ehl.entrainment_speed(D, dm, beta, inner_speed=wi, outer_speed=wo))
+        u = np.asarray(ehl.entrainment_speed(D, dm, beta, speed_inner=wi, speed_outer=wo))
         u = np.broadcast_to(u, Q.shape)
         fi = ehl.film_thickness(ci, entrainment_speed=u, viscosity=case.viscosity,
                                 pressure_viscosity=case.pressure_viscosity)

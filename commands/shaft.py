@@ -539,9 +539,9 @@ def analyze(case: ShaftCase) -> dict:
     if thermal:
         notes.append(thermal)
     try:
-        lf = S.life(r, rotating=case.rotating_ring,
-                    dynamic_rating=[c for c in case.ratings] if any(
-                        c is not None for c in case.ratings) else None)
+        lf = S.rating_lives(r, rotating=case.rotating_ring,
+                            dynamic_rating=[c for c in case.ratings] if any(
+                                c is not None for c in case.ratings) else None)
     except ValueError as exc:
         lf = None
         notes.append(f"lives not available: {exc}")
@@ -610,7 +610,7 @@ def analyze(case: ShaftCase) -> dict:
                   "material": {"E": case.shaft.material.E, "nu": case.shaft.material.nu,
                                "density": case.shaft.material.density,
                                "name": case.shaft.material.name},
-                  "iterations": int(r.iterations), "residual": float(r.residual),
+                  "iterations": int(r.iterations), "residual": float(r.relative_residual),
                   "max_deflection": float(np.hypot(disp[:, 1], disp[:, 2]).max()),
                   "equilibrium_residual": [float(v) for v in r.equilibrium_residual()]},
         "loads": [dict(name=p.name, position=p.position, vector=[float(v) for v in p.vector],

@@ -43,7 +43,7 @@ for frac, Fr, n, eta in cycle:
     j = int(np.argmax(ld.ball_loads))
     c = hertz.elliptical_contact(float(ld.ball_loads[j]), float(ld.inner.Rx[j]),
                                  float(ld.inner.Ry[j]), float(ld.inner.E_prime[j]))
-    u = float(ehl.entrainment_speed(D, d_m, inner_speed=n * 2 * np.pi / 60))
+    u = float(ehl.entrainment_speed(D, d_m, speed_inner=n * 2 * np.pi / 60))
     f = ehl.film_thickness(c, entrainment_speed=u, viscosity=eta, pressure_viscosity=2.2e-8)
     h_min.append(float(f.h_min))
     lam.append(float(ehl.film_parameter(f.h_min, 0.1e-6, 0.1e-6)))

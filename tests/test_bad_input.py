@@ -180,11 +180,11 @@ TABLE: dict[str, tuple[dict, dict, tuple]] = {
                            dict(h_min="load", roughness_race="load", roughness_ball="load"),
                            ("h_min", "roughness_race", "roughness_ball")),
     "ehl.entrainment_speed": (dict(ball_diameter=12.7e-3, pitch_diameter=65e-3,
-                                   contact_angle=0.0, inner_speed=100.0, outer_speed=0.0),
+                                   contact_angle=0.0, speed_inner=100.0, speed_outer=0.0),
                               dict(ball_diameter="scale", pitch_diameter="scale",
-                                   contact_angle="angle", inner_speed="signed",
-                                   outer_speed="signed"),
-                              ("ball_diameter", "pitch_diameter", "inner_speed")),
+                                   contact_angle="angle", speed_inner="signed",
+                                   speed_outer="signed"),
+                              ("ball_diameter", "pitch_diameter", "speed_inner")),
 }
 
 _KIN = dict(D=12.7e-3, d_m=65e-3)
@@ -506,10 +506,10 @@ TABLE.update({
                          thermal_reference="coord", rtol="pos", max_iter="count",
                          initial="object"), ()),
     # modified is a dict of ISO 281 factors (checked by iso281, rows above)
-    "shaft.life": (dict(result=SHAFT_RESULT, rotating="inner", dynamic_rating=30e3,
-                        nominal_contact_angle=0.0, weibull_slope=10 / 9),
-                   dict(result="object", rotating="choice", dynamic_rating="scale",
-                        nominal_contact_angle="angle", weibull_slope="pos"), ()),
+    "shaft.rating_lives": (dict(result=SHAFT_RESULT, rotating="inner", dynamic_rating=30e3,
+                                nominal_contact_angle=0.0, weibull_slope=10 / 9),
+                           dict(result="object", rotating="choice", dynamic_rating="scale",
+                                nominal_contact_angle="angle", weibull_slope="pos"), ()),
     "shaft.system_life": (dict(lives=[1e3, 2e3, np.inf], weibull_slope=10 / 9),
                           dict(lives="life", weibull_slope="pos"), ()),
     "shaft.duty_cycle": (dict(shaft=_SHAFT, seats=_SEATS,
@@ -663,10 +663,10 @@ def test_life_refuses_ball_at_or_above_pitch_diameter():
 def test_entrainment_speed_refuses_nan_inf_none(speed, error):
     """Issue 14 item 6: entrainment_speed returned NaN for these speeds."""
     from ballrace.analytic import ehl
-    with pytest.raises(error, match="inner_speed"):
-        ehl.entrainment_speed(0.0127, 0.065, inner_speed=speed)
-    with pytest.raises(error, match="outer_speed"):
-        ehl.entrainment_speed(0.0127, 0.065, inner_speed=100.0, outer_speed=speed)
+    with pytest.raises(error, match="speed_inner"):
+        ehl.entrainment_speed(0.0127, 0.065, speed_inner=speed)
+    with pytest.raises(error, match="speed_outer"):
+        ehl.entrainment_speed(0.0127, 0.065, speed_inner=100.0, speed_outer=speed)
 
 
 def test_shapes_2_and_3_are_named():
@@ -694,12 +694,12 @@ def test_shaft_arguments_without_a_scalar_role():
     with pytest.raises(TypeError, match=r"cases\[0\] must be \(loads, fraction"):
         shaft_mod.duty_cycle(_SHAFT, _SEATS, [1.0])
     with pytest.raises(ValueError, match=r"dynamic_rating must be a number or one per seat"):
-        shaft_mod.life(SHAFT_RESULT, dynamic_rating=[30e3, 30e3, 30e3])
+        shaft_mod.rating_lives(SHAFT_RESULT, dynamic_rating=[30e3, 30e3, 30e3])
     with pytest.raises(TypeError, match=r"dynamic_rating\[1\] must be a real number"):
-        shaft_mod.life(SHAFT_RESULT, dynamic_rating=[None, "30 kN"])
+        shaft_mod.rating_lives(SHAFT_RESULT, dynamic_rating=[None, "30 kN"])
     # None in a per-seat list: that seat's default rating (as the case-file reader passes)
-    mixed = shaft_mod.life(SHAFT_RESULT, dynamic_rating=[None, 30e3])
-    default = shaft_mod.life(SHAFT_RESULT)
+    mixed = shaft_mod.rating_lives(SHAFT_RESULT, dynamic_rating=[None, 30e3])
+    default = shaft_mod.rating_lives(SHAFT_RESULT)
     assert mixed.ratings[0][0].C == default.ratings[0][0].C
     assert mixed.ratings[1][0].C == 30e3
     with pytest.raises(ValueError, match=r"nodes must give one ROSS node per seat"):

@@ -80,11 +80,11 @@ def test_entrainment_speed_from_cage_kinematics():
     wc = kinematics.cage_speed(D, dm, b, wi, 0.0)
     u_inner = (wi - wc) * (dm - D * np.cos(b)) / 2
     u_outer = wc * (dm + D * np.cos(b)) / 2
-    u = ehl.entrainment_speed(D, dm, b, inner_speed=wi)
+    u = ehl.entrainment_speed(D, dm, b, speed_inner=wi)
     assert u == pytest.approx(u_inner, rel=1e-12)
     assert u == pytest.approx(u_outer, rel=1e-12)
     # outer ring rotating at the same relative speed gives the same entrainment speed
-    assert ehl.entrainment_speed(D, dm, b, inner_speed=0.0, outer_speed=wi) == pytest.approx(u)
+    assert ehl.entrainment_speed(D, dm, b, speed_inner=0.0, speed_outer=wi) == pytest.approx(u)
 
 
 def test_film_parameter():

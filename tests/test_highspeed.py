@@ -44,7 +44,7 @@ def test_zero_speed_thrust_equals_static_and_closed_form():
     np.testing.assert_allclose(r.outer_contact_angles, beta, rtol=1e-10)
     np.testing.assert_allclose(r.inner_loads, Fa / (Z * np.sin(beta)), rtol=1e-10)
     np.testing.assert_allclose(r.outer_loads, r.inner_loads, rtol=1e-12)
-    assert r.axial_displacement == pytest.approx(A * np.sin(beta - bf) / np.cos(beta), rel=1e-9)
+    assert r.axial_deflection == pytest.approx(A * np.sin(beta - bf) / np.cos(beta), rel=1e-9)
     # and the general static solver
     s = ld.solve(BRG, Fa=Fa)
     np.testing.assert_allclose(r.inner_loads, s.ball_loads, rtol=1e-10)
@@ -143,7 +143,7 @@ def _harris_pure_thrust(Fa, w, brg=BRG, start=None):
 
     if start is None:
         s = hs.solve(brg, Fa=Fa)
-        start = (*s.ball_positions[0], s.axial_displacement)
+        start = (*s.ball_positions[0], s.axial_deflection)
     v = fsolve(eqs, [start[0] * 1e3, start[1] * 1e3, start[2] * 1e6], xtol=1e-12)
     assert np.max(np.abs(eqs(v))) < 1e-9
     return v[0] * 1e-3, v[1] * 1e-3, v[2] * 1e-6
@@ -157,7 +157,7 @@ def test_matches_independent_reimplementation(rpm):
     r = hs.solve(BRG, Fa=17800.0, speed_inner=rpm * RPM)
     assert r.ball_positions[0, 0] == pytest.approx(X1, abs=1e-9)
     assert r.ball_positions[0, 1] == pytest.approx(X2, abs=1e-9)
-    assert r.axial_displacement == pytest.approx(da, abs=1e-10)
+    assert r.axial_deflection == pytest.approx(da, abs=1e-10)
     np.testing.assert_allclose(r.ball_positions[:, 0], X1, atol=1e-9)    # all balls alike
 
 
@@ -494,7 +494,7 @@ def test_issue21_thrust_needs_an_inner_contact_past_the_groove_edge():
         hs.solve(brg, **kw)
     w, Fa = kw["speed_inner"], kw["Fa"]
     r = hs.solve(brg, Fa=Fa, speed_inner=0.8 * w)
-    v = (*r.ball_positions[0], r.axial_displacement)
+    v = (*r.ball_positions[0], r.axial_deflection)
     for f in np.linspace(0.8, 1.0, 11)[1:]:
         v = _harris_pure_thrust(Fa, f * w, brg, start=v)
     A = brg.curvature_center_distance

@@ -413,7 +413,7 @@ def test_life_single_seat_and_system():
     from ballrace.analytic.iso16281 import reference_rating_life
     s = S.Shaft([(0.02, 30e-3, 0.0)], STEEL)
     r = S.solve(s, [S.Seat(0.01, DG0)], [S.PointLoad(0.01, Fy=3000.0, Fa=500.0)])
-    lf = S.life(r)
+    lf = S.rating_lives(r)
     ref = reference_rating_life(DG0, DG0.solve(Fa=500.0, Fy=3000.0))
     assert lf.seat_lives[0] == pytest.approx(ref.L10r, rel=1e-8)
     assert lf.system == pytest.approx(ref.L10r, rel=1e-8)
@@ -422,7 +422,7 @@ def test_life_single_seat_and_system():
     # the DB pair without external load: both rows carry the preload alike
     pair = dx.DuplexPair(AC, "DB", preload=2000.0)
     r = S.solve(s, [S.Seat(0.01, pair)], [S.PointLoad(0.01, Fy=1e-6)])
-    lf = S.life(r)
+    lf = S.rating_lives(r)
     a, b = lf.row_lives[0]
     assert a == pytest.approx(b, rel=1e-6)
     assert lf.seat_lives[0] == pytest.approx(a * 2 ** -0.9, rel=1e-6)
@@ -436,8 +436,8 @@ def test_duty_cycle_miner():
     seats = [S.Seat(0.03, DG), S.Seat(0.23, DG, floating=True)]
     c1, c2 = [S.PointLoad(0.09, Fy=3000.0)], [S.PointLoad(0.09, Fy=1000.0, Fa=300.0)]
     d = S.duty_cycle(s, seats, [(c1, 0.3, 1500.0), (c2, 0.7, 3000.0)])
-    h1 = S.life(S.solve(s, seats, c1)).hours(1500.0)[0]
-    h2 = S.life(S.solve(s, seats, c2)).hours(3000.0)[0]
+    h1 = S.rating_lives(S.solve(s, seats, c1)).hours(1500.0)[0]
+    h2 = S.rating_lives(S.solve(s, seats, c2)).hours(3000.0)[0]
     expected = 1.0 / (0.3 / h1 + 0.7 / h2)
     np.testing.assert_allclose(d.seat_hours, expected, rtol=1e-9)
     assert d.system_hours == pytest.approx(
@@ -683,14 +683,14 @@ def test_catalog_life_from_reaction():
     s = S.Shaft([(0.26, 45e-3, 0.0)], STEEL)
     r = S.solve(s, [S.Seat(0.03, DG0), S.Seat(0.23, DG0, floating=True)],
                 [S.PointLoad(0.09, Fy=4000.0, Fa=800.0)])
-    lf = S.life(r, nominal_contact_angle=0.0)
+    lf = S.rating_lives(r, nominal_contact_angle=0.0)
     R = r.reactions[0]
     P = equivalent_load_for(DG0, np.hypot(R[1], R[2]), abs(R[0]), contact_angle=0.0).P
     assert lf.catalog_lives[0] == pytest.approx((lf.ratings[0][0].C / P) ** 3, rel=1e-12)
     pair = dx.DuplexPair(AC, "DB", preload=1000.0)
     r = S.solve(S.Shaft([(0.02, 80e-3, 0.0)], STEEL), [S.Seat(0.01, pair)],
                 [S.PointLoad(0.01, Fy=500.0)])
-    assert S.life(r).catalog_lives == (None,)
+    assert S.rating_lives(r).catalog_lives == (None,)
 
 
 @pytest.mark.parametrize("arr, Fa", [("DF", 2500.0), ("DT", 3000.0), ("DT", -500.0)])

@@ -209,13 +209,13 @@ def thrust(Fa, speed_inner, speed_outer, control, gyroscopic, **kw):
     ball_rad = _worst((Qo * co - Qi * ci - Fc) / Qo) if no_gyro else math.nan
     return {"Q_inner": float(Qi[0]), "Q_outer": float(Qo[0]), "alpha_inner": float(ai[0]),
             "alpha_outer": float(ao[0]), "Fc": float(Fc[0]), "orbital_speed": float(wc[0]),
-            "axial_displacement": float(r.axial_displacement),
+            "axial_displacement": float(r.axial_deflection),
             "relative_residual": float(r.relative_residual),
             "Fc_vs_orbit_formula": fc_check, "ring_axial_balance": ring,
             "ball_axial_balance": ball_ax, "ball_radial_balance": ball_rad,
             "Q_inner_vs_static": _worst(Qi / Qs - 1.0), "Q_outer_vs_static": _worst(Qo / Qs - 1.0),
             "alpha_inner_vs_static": _worst(ai - beta), "alpha_outer_vs_static": _worst(ao - beta),
-            "axial_vs_static": float(r.axial_displacement) / dt - 1.0 if dt else math.nan}
+            "axial_vs_static": float(r.axial_deflection) / dt - 1.0 if dt else math.nan}
 
 
 @calculation("highspeed.angle_trend", requires=(_HS + ":solve",),
