@@ -75,7 +75,7 @@ def test_catalogue_ratings_recomputed(size, bore, od, z, d, c0, c):
 def test_fc_is_lundberg_palmgren_raceway_capacity():
     # Q_ci of ISO/TS 16281 from C (b_m = 1) against Lundberg & Palmgren's raceway capacity
     # Q_ci = 552 (1-g)^(29/27) (1+g)^(-1/4) g^(2/9) D^(29/27) L^(7/9) Z^(-1/4) (N, mm;
-    # Harris & Kotzalas): within 0.5 % (the 207.9, 0.378 and 1.04 / 1.038 roundings).
+    # Lundberg & Palmgren 1952): within 0.5 % (the 207.9, 0.378, 1.04/1.038 roundings).
     for g in (0.05, 0.1, 0.2, 0.3):
         dpw, d, z = 0.1, g * 0.1, 15
         C = rr.dynamic_rating(d, d, z, dpw, b_m=1.0)

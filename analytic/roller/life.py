@@ -77,9 +77,8 @@ References
 ----------
 ISO/TS 16281:2008 *Rolling bearings — Methods for calculating the modified reference rating
 life for universally loaded bearings* (roller bearings: the lamina method); G. Lundberg and
-A. Palmgren, *Dynamic capacity of roller bearings* (1952); T. A. Harris and M. N. Kotzalas,
-*Advanced Concepts of Bearing Technology*, 5th ed. (2007), ch. 8 (ring equivalent loads of
-line contact, exponents 4 and 4.5).
+A. Palmgren, *Dynamic capacity of roller bearings* (1952) (ring equivalent loads of line
+contact, exponents 4 and 9/2); T. A. Harris (2001) *Rolling Bearing Analysis* 4th ed. §18.
 """
 from __future__ import annotations
 

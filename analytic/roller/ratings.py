@@ -7,9 +7,9 @@ constants demand; every function converts at its door.
 * :func:`fc_factor` — the rating factor f_c of radial roller bearings (line contact), as
   a function of γ = D_we cos α / D_pw;
 * :func:`dynamic_rating` — basic dynamic radial load rating
-  C_r = b_m f_c (i L_we cos α)^(7/9) Z^(3/4) D_we^(29/27) (ISO 281:2007 §7.1);
+  C_r = b_m f_c (i L_we cos α)^(7/9) Z^(3/4) D_we^(29/27) (ISO 281:2007, radial roller bearings);
 * :func:`thrust_dynamic_rating` — basic dynamic axial load rating C_a of thrust roller
-  bearings (ISO 281:2007 §8.1), with f_c given by the caller;
+  bearings (ISO 281:2007, thrust roller bearings), with f_c given by the caller;
 * :func:`static_rating`, :func:`thrust_static_rating` — ISO 76 C_0r = 44 (1 − γ) i Z L_we
   D_we cos α and C_0a = 220 (1 − γ) Z L_we D_we sin α;
 * :func:`static_rating_pressure` — the line-contact pressure that C_0r stands for (4000 MPa),
@@ -19,7 +19,7 @@ constants demand; every function converts at its door.
 * :func:`rating_life` — L10 = (C/P)^(10/3);
 * :func:`fatigue_load_limit`, :func:`life_modification_factor`,
   :func:`modified_rating_life` — C_u, a_ISO and L_nm = a1 a_ISO L10 of radial roller
-  bearings (ISO 281:2007 §9.3, Annex B).
+  bearings (ISO 281:2007 §9.3.3, Annex B).
 
 The life of a roller bearing from its slice loads (ISO/TS 16281) is in
 :mod:`ballrace.analytic.roller.life`.
@@ -30,7 +30,7 @@ The standards' texts were not read; every formula below comes from secondary sou
 was checked as stated:
 
 * **f_c.**  ISO 281's table of f_c for radial roller bearings is computed from Lundberg &
-  Palmgren's line-contact rating, in the form of ISO/TR 1281-1:2008 (λν = 0.83, 207.9 =
+  Palmgren's line-contact rating, in the form of ISO/TR 1281-1:2008 (λν = 0.83, 207.9 ≈
   552 J_r/J_1, 1.04 ≈ 0.378/0.364 the ratio of the ring capacities' load integrals):
 
   .. math::
@@ -71,11 +71,13 @@ was checked as stated:
 
 References
 ----------
-ISO 281:2007 *Rolling bearings — Dynamic load ratings and rating life*, §7–§9, Annex B;
+ISO 281:2007 *Rolling bearings — Dynamic load ratings and rating life*
+(radial and thrust roller bearings, modified rating life, Annex B);
 ISO/TR 1281-1:2008 (f_c from Lundberg & Palmgren); ISO 76:2006 *Static load ratings*,
-§6–§7; G. Lundberg and A. Palmgren, *Dynamic capacity of roller bearings*, Acta
-Polytechnica, Mech. Eng. Series 2 (1952); T. A. Harris and M. N. Kotzalas, *Essential
-Concepts of Bearing Technology*, 5th ed. (2007), ch. 11 (ratings of roller bearings);
+radial and thrust roller bearings; G. Lundberg and A. Palmgren, *Dynamic capacity of
+roller bearings*, Acta Polytechnica, Mech. Eng. Series 2 (1952); T. A. Harris and
+M. N. Kotzalas, *Essential Concepts of Bearing Technology* (2007) (roller-bearing
+ratings; not re-read here);
 B. M. Oswald, E. V. Zaretsky and J. V. Poplawski, *Effect of internal clearance on load
 distribution and life of radially loaded ball and roller bearings*, NASA/TM-2012-217115.
 """
@@ -121,7 +123,7 @@ LAMBDA_NU = 0.83
 B_M = {"cylindrical": 1.1, "tapered": 1.1, "needle": 1.1}
 #: Contact pressure that defines C_0 of roller bearings, ISO 76:2006 [Pa].
 STATIC_RATING_PRESSURE = 4000e6
-#: Life exponent of roller bearings, L10 = (C/P)^p (ISO 281:2007 §7.3) [-].
+#: Life exponent of roller bearings, L10 = (C/P)^p (ISO 281:2007) [-].
 LIFE_EXPONENT = 10.0 / 3.0
 
 # a_ISO of radial roller bearings, ISO 281:2007 §9.3.3:
@@ -185,7 +187,7 @@ def fc_factor(gamma):
 
     References
     ----------
-    ISO 281:2007 §7.1.1 and its f_c table for radial roller bearings; ISO/TR 1281-1:2008;
+    ISO 281:2007, the f_c table for radial roller bearings; ISO/TR 1281-1:2008;
     Lundberg & Palmgren (1952).
 
     Examples
@@ -241,7 +243,7 @@ def dynamic_rating(roller_diameter, effective_length, n_rollers, pitch_diameter,
 
     References
     ----------
-    ISO 281:2007 §7.1.1 (eq. for C_r of radial roller bearings), Table 1 (b_m).
+    ISO 281:2007, basic dynamic radial load rating of radial roller bearings; Table 1 (b_m).
 
     Examples
     --------
@@ -296,7 +298,7 @@ def thrust_dynamic_rating(roller_diameter, effective_length, n_rollers, pitch_di
 
     References
     ----------
-    ISO 281:2007 §8.1.1 (eqs. for C_a of thrust roller bearings).
+    ISO 281:2007, basic dynamic axial load rating of thrust roller bearings.
 
     Examples
     --------
@@ -349,7 +351,7 @@ def static_rating(roller_diameter, effective_length, n_rollers, pitch_diameter,
 
     References
     ----------
-    ISO 76:2006 §6.1.2 (radial roller bearings).
+    ISO 76:2006, basic static radial load rating of radial roller bearings.
 
     Examples
     --------
@@ -391,7 +393,7 @@ def thrust_static_rating(roller_diameter, effective_length, n_rollers, pitch_dia
 
     References
     ----------
-    ISO 76:2006 §7.1.2 (thrust roller bearings).
+    ISO 76:2006, basic static axial load rating of thrust roller bearings.
 
     Examples
     --------
@@ -435,8 +437,8 @@ def static_rating_pressure(roller_diameter, effective_length, n_rollers, pitch_d
 
     References
     ----------
-    ISO 76:2006 §3 and §6.1.2 (4000 MPa for roller bearings; Q_max = 5 F_r/(i Z cos α));
-    K. L. Johnson, *Contact Mechanics* (1985) §4.2, eq. (4.45) (line contact).
+    ISO 76:2006 (4000 MPa for roller bearings; Q_max = 5 F_r/(i Z cos α));
+    K. L. Johnson, *Contact Mechanics* (1985) §4.2 (two-dimensional Hertz contact).
 
     Examples
     --------
@@ -506,7 +508,8 @@ def tapered_factors(contact_angle, n_rows: int = 1) -> TaperedFactors:
 
     References
     ----------
-    ISO 281:2007 §7.2 (Table for radial roller bearings with α ≠ 0); ISO 76:2006 §6.2.
+    ISO 281:2007, dynamic equivalent radial load of radial roller bearings (α ≠ 0);
+    ISO 76:2006, static equivalent radial load.
 
     Examples
     --------
@@ -543,7 +546,7 @@ def _warn_axial_on_radial(Fa):
         from ...errors import warn
 
         warn("a radial roller bearing with contact angle 0 is rated for radial load only "
-             "(ISO 281:2007 §7.2): the axial load is left out of P; give the contact "
+             "(ISO 281:2007): the axial load is left out of P; give the contact "
              "angle of a tapered bearing, or check the flanges' axial capacity separately")
 
 
@@ -570,7 +573,7 @@ def dynamic_equivalent_load(radial_load, axial_load=0.0, contact_angle=0.0, n_ro
 
     References
     ----------
-    ISO 281:2007 §7.2.
+    ISO 281:2007, dynamic equivalent radial load of radial roller bearings.
 
     Examples
     --------
@@ -612,7 +615,7 @@ def static_equivalent_load(radial_load, axial_load=0.0, contact_angle=0.0, n_row
 
     References
     ----------
-    ISO 76:2006 §6.2.
+    ISO 76:2006, static equivalent radial load of radial roller bearings.
 
     Examples
     --------
@@ -646,7 +649,7 @@ def rating_life(C, P):
 
     References
     ----------
-    ISO 281:2007 §7.3 (radial) and §8.3 (thrust roller bearings).
+    ISO 281:2007, basic rating life of radial and thrust roller bearings.
 
     Examples
     --------
@@ -793,7 +796,7 @@ def modified_rating_life(C, P, *, kappa, contamination, fatigue_limit, reliabili
 
     References
     ----------
-    ISO 281:2007 §9.1.
+    ISO 281:2007 §9 (modified rating life).
 
     Examples
     --------
