@@ -302,7 +302,7 @@ def test_straight_rollers_zero_clearance_radial_load(gamma):
     T = 1.038 * ((1 - gamma) / (1 + gamma)) ** (143 / 108)
     K = ((0.378 * j1 / jr) ** 4.5 / (1 + T ** 4.5)
          + (0.364 * j2 / jr) ** 4.5 / (1 + T ** -4.5)) ** (-8 / 9)
-    assert 0.98 < K < 0.991
+    assert 0.9828 < K < 0.9864                  # 0.983 ... 0.986 over gamma = 0.01 ... 0.5
     z, dpw, C = 720, 1.0, 1e6
     psi = 2 * np.pi * np.arange(z) / z
     Q = np.where(np.cos(psi) > 0, np.clip(np.cos(psi), 0, None) ** (10 / 9), 0.0) * 1000.0
@@ -313,7 +313,7 @@ def test_straight_rollers_zero_clearance_radial_load(gamma):
         assert r.L10r == pytest.approx(K * (C / (0.83 * Fr)) ** 4, rel=1e-4)
     # the fixed factor on the load: L10r^(1/4) F_r / C = K^(1/4) / 0.83, about 1.20
     assert r.L10r ** 0.25 * Fr / C == pytest.approx(K ** 0.25 / 0.83, rel=1e-4)
-    assert 1.19 < K ** 0.25 / 0.83 < 1.21
+    assert K ** 0.25 / 0.83 == pytest.approx(1.200, abs=1e-3)
 
 
 def test_two_rows_and_load_cases():

@@ -57,10 +57,10 @@ Identities (asserted in ``tests/test_roller_ratings.py``)
       K = \left[\frac{(0.378\,J_1/J_r)^{9/2}}{1 + T^{9/2}}
           + \frac{(0.364\,J_2/J_r)^{9/2}}{1 + T^{-9/2}}\right]^{-8/9}
 
-  with T = 1.038 ((1−γ)/(1+γ))^(143/108); K = 0.983 … 0.990 (it would be exactly 1 with
-  the unrounded load-integral ratios).  The fixed factor is on the load: L10r^(1/4) F_r
-  / C = K^(1/4)/0.83 ≈ 1.201, independent of the load, whereas ISO 281 gives
-  L10^(3/10) F_r / C = 1; the two lives are equal only at C/F_r = (0.83^4/K)^(3/2) ≈ 0.33,
+  with T = 1.038 ((1−γ)/(1+γ))^(143/108); K = 0.983 … 0.986 for γ = 0.01 … 0.5 (it
+  would be exactly 1 with the unrounded load-integral ratios).  The fixed factor is on the load: L10r^(1/4) F_r
+  / C = K^(1/4)/0.83 ≈ 1.200, independent of the load, whereas ISO 281 gives
+  L10^(3/10) F_r / C = 1; the two lives are equal only at C/F_r = (0.83^4/K)^(3/2) ≈ 0.335,
   so for any real load ISO/TS 16281 with straight rollers gives the longer life.
 
 Sources and their checks
