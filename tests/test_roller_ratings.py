@@ -436,3 +436,14 @@ def test_doctests():
     for mod in (rr, rl):
         res = doctest.testmod(mod, extraglobs={"np": np}, optionflags=doctest.ELLIPSIS)
         assert res.failed == 0 and res.attempted > 5
+
+
+def test_tiny_slice_loads_give_a_long_life_not_an_error():
+    q = np.zeros((14, 3))
+    q[0] = 1e-80                                  # (q/q_c)^4.5 would underflow to 0
+    big = rl.lamina_reference_life(q * 1e80, 80000.0, D, DPW)
+    tiny = rl.lamina_reference_life(q, 80000.0, D, DPW)
+    assert tiny.L10r == np.inf or tiny.L10r == pytest.approx(big.L10r * 1e320, rel=1e-9)
+    q[0] = 1e-20
+    assert rl.lamina_reference_life(q, 80000.0, D, DPW).L10r == pytest.approx(
+        big.L10r * 1e80, rel=1e-9)

@@ -58,10 +58,11 @@ Identities (asserted in ``tests/test_roller_ratings.py``)
           + \frac{(0.364\,J_2/J_r)^{9/2}}{1 + T^{-9/2}}\right]^{-8/9}
 
   with T = 1.038 ((1−γ)/(1+γ))^(143/108); K = 0.983 … 0.986 for γ = 0.01 … 0.5 (it
-  would be exactly 1 with the unrounded load-integral ratios).  The fixed factor is on the load: L10r^(1/4) F_r
-  / C = K^(1/4)/0.83 ≈ 1.200, independent of the load, whereas ISO 281 gives
-  L10^(3/10) F_r / C = 1; the two lives are equal only at C/F_r = (0.83^4/K)^(3/2) ≈ 0.335,
-  so for any real load ISO/TS 16281 with straight rollers gives the longer life.
+  would be exactly 1 with the unrounded load-integral ratios).  The fixed factor is on the
+  load: L10r^(1/4) F_r / C = K^(1/4)/0.83 ≈ 1.200, independent of the load, whereas
+  ISO 281 gives L10^(3/10) F_r / C = 1; the two lives are equal only at
+  C/F_r = (0.83^4/K)^(3/2) ≈ 0.335, so for any real load ISO/TS 16281 with straight
+  rollers gives the longer life.
 
 Sources and their checks
 ------------------------
@@ -223,7 +224,9 @@ def equivalent_lamina_loads(slice_loads, rotating: bool):
     if q.ndim < 2:
         raise ValueError(f"slice_loads must have shape (..., Z, n_slices); got {q.shape}")
     w = 4.0 if rotating else 4.5
-    return np.mean(q ** w, axis=-2) ** (1.0 / w)
+    top = np.max(q, axis=-2, keepdims=True)          # scaled: no underflow of tiny loads
+    top = np.where(top > 0, top, 1.0)
+    return np.mean((q / top) ** w, axis=-2) ** (1.0 / w) * top[..., 0, :]
 
 
 @dataclass(frozen=True)
@@ -369,14 +372,20 @@ def lamina_reference_life(slice_loads, C, roller_diameter, pitch_diameter, conta
     qei = equivalent_lamina_loads(qi, rotating=rot)
     qee = equivalent_lamina_loads(qo, rotating=not rot)
     axes = (-1,) if i == 1 else (-2, -1)
-    si = np.sum((qei / qci) ** 4.5, axis=axes)
-    se = np.sum((qee / qce) ** 4.5, axis=axes)
-    if np.any(si + se == 0.0):
+    ri, re = qei / qci, qee / qce
+    # sums scaled by the largest ratio m: L = (sum (r/m)^4.5)^(-8/9) m^-4, so that tiny
+    # loads give a long life instead of an underflow to zero
+    m = np.maximum(np.max(ri, axis=axes), np.max(re, axis=axes))
+    if np.any(m == 0.0):
         raise ValueError("slice_loads are all zero: the bearing carries no load (infinite life)")
-    with np.errstate(divide="ignore"):
-        Li = np.where(si > 0, np.where(si > 0, si, 1.0) ** (-8.0 / 9.0), np.inf)
-        Le = np.where(se > 0, np.where(se > 0, se, 1.0) ** (-8.0 / 9.0), np.inf)
-    L = (si + se) ** (-8.0 / 9.0)
+    mk = np.expand_dims(m, axes)
+    si = np.sum((ri / mk) ** 4.5, axis=axes)
+    se = np.sum((re / mk) ** 4.5, axis=axes)
+    with np.errstate(divide="ignore", over="ignore"):
+        scale = m ** -4.0
+        Li = np.where(si > 0, np.where(si > 0, si, 1.0) ** (-8.0 / 9.0) * scale, np.inf)
+        Le = np.where(se > 0, np.where(se > 0, se, 1.0) ** (-8.0 / 9.0) * scale, np.inf)
+        L = (si + se) ** (-8.0 / 9.0) * scale
     return ReferenceRatingLife(L10r=_s(L), L_inner=_s(Li), L_outer=_s(Le), q_ci=qci, q_ce=qce,
                                q_ei=qei, q_ee=qee, P_ref=_s(C / L ** 0.3), C=C,
                                rotating=rotating, n_slices=int(ns))
