@@ -6,7 +6,9 @@ coefficient; :func:`compute` returns what the page shows: the sections y = 0 and
 the stress fields, the depth profiles on the axis, a von Mises volume (all in units of p0
 and of the minor semi-axis b) and the table of a, b, p0, delta, tau0, z0, tau_max and its
 depth (SI).  No HTML here: :mod:`ballrace.teach.page` draws the page,
-:mod:`ballrace.teach.server` serves it.
+:mod:`ballrace.teach.server` serves it.  :func:`compute` takes the page's inputs as typed
+(text with units, parsed with pint as at the command line) and solves the contact; the
+sampling and the maxima work on that contact in SI.
 
 Everything numeric comes from :mod:`ballrace.analytic`: :func:`~ballrace.analytic.hertz.
 point_contact` / :func:`~ballrace.analytic.hertz.elliptical_contact`,

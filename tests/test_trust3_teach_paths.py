@@ -40,7 +40,10 @@ def test_validation_teach_is_the_figures_module():
     assert teach is figures is sys.modules["ballrace.validation.teach"]
     assert ballrace.validation.teach is figures
     assert figures.__name__ == "ballrace.teach.figures"
-    from ballrace.validation.teach import TRACTION_SWEEP, subsurface_figure, title_text  # noqa: F401
+    from ballrace.validation.teach import subsurface_figure, title_text, traction_figure
+
+    assert (subsurface_figure, title_text, traction_figure) == (
+        figures.subsurface_figure, figures.title_text, figures.traction_figure)
 
 
 def test_validation_explorer_reexports_every_old_public_name():
