@@ -170,8 +170,8 @@ def test_old_module_paths_are_the_moved_modules():
     for rel, target in ALIASES.items():
         new = importlib.import_module(target)
         old = _module_of(rel)
-        assert sys.modules[old] is new, old
         assert importlib.import_module(old) is new, old
+        assert sys.modules[old] is new, old
         parent, name = old.rsplit(".", 1)
         assert getattr(importlib.import_module(parent), name) is new, old
         assert new.__name__ == target               # one module, named by its new path
