@@ -8,7 +8,8 @@ heavy dependencies only when a command runs:
 * ``bearing``  — :mod:`ballrace.commands.bearing` (when present);
 * ``shaft``    — :mod:`ballrace.commands.shaft`;
 * ``fem``      — :mod:`ballrace.fem.cli`;
-* ``validate``, ``teach`` — :mod:`ballrace.validation.cli`.
+* ``validate`` — :mod:`ballrace.validation.cli`;
+* ``teach``    — :mod:`ballrace.teach.commands`.
 
 Global options: ``--version``, and ``-v`` / ``-vv`` (ballrace's progress logging /
 everything, including the libraries underneath), accepted before or after the command
@@ -66,7 +67,7 @@ app = typer.Typer(cls=_Group, add_completion=False, no_args_is_help=True,
                        "tables in engineering units, --units to choose; --json in SI).")
 
 _SUBMODULES = ("ballrace.commands.bearing", "ballrace.commands.shaft", "ballrace.fem.cli",
-               "ballrace.validation.cli")
+               "ballrace.validation.cli", "ballrace.teach.commands")
 
 #: Values of the ``--units`` option of the table-printing commands.
 UNIT_SYSTEMS = ("eng", "si", "us")

@@ -76,14 +76,18 @@ autosummary_imported_members = False
 
 def _moved_modules() -> list[str]:
     """Old module paths kept importable after their module moved (a shim whose body puts the
-    moved module in its place in ``sys.modules``, e.g. ``ballrace.analytic.cli``).  The
-    recursive API listing leaves them out (``_templates/autosummary/module.rst``): the
-    module is documented once, under its new path, with no duplicate page."""
+    moved module in its place in ``sys.modules``, e.g. ``ballrace.analytic.cli``, or, for a
+    module split in several, re-exports their names and says so in a docstring that starts
+    "Moved to", e.g. ``ballrace.validation.explorer``).  The recursive API listing leaves
+    them out (``_templates/autosummary/module.rst``): the module is documented once, under
+    its new path, with no duplicate page."""
     base = Path(ballrace.__file__).resolve().parent
     moved = []
-    for pkg in ("analytic", "commands", "casefiles", "fem", "meshes", "validation", "reports"):
+    for pkg in ("analytic", "commands", "casefiles", "fem", "meshes", "validation", "reports",
+                "teach"):
         for path in sorted((base / pkg).glob("*.py")):
-            if "sys.modules[__name__] = " in path.read_text(encoding="utf-8"):
+            text = path.read_text(encoding="utf-8")
+            if "sys.modules[__name__] = " in text or text.startswith('"""Moved to '):
                 moved.append(f"ballrace.{pkg}.{path.stem}")
     return moved
 

@@ -211,11 +211,12 @@ def test_built_site_documents_every_public_function_and_case(site):
     import pkgutil
 
     modules = [f"{pkg}.{m.name}" for pkg in ("ballrace.analytic", "ballrace.commands",
-                                             "ballrace.casefiles")
+                                             "ballrace.casefiles", "ballrace.teach")
                for m in pkgutil.iter_modules(importlib.import_module(pkg).__path__)
                if not m.name.startswith("_")]
     assert {"ballrace.analytic.hertz", "ballrace.analytic.loaddist",
-            "ballrace.commands.bearing", "ballrace.casefiles.bearing"} <= set(modules)
+            "ballrace.commands.bearing", "ballrace.casefiles.bearing",
+            "ballrace.teach.compute"} <= set(modules)
     for name in modules:
         mod = importlib.import_module(name)
         if mod.__name__ != name:       # an old path of a moved module: one page, the new path
@@ -231,6 +232,8 @@ def test_built_site_documents_every_public_function_and_case(site):
                    and getattr(getattr(mod, n), "__module__", name) == name
                    and f"{name}.{n}" not in ids]
         assert not missing, (name, missing)
+    for old in ("ballrace.validation.explorer", "ballrace.validation.teach"):
+        assert f"{old}.html" not in api, old     # teaching's old paths: no duplicate page
     for path, case in _all_cases():
         page = site / "cases" / f"{path.stem}.html"
         assert f"case-{case['id']}" in _parse(page).ids

@@ -1,6 +1,6 @@
-"""The subsurface-stress explorer (ballrace.validation.explorer): its computation against the
-library, its bad-input handling, the server, the export, and (when playwright and a
-Chromium are installed: ``.ci/browser``) the page in a real browser.
+"""The subsurface-stress explorer (ballrace.teach): its computation against the library,
+its bad-input handling, the server, the export, and (when playwright and a Chromium are
+installed: ``.ci/browser``) the page in a real browser.
 
 The expected values are the library's own functions called directly
 (:func:`hertz.point_contact`, :func:`subsurface.stress`, ``max_shear``, ``orthogonal_shear``)
@@ -33,7 +33,10 @@ from typer.testing import CliRunner
 
 from ballrace import Material
 from ballrace.analytic import hertz, subsurface
-from ballrace.validation import explorer as ex
+from ballrace.teach import commands as tcmd
+from ballrace.teach import compute as tc
+from ballrace.teach import page as tpage
+from ballrace.teach import server as tsrv
 
 STEEL = Material(E=200e9, nu=0.3)   # E' = 2/[2(1 - nu^2)/E] = E/(1 - nu^2) for two steel bodies
 
@@ -44,7 +47,7 @@ def _contact(load=2000.0, rx1=6.35e-3, ry1=6.35e-3, rx2=math.inf, ry2=math.inf, 
 
 # ------------------------------------------------------------------ the computation
 def test_table_equals_library_circle():
-    r = ex.compute(ex.DEFAULTS)
+    r = tc.compute(tc.DEFAULTS)
     t = r["table"]
     c = _contact()
     o = subsurface.orthogonal_shear(c)
@@ -65,8 +68,8 @@ def test_table_equals_library_circle():
 def test_load_scaling_reuses_the_shape():
     """a, p0 ∝ Q^(1/3), delta ∝ Q^(2/3); the sampled fields in units of p0 and b are the
     same object for two loads (the cache), and the scaled maxima follow."""
-    r1 = ex.compute({**ex.DEFAULTS, "load": "1000 N"})
-    r8 = ex.compute({**ex.DEFAULTS, "load": "8000 N"})
+    r1 = tc.compute({**tc.DEFAULTS, "load": "1000 N"})
+    r8 = tc.compute({**tc.DEFAULTS, "load": "8000 N"})
     t1, t8 = r1["table"], r8["table"]
     assert t8["a"] / t1["a"] == pytest.approx(2.0, rel=1e-12)
     assert t8["p0"] / t1["p0"] == pytest.approx(2.0, rel=1e-12)
@@ -82,9 +85,9 @@ def test_load_scaling_reuses_the_shape():
 def test_scaling_invariants(Q, ratio):
     """Hertz: a, b, z0 and tau_max's depth scale as Q^(1/3), p0 and the stresses as
     Q^(1/3), delta as Q^(2/3) (Johnson 1985 eqs. 4.22-4.23) against a 1000 N reference."""
-    base = {**ex.DEFAULTS, "ry1": ratio, "load": "1000 N"}
-    t0 = ex.compute(base)["table"]
-    t = ex.compute({**base, "load": f"{Q!r} N"})["table"]
+    base = {**tc.DEFAULTS, "ry1": ratio, "load": "1000 N"}
+    t0 = tc.compute(base)["table"]
+    t = tc.compute({**base, "load": f"{Q!r} N"})["table"]
     s = (Q / 1000.0) ** (1 / 3)
     for k, e in (("a", 1), ("b", 1), ("z0", 1), ("tau_max_depth", 1), ("p0", 1), ("tau0", 1),
                  ("tau_max", 1), ("vm_max", 1), ("delta", 2)):
@@ -95,8 +98,8 @@ def test_scaling_invariants(Q, ratio):
 def test_sections_equal_stress(mu):
     """The packed sections are subsurface.stress at the grid points, to the 16-bit
     quantisation (1/65535 of each field's range), mirrored halves included."""
-    params = {**ex.DEFAULTS, "mode": "bearing", "traction": str(mu)}
-    r = ex.compute(params)
+    params = {**tc.DEFAULTS, "mode": "bearing", "traction": str(mu)}
+    r = tc.compute(params)
     c = hertz.elliptical_contact(2000.0, *_bearing_radii(), STEEL.reduced_modulus)
     assert r["table"]["a"] == pytest.approx(float(c.a), rel=1e-12)
     b, p0 = float(c.b), float(c.p_max)
@@ -110,7 +113,7 @@ def test_sections_equal_stress(mu):
         want = {"tau_xz": s.sxz, "tresca": s.tresca, "von_mises": s.von_mises,
                 "sigma_x": s.sxx, "sigma_z": s.szz}
         for name, arr in want.items():
-            got = ex.unpack(sec["fields"][name])
+            got = tc.unpack(sec["fields"][name])
             span = sec["fields"][name]["hi"] - sec["fields"][name]["lo"]
             np.testing.assert_allclose(got, arr / p0, rtol=0, atol=0.6 * span / 65535 + 1e-12,
                                        err_msg=f"{which} {name}")
@@ -124,7 +127,7 @@ def _bearing_radii():
 
 
 def test_axis_profile_and_volume_equal_stress():
-    r = ex.compute({**ex.DEFAULTS, "rx1": "5 mm", "ry1": "20 mm"})
+    r = tc.compute({**tc.DEFAULTS, "rx1": "5 mm", "ry1": "20 mm"})
     c = _contact(rx1=5e-3, ry1=20e-3)
     b, p0 = float(c.b), float(c.p_max)
     ax = r["dimless"]["axis"]
@@ -133,34 +136,34 @@ def test_axis_profile_and_volume_equal_stress():
     np.testing.assert_allclose(ax["curves"]["von_mises"], s.von_mises / p0, rtol=1e-5, atol=1e-6)
     np.testing.assert_allclose(ax["curves"]["sigma_z"], s.szz / p0, rtol=1e-5, atol=1e-6)
     vol = r["dimless"]["vol"]
-    vm = ex.unpack(vol["vm"])
+    vm = tc.unpack(vol["vm"])
     X, Y, Z = np.meshgrid(*(np.linspace(*vol[k][:2], vol[k][2]) for k in "xyz"), indexing="ij")
     want = subsurface.stress(c, X * b, Y * b, Z * b, nu=0.3).von_mises / p0
     np.testing.assert_allclose(vm, want, atol=0.6 * (vol["vm"]["hi"] - vol["vm"]["lo"]) / 65535)
 
 
 def test_traction_maxima_pending_then_equal_library():
-    params = {**ex.DEFAULTS, "rx1": "7 mm", "ry1": "7 mm", "traction": "0.3"}
-    ex._CACHE.clear()
-    fast = ex.compute(params, maxima=False)
+    params = {**tc.DEFAULTS, "rx1": "7 mm", "ry1": "7 mm", "traction": "0.3"}
+    tc._CACHE.clear()
+    fast = tc.compute(params, maxima=False)
     assert fast["pending"] is True and fast["table"]["tau_max"] is None
-    full = ex.compute(params)
+    full = tc.compute(params)
     c = _contact(rx1=7e-3, ry1=7e-3)
     m = subsurface.max_shear(c, nu=0.3, traction=0.3)
     assert full["table"]["tau_max"] == pytest.approx(float(m.tau_max), rel=1e-12)
     assert full["table"]["tau_max_x"] == pytest.approx(float(m.x), rel=1e-12, abs=1e-15)
-    assert ex.compute(params, maxima=False)["pending"] is False      # now cached
+    assert tc.compute(params, maxima=False)["pending"] is False      # now cached
 
 
 def test_bearing_outer_race_and_ratio_slider():
-    r = ex.compute({**ex.DEFAULTS, "mode": "bearing", "race": "outer", "angle": "40 deg"})
+    r = tc.compute({**tc.DEFAULTS, "mode": "bearing", "race": "outer", "angle": "40 deg"})
     D, dm, f, beta = 12.7e-3, 65e-3, 0.52, math.radians(40)
     g = D * math.cos(beta) / dm
     c = hertz.elliptical_contact(2000.0, 0.5 * D * (1 + g), f * D / (2 * f - 1),
                                  STEEL.reduced_modulus)
     assert r["table"]["a"] == pytest.approx(float(c.a), rel=1e-12)
     # the ellipticity slider sets body 1's ry so that Ry/Rx = 8 (body 2 flat)
-    r = ex.compute({**ex.DEFAULTS, "set_ratio": "8"})
+    r = tc.compute({**tc.DEFAULTS, "set_ratio": "8"})
     assert r["inputs"]["ry1"] == "50.8 mm"
     assert r["table"]["Ry"] / r["table"]["Rx"] == pytest.approx(8.0, rel=1e-12)
 
@@ -190,7 +193,7 @@ BAD = [
 
 @pytest.mark.parametrize("change,field,text", BAD)
 def test_bad_input_one_line(change, field, text):
-    r = ex.compute_safe({**ex.DEFAULTS, **change})
+    r = tc.compute_safe({**tc.DEFAULTS, **change})
     assert r["ok"] is False
     assert r["field"] == field
     assert text in r["error"]
@@ -200,7 +203,7 @@ def test_bad_input_one_line(change, field, text):
 # ------------------------------------------------------------------ the server
 @pytest.fixture(scope="module")
 def server():
-    srv = ex.make_server(0)
+    srv = tsrv.make_server(0)
     th = threading.Thread(target=srv.serve_forever, kwargs={"poll_interval": 0.05}, daemon=True)
     th.start()
     yield f"http://127.0.0.1:{srv.server_address[1]}"
@@ -226,7 +229,7 @@ def test_server_page_is_self_contained(server):
 
 def test_server_survives_bad_input(server):
     for change, field, _ in BAD:
-        r = _post(server, {**ex.DEFAULTS, **change})
+        r = _post(server, {**tc.DEFAULTS, **change})
         assert r["ok"] is False and r["field"] == field
     for body in (b"not json", b"[1, 2]"):          # a malformed request: 400, one line
         req = urllib.request.Request(server + "/api/compute", data=body, method="POST")
@@ -235,7 +238,7 @@ def test_server_survives_bad_input(server):
         r = json.loads(err.value.read())
         assert err.value.code == 400
         assert r["ok"] is False and "\n" not in r["error"]
-    r = _post(server, {**ex.DEFAULTS, "load": "1 kN"})
+    r = _post(server, {**tc.DEFAULTS, "load": "1 kN"})
     assert r["ok"] is True and r["table"]["load"] == pytest.approx(1000.0)
 
 
@@ -261,8 +264,8 @@ def test_serve_with_a_case_file():
     res = CliRunner().invoke(app, ["teach", "serve", "--case", "/nonexistent.toml"])
     assert res.exit_code == 2 and "no such file" in res.output and "Traceback" not in res.output
     path = Path(__file__).resolve().parents[1] / "examples" / "bearing_218.toml"
-    initial = ex.case_inputs(str(path), "outer")
-    srv = ex.make_server(0, initial=initial)
+    initial = tc.case_inputs(str(path), "outer")
+    srv = tsrv.make_server(0, initial=initial)
     try:
         th = threading.Thread(target=srv.serve_forever, kwargs={"poll_interval": 0.05},
                               daemon=True)
@@ -275,7 +278,7 @@ def test_serve_with_a_case_file():
         srv.server_close()
     init = json.loads(re.search(r"const DEFAULTS = (\{.*?\});", html).group(1))
     assert init["mode"] == "bearing" and init["race"] == "outer" and init["angle"] == "40 deg"
-    r = ex.compute(init)
+    r = tc.compute(init)
     # the 218 bearing of Ricci (2009): D = 22.225 mm, d_e = 125.26 mm, f = 0.5232, 40 deg
     D, dm, f, beta = 22.225e-3, 125.26e-3, 0.5232, math.radians(40)
     g = D * math.cos(beta) / dm
@@ -328,7 +331,7 @@ SMALL = {"ratio": (1.0, 4.0), "load": (500.0, 4000.0), "nu": (0.3,), "mu": (0.0,
 
 @pytest.fixture(scope="module")
 def export_data():
-    return ex.export_grid(SMALL)
+    return tc.export_grid(SMALL)
 
 
 def test_export_tables_equal_live_compute(export_data):
@@ -344,19 +347,19 @@ def test_export_tables_equal_live_compute(export_data):
                                                 rel=1e-12)
                 ms = subsurface.max_shear(c, nu=0.3, traction=mu)
                 assert t["tau_max"] == pytest.approx(float(ms.tau_max), rel=1e-9)
-                live = ex.compute(ex.export_params(alpha, Q, 0.3, mu))["table"]
+                live = tc.compute(tc.export_params(alpha, Q, 0.3, mu))["table"]
                 assert live == t
 
 
 def test_export_page_size_and_no_network(tmp_path, export_data):
-    html = ex.page(export_data)
+    html = tpage.page(export_data)
     assert "http://" not in html and "https://" not in html
     # the full grid: the gzipped size of one shape's fields times the number of shapes,
     # plus the tables, in base64, stays below 10 MB (the full export: docs/explorer.md)
     shape = gzip.compress(json.dumps(max(export_data["dimless"].values(),
                                          key=lambda d: len(json.dumps(d)))).encode(), 9)
     table = gzip.compress(json.dumps(export_data["tables"]).encode(), 9)
-    G = ex.EXPORT_GRID
+    G = tc.EXPORT_GRID
     n_shape = len(G["ratio"]) * len(G["nu"]) * len(G["mu"])
     n_table = n_shape * len(G["load"])
     estimate = (n_shape * len(shape) + n_table / len(export_data["tables"]) * len(table)) * 4 / 3
@@ -366,8 +369,8 @@ def test_export_page_size_and_no_network(tmp_path, export_data):
 def test_export_command_small(tmp_path, monkeypatch):
     from ballrace.cli import app
 
-    monkeypatch.setattr(ex, "SMALL_GRID", {"ratio": (1.0,), "load": (1000.0,), "nu": (0.3,),
-                                           "mu": (0.0,)})
+    monkeypatch.setattr(tcmd, "SMALL_GRID", {"ratio": (1.0,), "load": (1000.0,), "nu": (0.3,),
+                                             "mu": (0.0,)})
     out = tmp_path / "h.html"
     res = CliRunner().invoke(app, ["teach", "export", str(out), "--small"])
     assert res.exit_code == 0, res.output
@@ -470,7 +473,7 @@ def test_in_browser(browser_exe, tmp_path, server, export_data):
         assert live_requests and all(u.startswith(server) for u in live_requests), live_requests
         # the export from file://, no request to anything but the file itself
         out = tmp_path / "explorer.html"
-        out.write_text(ex.page(export_data), encoding="utf-8")
+        out.write_text(tpage.page(export_data), encoding="utf-8")
         requests = []
         page2 = browser.new_page()
         page2.on("request", lambda r: requests.append(r.url))
@@ -494,10 +497,10 @@ def test_beyond_hertz_is_a_note_on_the_page_not_a_warning_on_the_console():
 
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        r = ex.compute({**ex.DEFAULTS, "mode": "bodies", "load": "1e9 N", "rx1": "6.35 mm",
+        r = tc.compute({**tc.DEFAULTS, "mode": "bodies", "load": "1e9 N", "rx1": "6.35 mm",
                         "ry1": "6.35 mm", "rx2": "inf", "ry2": "inf", "traction": "0"},
                        maxima=False)
-        ok = ex.compute({**ex.DEFAULTS, "mode": "bodies", "load": "1000 N", "rx1": "6.35 mm",
+        ok = tc.compute({**tc.DEFAULTS, "mode": "bodies", "load": "1000 N", "rx1": "6.35 mm",
                          "ry1": "6.35 mm", "rx2": "inf", "ry2": "inf", "traction": "0"},
                         maxima=False)
     assert "a / R = 5.5" in r["note"] and "extrapolations" in r["note"]

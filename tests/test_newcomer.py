@@ -4,7 +4,7 @@ from __future__ import annotations
 import ballrace
 
 SUBPACKAGES = {"analytic", "commands", "casefiles", "fem", "meshes", "validation", "reports", "cli",
-               "console", "units", "errors"}
+               "console", "units", "errors", "teach"}
 
 
 def test_public_namespace_is_the_documented_one():

@@ -475,11 +475,11 @@ def test_quadrature_converges(monkeypatch):
 def test_teach_traction_figure(tmp_path):
     """``ballrace teach subsurface --traction``: the figure is written and the numbers it
     marks are the library's (circle: the Hamilton-Goodman edge tension)."""
-    from ballrace.validation import teach
+    from ballrace.teach import figures
 
     out = tmp_path / "t.png"
-    info = teach.traction_figure(2000.0, 6.35e-3, 6.35e-3, E=200e9, nu=0.3, traction=0.3,
-                                 path=out, n=21)
+    info = figures.traction_figure(2000.0, 6.35e-3, 6.35e-3, E=200e9, nu=0.3, traction=0.3,
+                                   path=out, n=21)
     assert out.stat().st_size > 10_000
     ref = 0.4 / 3 + 4.3 * np.pi * 0.3 / 8
     assert info["trailing-edge sigma_x / p0"] == pytest.approx(ref, abs=1e-4)

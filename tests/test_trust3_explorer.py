@@ -26,7 +26,9 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from ballrace.validation import explorer as ex
+from ballrace.teach import commands as tcmd
+from ballrace.teach import compute as tc
+from ballrace.teach import server as tsrv
 from test_explorer import _chromium   # the browser the explorer tests drive
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
@@ -54,7 +56,7 @@ def folders(tmp_path_factory):
 @pytest.fixture(scope="module")
 def server(folders):
     root, outside = folders
-    srv = ex.make_server(0, root=root, cases=(outside / "cli.toml",))
+    srv = tsrv.make_server(0, root=root, cases=(outside / "cli.toml",))
     th = threading.Thread(target=srv.serve_forever, kwargs={"poll_interval": 0.05}, daemon=True)
     th.start()
     yield srv.server_address[1]
@@ -143,9 +145,9 @@ def test_security_headers_on_the_page(server):
 
 
 def test_allowed_hosts():
-    assert ex._hosts("127.0.0.1", 8765) == {"127.0.0.1:8765", "localhost:8765", "[::1]:8765"}
-    assert "localhost" in ex._hosts("127.0.0.1", 80)        # port 80 is left out by browsers
-    assert "[::1]:9" in ex._hosts("::1", 9)
+    assert tsrv._hosts("127.0.0.1", 8765) == {"127.0.0.1:8765", "localhost:8765", "[::1]:8765"}
+    assert "localhost" in tsrv._hosts("127.0.0.1", 80)        # port 80 is left out by browsers
+    assert "[::1]:9" in tsrv._hosts("::1", 9)
 
 
 # ------------------------------------------------------------------ /api/case
@@ -190,26 +192,26 @@ def test_case_request_bounds(server):
     from urllib.parse import urlencode
 
     status, text = _request(server, "GET", "/api/case?" + urlencode(
-        {"path": "a" * (ex.MAX_QUERY + 10) + ".toml"}))
-    assert status == 400 and f"longer than {ex.MAX_QUERY}" in json.loads(text)["error"]
+        {"path": "a" * (tsrv.MAX_QUERY + 10) + ".toml"}))
+    assert status == 400 and f"longer than {tsrv.MAX_QUERY}" in json.loads(text)["error"]
     status, text = _request(server, "GET", "/api/case?path=inside.toml&race=middle")
     assert status == 400 and json.loads(text)["field"] == "race"
 
 
 def test_resolve_case_large_file_refused(tmp_path):
     big = tmp_path / "big.toml"
-    big.write_bytes(b"#" * (ex.MAX_CASE_BYTES + 1))
-    with pytest.raises(ex.InputError, match="larger than"):
-        ex.resolve_case("big.toml", tmp_path)
+    big.write_bytes(b"#" * (tsrv.MAX_CASE_BYTES + 1))
+    with pytest.raises(tc.InputError, match="larger than"):
+        tsrv.resolve_case("big.toml", tmp_path)
     (tmp_path / "small.toml").write_text("[case]\n")
-    assert ex.resolve_case("small.toml", tmp_path) == (tmp_path / "small.toml").resolve()
+    assert tsrv.resolve_case("small.toml", tmp_path) == (tmp_path / "small.toml").resolve()
 
 
 # ------------------------------------------------------------------ bounded requests
 def test_body_larger_than_the_bound_is_refused_unread(server):
     t0 = time.perf_counter()
     status, r = _post(server, {}, headers=[("Content-Length", str(10**9))])
-    assert status == 400 and r["field"] == "general" and str(ex.MAX_BODY) in r["error"]
+    assert status == 400 and r["field"] == "general" and str(tsrv.MAX_BODY) in r["error"]
     status, r = _post(server, {}, headers=[("Content-Length", "-1")])
     assert status == 400
     status, r = _post(server, {}, headers=[("Content-Length", "many")])
@@ -218,7 +220,7 @@ def test_body_larger_than_the_bound_is_refused_unread(server):
 
 
 @pytest.mark.parametrize("body,field,text", [
-    ({"load": "1" * 200 + " N"}, "load", f"at most {ex.MAX_TEXT} characters"),
+    ({"load": "1" * 200 + " N"}, "load", f"at most {tsrv.MAX_TEXT} characters"),
     ({"load": "9^9^9 N"}, "load", "exponent"),
     ({"load": "9**9**9 N"}, "load", "exponent"),
     ({"load": "9^(9^9) N"}, "load", "exponent"),
@@ -230,39 +232,39 @@ def test_body_larger_than_the_bound_is_refused_unread(server):
 ])
 def test_request_bounds(server, body, field, text):
     t0 = time.perf_counter()
-    status, r = _post(server, {**ex.DEFAULTS, **body})
+    status, r = _post(server, {**tc.DEFAULTS, **body})
     assert status == 400 and r["ok"] is False, r
     assert r["field"] == field and text in r["error"] and "\n" not in r["error"]
     assert time.perf_counter() - t0 < 10          # refused before any computation
 
 
 def test_bounded_inputs_still_accept_what_people_type(server):
-    status, r = _post(server, {**ex.DEFAULTS, "E": "200000 N/mm^2", "load": "0.5 kN",
+    status, r = _post(server, {**tc.DEFAULTS, "E": "200000 N/mm^2", "load": "0.5 kN",
                                "rx1": "0.25 in", "ry1": "0.25 in", "nu": 0.3})
     assert status == 200 and r["ok"], r
     # 200000 N/mm^2 = 200 GPa; 0.25 in = 6.35 mm: the same contact as the defaults at 500 N
-    ref = ex.compute({**ex.DEFAULTS, "load": "500 N"})["table"]
+    ref = tc.compute({**tc.DEFAULTS, "load": "500 N"})["table"]
     assert r["table"]["a"] == pytest.approx(ref["a"], rel=1e-12)
 
 
 def test_check_text():
-    assert ex.check_text("E", "210 kN/mm**2") == "210 kN/mm**2"
-    assert ex.check_text("E", "3e7 lbf/in^2") == "3e7 lbf/in^2"
-    with pytest.raises(ex.RequestError, match="exponent"):
-        ex.check_text("E", "2^2^2^2^2 Pa")
+    assert tsrv.check_text("E", "210 kN/mm**2") == "210 kN/mm**2"
+    assert tsrv.check_text("E", "3e7 lbf/in^2") == "3e7 lbf/in^2"
+    with pytest.raises(tsrv.RequestError, match="exponent"):
+        tsrv.check_text("E", "2^2^2^2^2 Pa")
 
 
 @pytest.mark.parametrize("mu", ["1.5", "-10", "10"])
 def test_traction_beyond_one_is_an_input_error_at_once(server, mu):
     t0 = time.perf_counter()
-    status, r = _post(server, {**ex.DEFAULTS, "ry1": "100 mm", "traction": mu})
+    status, r = _post(server, {**tc.DEFAULTS, "ry1": "100 mm", "traction": mu})
     assert status == 200 and r["ok"] is False and r["field"] == "traction"
     assert "traction must be in [-1, 1]" in r["error"]
     assert time.perf_counter() - t0 < 10
 
 
 def test_server_alive_after_all_that(server):
-    status, r = _post(server, {**ex.DEFAULTS, "traction": "1"})
+    status, r = _post(server, {**tc.DEFAULTS, "traction": "1"})
     assert status == 200 and r["ok"] is True
 
 
@@ -270,8 +272,8 @@ def test_server_alive_after_all_that(server):
 def test_export_grid_reports_each_shape(caplog):
     grid = {"ratio": (1.0, 2.0), "load": (500.0, 1000.0, 2000.0), "nu": (0.3,), "mu": (0.0,)}
     calls = []
-    with caplog.at_level(logging.INFO, logger="ballrace.validation.explorer"):
-        ex.export_grid(grid, lambda done, n, text: calls.append((done, n, text)))
+    with caplog.at_level(logging.INFO, logger="ballrace.teach.compute"):
+        tc.export_grid(grid, lambda done, n, text: calls.append((done, n, text)))
     assert [(d, n) for d, n, _ in calls] == [(0, 6), (3, 6), (6, 6)]
     assert calls[0][2] == "shape 1/2: Ry/Rx = 1, nu = 0.3, traction = 0"
     assert calls[1][2] == "shape 2/2: Ry/Rx = 2, nu = 0.3, traction = 0"
@@ -283,8 +285,8 @@ def test_export_grid_reports_each_shape(caplog):
 def test_export_command_prints_progress_on_stderr(tmp_path, monkeypatch):
     from ballrace.cli import app
 
-    monkeypatch.setattr(ex, "SMALL_GRID", {"ratio": (1.0, 2.0), "load": (1000.0,),
-                                           "nu": (0.3,), "mu": (0.0,)})
+    monkeypatch.setattr(tcmd, "SMALL_GRID", {"ratio": (1.0, 2.0), "load": (1000.0,),
+                                             "nu": (0.3,), "mu": (0.0,)})
     out = tmp_path / "h.html"
     res = CliRunner().invoke(app, ["teach", "export", str(out), "--small"])
     assert res.exit_code == 0, res.output
@@ -297,7 +299,7 @@ def test_export_command_prints_progress_on_stderr(tmp_path, monkeypatch):
 
 
 def test_progress_lines_one_per_tenth(capsys):
-    p = ex._ProgressLines(90)
+    p = tcmd._ProgressLines(90)
     for done in range(0, 91, 3):
         p(done, 90, "x")
     p(90, 90, "compressing")
@@ -315,7 +317,7 @@ def browser(tmp_path_factory):
     exe = _chromium()
     if exe is None:
         pytest.skip("no chromium (apt-get install chromium; see .ci/browser)")
-    srv = ex.make_server(0)
+    srv = tsrv.make_server(0)
     th = threading.Thread(target=srv.serve_forever, kwargs={"poll_interval": 0.05}, daemon=True)
     th.start()
     with sync_api.sync_playwright() as p:

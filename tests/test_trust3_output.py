@@ -125,7 +125,7 @@ def test_shaft_mass_follows_the_unit_system():
 def test_teach_title_in_the_chosen_units():
     from types import SimpleNamespace as C
 
-    from ballrace.validation.teach import title_text
+    from ballrace.teach.figures import title_text
 
     c = C(a=1.0e-3, b=0.5e-3, p_max=2.0e9)
     us = title_text("Subsurface stresses", 4448.2216152605, c, 0.3, "us")
@@ -140,7 +140,7 @@ def test_teach_title_in_the_chosen_units():
 
 @pytest.mark.parametrize("extra", [[], ["--traction", "0.2"]])
 def test_teach_passes_the_unit_system_to_the_figure(monkeypatch, tmp_path, extra):
-    from ballrace.validation import teach
+    from ballrace.teach import figures
 
     seen = {}
 
@@ -148,8 +148,8 @@ def test_teach_passes_the_unit_system_to_the_figure(monkeypatch, tmp_path, extra
         seen.update(kw)
         return {"p_max [Pa]": 1e9}
 
-    monkeypatch.setattr(teach, "subsurface_figure", fake)
-    monkeypatch.setattr(teach, "traction_figure", fake)
+    monkeypatch.setattr(figures, "subsurface_figure", fake)
+    monkeypatch.setattr(figures, "traction_figure", fake)
     res = CliRunner().invoke(app, ["teach", "subsurface", "--units", "us",
                                    "--out", str(tmp_path / "t.png"), *extra], env=WIDE)
     assert res.exit_code == 0, res.output

@@ -9,7 +9,8 @@
 * :mod:`~ballrace.validation.baseline` — regression snapshots (kept apart from the cases);
 * :mod:`~ballrace.validation.figures` — data for the report's plots;
 * :mod:`~ballrace.validation.derive` — the mpmath derivations quoted by the cases;
-* :mod:`~ballrace.validation.cli` — ``ballrace validate`` and ``ballrace teach``.
+* :mod:`~ballrace.validation.cli` — ``ballrace validate`` (``ballrace teach`` is
+  :mod:`ballrace.teach`).
 
 See ``docs/validation.md``.
 """

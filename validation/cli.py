@@ -1,4 +1,5 @@
-"""``ballrace validate`` and ``ballrace teach``: registered on the root typer app.
+"""``ballrace validate``: registered on the root typer app (``ballrace teach`` is
+:mod:`ballrace.teach.commands`).
 
 The library logs; this module prints (rich).  Heavy imports happen inside the commands.
 """
@@ -12,7 +13,7 @@ from typing import Annotated, Optional
 
 import typer
 
-from ballrace.console import UNITS_HELP, literal
+from ballrace.console import literal
 
 __all__ = ["register"]
 
@@ -22,14 +23,6 @@ _STYLE = {"pass": "green", "fail": "bold red", "error": "bold magenta", "missing
           "skipped": "dim"}
 _MARK = {"pass": "PASS", "fail": "FAIL", "error": "ERROR", "missing": "MISSING",
          "skipped": "SKIP"}
-
-teach_app = typer.Typer(add_completion=False, no_args_is_help=True, rich_markup_mode=None,
-                        help="Teaching figures drawn from the library.")
-
-#: Where ``teach`` writes its figures unless ``--out`` says otherwise (ballrace-out/ holds a
-#: .gitignore of its own, so git ignores it wherever it is).
-TEACH_OUT = Path("ballrace-out") / "teach"
-
 
 def validate(
     cases: Annotated[Optional[str], typer.Option(
@@ -333,97 +326,6 @@ def _usage(console, msg: str) -> None:
     raise typer.Exit(code=2)
 
 
-@teach_app.command("subsurface")
-def teach_subsurface(
-    load: Annotated[str, typer.Option(help='Normal load ("1000 N").')] = "2000 N",
-    rx1: Annotated[str, typer.Option(help="Body 1 radius in x (rolling).")] = "6.35 mm",
-    ry1: Annotated[str, typer.Option(help="Body 1 radius in y.")] = "6.35 mm",
-    rx2: Annotated[str, typer.Option(help='Body 2 radius in x ("inf" flat, < 0 concave).')] = "inf",
-    ry2: Annotated[str, typer.Option(help="Body 2 radius in y.")] = "inf",
-    e1: Annotated[str, typer.Option("--E1", help="Young's modulus (both bodies).")] = "200 GPa",
-    nu1: Annotated[float, typer.Option("--nu1", help="Poisson's ratio (both bodies).")] = 0.3,
-    out: Annotated[Path, typer.Option("--out", help="PNG to write (its folder is created).")]
-        = TEACH_OUT / "subsurface.png",
-    traction: Annotated[float, typer.Option(
-        help="Traction coefficient q/p along +x: draw the contact with and without it.")] = 0.0,
-    units: Annotated[str, typer.Option("--units", help=UNITS_HELP)] = "eng",
-):
-    """Draw max shear, von Mises and orthogonal shear under a contact, depths marked."""
-    from rich.console import Console
-
-    from ballrace.units import parse_quantity
-
-    from . import teach
-
-    console = Console()
-    if units not in ("eng", "si", "us"):
-        _usage(console, f"--units must be one of eng, si, us; got {units!r}")
-    if out.is_dir():                      # --out FOLDER: the figure goes inside it
-        out = out / "subsurface.png"
-    elif not out.suffix:                  # matplotlib would add ".png" behind our back
-        out = out.with_suffix(".png")
-    try:
-        q = parse_quantity(load, "[force]", "load")
-        radii = [parse_quantity(v, "[length]", n, allow_inf=True)
-                 for n, v in (("rx1", rx1), ("ry1", ry1), ("rx2", rx2), ("ry2", ry2))]
-        e = parse_quantity(e1, "[pressure]", "E1")
-    except ValueError as exc:
-        _usage(console, str(exc))
-    from ballrace.units import plausible
-
-    for (n, v), r in zip((("--rx1", rx1), ("--ry1", ry1), ("--rx2", rx2), ("--ry2", ry2)), radii):
-        plausible(r, v, n, "radius")                # "6.35 m" for "6.35 mm": a warning
-    plausible(e, e1, "--E1", "modulus")             # "200 MPa" for "200 GPa": a warning
-    from ballrace.console import output_folder
-
-    if missing_modules("matplotlib"):
-        _usage(console, 'teach draws with matplotlib: pip install "ballrace[report]"')
-    try:
-        output_folder(out.parent)
-    except ValueError as exc:
-        _usage(console, str(exc))
-    try:
-        if traction:
-            info = teach.traction_figure(q, *radii, E=e, nu=nu1, traction=traction, path=out,
-                                         units=units)
-        else:
-            info = teach.subsurface_figure(q, *radii, E=e, nu=nu1, path=out, units=units)
-    except ImportError as exc:
-        typer.echo(f"error: the subsurface module is not available ({exc})", err=True)
-        raise typer.Exit(code=1)
-    except (ValueError, TypeError, OSError) as exc:
-        _usage(console, str(exc))
-    from ballrace.console import print_sections
-
-    console.print(literal(f"wrote {out}"))
-    print_sections(console, [("Marked on the figure", _teach_rows(info))], units)
-
-
-def _teach_rows(info: dict) -> list:
-    """``teach``'s numbers as table rows in display units: a key ending in [Pa] is a stress,
-    [m] a length, [-] a number; a tuple (value / p0, position / b) is printed as such."""
-    rows = []
-    for key, v in info.items():
-        kind = {"[Pa]": "stress", "[m]": "length", "[-]": None}.get(key.rsplit(" ", 1)[-1], "")
-        name = key.rsplit(" [", 1)[0] if kind != "" else key
-        if isinstance(v, tuple):
-            rows.append((name, ", ".join(f"{x:.4g}" for x in v), None))
-        else:
-            rows.append((name, float(v), kind or None))
-    return rows
-
-
-def _register_explorer() -> None:
-    """``teach serve`` and ``teach export``: the browser explorer (validation/explorer.py)."""
-    from .explorer import register_commands
-
-    register_commands(teach_app)
-
-
-_register_explorer()
-
-
 def register(app: typer.Typer) -> None:
-    """Add ``validate`` and the ``teach`` group to the root app."""
+    """Add ``validate`` to the root app."""
     app.command("validate")(validate)
-    app.add_typer(teach_app, name="teach")

@@ -1,5 +1,5 @@
 // ballrace subsurface-stress explorer: a canvas front end for one state of
-// ballrace.validation.explorer.compute (live: POST /api/compute; handout: the embedded grid).
+// ballrace.teach.compute.compute (live: POST /api/compute; handout: the embedded grid).
 "use strict";
 (function () {
   const $ = (s) => document.querySelector(s);
