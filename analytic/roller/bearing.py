@@ -60,7 +60,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import plausible
-from .._checks import as_array, check_choice, check_positive
+from .._checks import as_array, check_choice, check_positive, check_range
 from ..materials import BEARING_STEEL, Material, effective_modulus
 from . import lamina
 from .profile import ProfileContext, as_profile
@@ -150,6 +150,11 @@ class RollerBearing:
         :meth:`solve` refuses more).  Default 1.
     name : str, optional
         Label for reports.
+    rib_angle : float, optional
+        Tapered: the rib contact angle alpha_f [rad] (the angle of the rib's normal force
+        to the radial plane), in (0, pi/2).  Default ``None``: pi/2 - alpha_m, the rib
+        normal along the roller axis (then Q_i = Q_o and Q_f = 2 Q_o sin(gamma)).
+        Cylindrical: must be ``None``.
 
     Notes
     -----
@@ -166,15 +171,15 @@ class RollerBearing:
     ...                   pitch_diameter=70.65e-3, diametral_clearance=45e-6)
     >>> b.kind, b.n_slices, round(b.slice_width * 1e3, 4)
     ('cylindrical', 31, 0.3806)
-    >>> round(b.lamina_stiffness / 1e9, 4)          # 3.5948e10 L^(8/9) [N/m^(10/9)]
-    68.5307
+    >>> round(b.lamina_stiffness / 1e6, 2)      # 35 948e6 L_we^(8/9) [N/m^(10/9)]
+    694.69
 
     A tapered bearing with a 15 deg cup:
 
     >>> t = RollerBearing(10e-3, 15e-3, 17, 60e-3, kind="tapered",
     ...                   contact_angle=np.radians(15))
-    >>> round(float(np.degrees(t.cone_angle)), 3), round(float(np.degrees(t.rib_angle)), 3)
-    (12.508, 76.254)
+    >>> round(float(np.degrees(t.cone_angle)), 3), round(float(np.degrees(t.rib_contact_angle)), 3)
+    (10.747, 77.127)
     """
 
     roller_diameter: float
@@ -190,6 +195,7 @@ class RollerBearing:
     stiffness: str = "iso"
     n_rows: int = 1
     name: str = ""
+    rib_angle: float | None = None
 
     def __post_init__(self) -> None:
         set_ = object.__setattr__
@@ -239,6 +245,13 @@ class RollerBearing:
                             f"{type(self.material).__name__}")
         check_choice(self.stiffness, "stiffness", lamina.STIFFNESS_LAWS)
         n_s = lamina.check_slices(self.n_slices)
+        rib = self.rib_angle
+        if rib is not None:
+            if kind != "tapered":
+                raise ValueError(f"rib_angle is for tapered bearings (the flanges of a "
+                                 f"cylindrical bearing are not modelled); got {rib!r}")
+            rib = float(check_range(rib, "rib_angle", 0.0, 0.5 * np.pi, unit="rad"))
+            set_(self, "rib_angle", rib)
         prof = as_profile(self.profile)
         set_(self, "roller_diameter", D)
         set_(self, "roller_length", L)
@@ -278,17 +291,22 @@ class RollerBearing:
         return self.contact_angle - 2.0 * self.roller_half_angle
 
     @property
-    def rib_angle(self) -> float:
-        """Rib contact angle alpha_f = pi/2 - alpha_m [rad] (tapered; rib normal along the
-        roller axis; module notes).  ``nan`` for a cylindrical bearing (no rib modelled)."""
-        return 0.5 * np.pi - self.roller_axis_angle if self.tapered else math.nan
+    def rib_contact_angle(self) -> float:
+        """Rib contact angle alpha_f [rad]: ``rib_angle`` if given, else pi/2 - alpha_m (rib
+        normal along the roller axis; module notes).  ``nan`` for a cylindrical bearing
+        (no rib modelled)."""
+        if not self.tapered:
+            return math.nan
+        if self.rib_angle is not None:
+            return self.rib_angle
+        return 0.5 * np.pi - self.roller_axis_angle
 
     @property
     def inner_load_ratio(self) -> float:
         """Q_i / Q_o = sin(alpha_o + alpha_f) / sin(alpha_i + alpha_f) [-] (1 cylindrical)."""
         if not self.tapered:
             return 1.0
-        af = self.rib_angle
+        af = self.rib_contact_angle
         return math.sin(self.contact_angle + af) / math.sin(self.cone_angle + af)
 
     @property
@@ -297,7 +315,7 @@ class RollerBearing:
         if not self.tapered:
             return 0.0
         return (math.sin(self.contact_angle - self.cone_angle)
-                / math.sin(self.cone_angle + self.rib_angle))
+                / math.sin(self.cone_angle + self.rib_contact_angle))
 
     @property
     def axial_clearance(self) -> float:

@@ -115,7 +115,8 @@ def lamina_stiffness(length, E_prime=_E_STEEL, stiffness: str = "iso"):
 
     Examples
     --------
-    >>> round(float(lamina_stiffness(1e-3)) / 1e6, 6)     # 1 mm: 35 948 N/mm^(10/9)
+    >>> c = lamina_stiffness(1e-3)                  # L_we = 1 mm [N/m^(10/9)]
+    >>> round(c / 1e3 ** (10 / 9), 6)               # in N/mm^(10/9): 35 948 x 1^(8/9)
     35948.0
     """
     L = check_positive(length, "length", "m", bounded=True)
