@@ -132,7 +132,7 @@ def _forces(model: _Model, u: np.ndarray, tangent: bool = True):
     """Approaches (Z n_s,), slice loads, ring forces (5,) and tangent (5, 5) at u."""
     d = model.G @ u + model.b
     dp = np.maximum(d, 0.0)
-    r = np.cbrt(np.cbrt(dp))                                      # delta^(1/9)
+    r = dp ** (1.0 / 9.0)
     q = model.c * dp * r                                          # c delta^(10/9)
     F = q @ model.G
     J = (model.G.T * (_N * model.c * r)) @ model.G if tangent else None
@@ -149,26 +149,28 @@ class _Case:
         self.idx = np.flatnonzero(free)
         Gs = model.G / model.sc
         self.Gf = np.ascontiguousarray(Gs[:, self.idx])
-        self.GfT = np.ascontiguousarray(self.Gf.T)
         fixed = np.flatnonzero(~free)
         self.b = model.b + Gs[:, fixed] @ (u0[fixed] * model.sc[fixed])
         self.F = (F_app / model.sc)[self.idx]
         self.c = model.c
 
     def state(self, v):
-        """(approach, delta^(1/9), slice loads, residual, potential) at the free values v.
+        """The state at the free values v: (approaches, loaded slices, their
+        delta^(1/9), their loads, their rows of Gf, residual, potential).
 
-        The potential sum (9/19) c <delta>^(19/9) - F . v is convex in v; its gradient is
-        the residual."""
+        Powers are taken on the loaded slices only.  The potential
+        sum (9/19) c <delta>^(19/9) - F . v is convex in v; its gradient is the residual."""
         d = self.Gf @ v + self.b
-        dp = np.maximum(d, 0.0)
-        r = np.cbrt(np.cbrt(dp))
+        on = np.flatnonzero(d > 0.0)
+        dp = d[on]
+        r = dp ** (1.0 / 9.0)
         q = self.c * dp * r
+        Ga = self.Gf[on]
         phi = (9.0 / 19.0) * float(q @ dp) - float(self.F @ v)
-        return d, r, q, q @ self.Gf - self.F, phi
+        return d, on, r, q, Ga, q @ Ga - self.F, phi
 
-    def tangent(self, r):
-        return (self.GfT * (_N * self.c * r)) @ self.Gf
+    def tangent(self, r, Ga):
+        return (Ga.T * (_N * self.c * r)) @ Ga
 
 
 def _step(case: _Case, v, st, err, scale):
@@ -182,13 +184,14 @@ def _step(case: _Case, v, st, err, scale):
     set would have, and the step is lengthened by the distance to the first contact along
     it (a start of the right size across a clearance).
     """
-    d, r, _, R, phi0 = st
+    d, on, r, _, Ga, R, phi0 = st
     n = v.size
-    seed = not r.any()
+    seed = not on.size
     if seed:                                         # nothing in contact yet
         Qm = scale / case.model.Z
-        r = np.full(r.size, (Qm / (case.c * case.model.n_s)) ** 0.1)
-    A = case.tangent(r)
+        Ga = case.Gf
+        r = np.full(d.size, (Qm / (case.c * case.model.n_s)) ** 0.1)
+    A = case.tangent(r, Ga)
     mu = max(1e-12 * abs(float(np.trace(A))) / n, 1e-6 * scale / case.model.D)
     A.flat[:: n + 1] += mu
     dv = -np.linalg.solve(A, R)
@@ -206,7 +209,7 @@ def _step(case: _Case, v, st, err, scale):
     if err >= 1e-6:                                  # Armijo on the potential
         g = 1e-4 * float(R @ dv)
         for _ in range(60):
-            if new[4] <= phi0 + t * g:
+            if new[6] <= phi0 + t * g:
                 break
             t *= 0.5
             new = case.state(v + t * dv)
@@ -225,8 +228,8 @@ def _newton(model, F_app, u0, free, rtol, max_iter):
     cap = max(_FLOOR_CAP, 100 * rtol)
     st = case.state(v)
     for it in range(max_iter + 1):
-        q, R = st[2], st[3]
-        Qmax = float(q.reshape(Z, n_s).sum(1).max())
+        on, q, R = st[1], st[3], st[5]
+        Qmax = float(np.bincount(on // n_s, weights=q, minlength=1).max()) if on.size else 0.0
         scale = max(load_scale, Qmax, 1e-300)
         err = float(np.abs(R).max(initial=0.0)) / scale
         if err < best[0]:
