@@ -337,6 +337,23 @@ def test_tapered_bearing_needs_an_axial_load():
         tapered().solve(Fa=-100.0)
 
 
+@pytest.mark.parametrize("loads", [dict(Fa=10.0, Fy=3000.0), dict(Fa=1000.0, Mz=100.0)])
+def test_tapered_loads_beyond_what_the_axial_load_holds_have_no_equilibrium(loads):
+    # sum Q_j = Fa / sin(a) bounds the radial load (Fa / tan a) and the moment
+    with pytest.raises(ValueError, match="no equilibrium"):
+        tapered().solve(**loads)
+
+
+def test_zero_load_and_preload_without_load():
+    r = cylindrical(diametral_clearance=45e-6).solve()
+    assert np.all(r.roller_loads == 0) and np.all(r.displacements == 0)
+    # 20 um interference: every roller pressed by (10 um)^(10/9) c_L at zero load, balanced
+    p = cylindrical(diametral_clearance=-20e-6, profile="straight").solve()
+    c_L = p.bearing.lamina_stiffness
+    np.testing.assert_allclose(p.roller_loads, c_L * 10e-6 ** (10 / 9), rtol=1e-9)
+    assert p.radial_deflection < 1e-12
+
+
 @pytest.mark.parametrize("n, error", [(30, ValueError), (3, ValueError), (31.5, ValueError),
                                       ("31", TypeError), (True, TypeError)])
 def test_slice_count_must_be_odd_and_at_least_5(n, error):

@@ -247,6 +247,13 @@ def _newton(model, F_app, u0, free, rtol, max_iter):
         prev = err
         v, st = _step(case, v, st, err, scale if Qmax > 0 else load_scale)
     err, v = best
+    if float(np.abs(v).max(initial=0.0)) > 0.05 * model.D:
+        raise ValueError(
+            f"the loads {F_app.tolist()} [N, N m] have no equilibrium within the bearing's "
+            f"load-deflection range: after {max_iter} iterations the inner ring has moved "
+            f"{float(np.abs(v).max()):.3g} m (more than 0.05 D_we); a single tapered bearing "
+            "needs an axial load and carries little moment by itself: impose the tilt "
+            "(displacements) or give the moment of the load's point of application")
     raise ConvergenceError(
         f"roller load distribution did not converge after {max_iter} iterations: relative "
         f"equilibrium residual {err:.3e} (> rtol={rtol:g}); loads {F_app.tolist()}, "
@@ -536,6 +543,23 @@ def solve(bearing: RollerBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *,
                              f"induces an axial force of about 1.26 F_r tan(alpha) that must "
                              f"be held); got Fa={L[i, 0]!r} with loads {L[i].tolist()} - "
                              "or impose the axial displacement (displacements)")
+        # with x free every roller load sum Q_j = Fa / sin(a): the radial load and the
+        # moments the rollers can balance are bounded by it
+        a = bearing.contact_angle
+        arm = 0.5 * bearing.pitch_diameter * math.sin(a) + 0.5 * bearing.roller_length
+        free_x = ~imposed[:, 0]
+        Qsum = np.where(free_x, L[:, 0], np.inf) / math.sin(a)
+        Fr = np.hypot(L[:, 1], L[:, 2]) * ~imposed[:, 1]
+        M = np.hypot(np.where(imposed[:, 3], 0.0, L[:, 3]), np.where(imposed[:, 4], 0.0, L[:, 4]))
+        bad = free_x & ((Fr > Qsum * math.cos(a)) | (M > Qsum * arm))
+        if np.any(bad):
+            i = int(np.argmax(bad))
+            raise ValueError(
+                f"the loads {L[i].tolist()} [N, N m] have no equilibrium in a single tapered "
+                f"roller bearing: with Fa = {L[i, 0]:g} N its rollers carry sum Q = Fa/sin(a)"
+                f" = {Qsum[i]:.4g} N, at most F_r = Fa/tan(a) = {Qsum[i] * math.cos(a):.4g} N"
+                f" radially and {Qsum[i] * arm:.4g} N m of moment (arm d_m sin(a)/2 + L_we/2)"
+                "; increase Fa or impose the displacements a shaft holds")
     Pd = bearing.diametral_clearance if clearance is None else float(
         check_range(clearance, "clearance", -0.1 * bearing.roller_diameter,
                     0.1 * bearing.roller_diameter, unit="m"))
