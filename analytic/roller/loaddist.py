@@ -88,6 +88,7 @@ class _Model:
     """What the solver needs of one bearing at one azimuth offset and clearance."""
 
     G: np.ndarray          # (Z n_s, 5) slice directions g_jk
+    Gs: np.ndarray         # G / sc (scaled DOFs)
     b: np.ndarray          # (Z n_s,) approach at u = 0 [m]
     c: float               # c_L / n_s [N/m^(10/9)]
     Z: int
@@ -119,11 +120,13 @@ def _model(bearing, azimuth_offset, clearance):
     G[..., 4] = -cp[:, None] * m[None, :]
     b = np.broadcast_to(-0.5 * clearance * ca - 2.0 * bearing.slice_drops, (Z, n_s))
     R = 0.5 * bearing.pitch_diameter
-    model = _Model(G=np.ascontiguousarray(G.reshape(-1, 5)), b=np.ascontiguousarray(b).ravel(),
+    G = np.ascontiguousarray(G.reshape(-1, 5))
+    sc = np.array([1.0, 1.0, 1.0, R, R])
+    model = _Model(G=G, Gs=G / sc, b=np.ascontiguousarray(b).ravel(),
                    c=bearing.lamina_stiffness / n_s, Z=Z, n_s=n_s,
-                   sc=np.array([1.0, 1.0, 1.0, R, R]), D=bearing.roller_diameter, psi=psi,
+                   sc=sc, D=bearing.roller_diameter, psi=psi,
                    axial=bearing.tapered)
-    for v in (model.G, model.b, model.sc, model.psi):
+    for v in (model.G, model.Gs, model.b, model.sc, model.psi):
         v.setflags(write=False)
     return model
 
@@ -147,10 +150,11 @@ class _Case:
     def __init__(self, model: _Model, F_app, u0, free):
         self.model = model
         self.idx = np.flatnonzero(free)
-        Gs = model.G / model.sc
-        self.Gf = np.ascontiguousarray(Gs[:, self.idx])
+        Gs = model.Gs
+        self.Gf = Gs if self.idx.size == 5 else np.ascontiguousarray(Gs[:, self.idx])
         fixed = np.flatnonzero(~free)
-        self.b = model.b + Gs[:, fixed] @ (u0[fixed] * model.sc[fixed])
+        self.b = model.b + Gs[:, fixed] @ (u0[fixed] * model.sc[fixed]) if fixed.size \
+            else model.b
         self.F = (F_app / model.sc)[self.idx]
         self.c = model.c
 
