@@ -158,8 +158,9 @@ class RollerBearing:
 
     Notes
     -----
-    The load ratings (ISO 281 C_r, ISO 76 C_0r) of roller bearings are computed by
-    :mod:`ballrace.analytic.roller` rating functions, not by methods of this class.
+    The load ratings (ISO 281 C_r, ISO 76 C_0r) are not methods of this class yet: they
+    come from the roller rating functions of this package (``roller.ratings``) and will be
+    wired as ``dynamic_rating()`` / ``static_rating()`` when those exist.
 
     Examples
     --------

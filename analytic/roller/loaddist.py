@@ -228,7 +228,7 @@ def _newton(model, F_app, u0, free, rtol, max_iter):
     load_scale = float(np.abs(F_app / sc).max())
     best = (math.inf, v.copy())
     prev = math.inf
-    Z, n_s = model.Z, model.n_s
+    n_s = model.n_s
     cap = max(_FLOOR_CAP, 100 * rtol)
     st = case.state(v)
     for it in range(max_iter + 1):
