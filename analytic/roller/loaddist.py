@@ -131,17 +131,6 @@ def _model(bearing, azimuth_offset, clearance):
     return model
 
 
-def _forces(model: _Model, u: np.ndarray, tangent: bool = True):
-    """Approaches (Z n_s,), slice loads, ring forces (5,) and tangent (5, 5) at u."""
-    d = model.G @ u + model.b
-    dp = np.maximum(d, 0.0)
-    r = dp ** (1.0 / 9.0)
-    q = model.c * dp * r                                          # c delta^(10/9)
-    F = q @ model.G
-    J = (model.G.T * (_N * model.c * r)) @ model.G if tangent else None
-    return d, q, F, J
-
-
 # =========================================================================== Newton
 class _Case:
     """One load case in scaled coordinates v = u * sc on its free DOFs (the imposed ones
@@ -221,7 +210,8 @@ def _step(case: _Case, v, st, err, scale):
 
 
 def _newton(model, F_app, u0, free, rtol, max_iter):
-    """Equilibrium of one load case: (u, iterations)."""
+    """Equilibrium of one load case: (u, iterations, (approaches, loaded slices, their
+    delta^(1/9), their loads))."""
     case = _Case(model, F_app, u0, free)
     sc = model.sc
     v = (u0 * sc)[case.idx]
@@ -239,7 +229,7 @@ def _newton(model, F_app, u0, free, rtol, max_iter):
         if err < best[0]:
             best = (err, v.copy())
         if err <= rtol or (err <= cap and err > 0.5 * prev):
-            return _full(u0, case.idx, v, sc), it       # converged, or at round-off level
+            return _full(u0, case.idx, v, sc), it, st[:4]   # converged, or at round-off level
         if it == max_iter:
             break
         if float(np.abs(v).max(initial=0.0)) > model.D:
@@ -526,44 +516,11 @@ def solve(bearing: RollerBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *,
         shape = L.shape[:-1]
         L, Dsp = L.reshape(-1, 5).astype(float), Dsp.reshape(-1, 5).copy()
     imposed = Dsp == Dsp
-    if np.any(imposed & (L != 0)):
-        k = int(np.argwhere(imposed & (L != 0))[0][1])
-        raise ValueError(f"the load on DOF {DOF[k]!r} must be 0 when its displacement is "
-                         "imposed (the reaction is returned in result.loads)")
     if not bearing.tapered:
-        if np.any(L[:, 0] != 0):
-            raise ValueError(f"Fa must be 0 for a cylindrical roller bearing: its locating "
-                             f"flanges (NJ, NUP, NF designs), which carry axial load, are "
-                             f"not modelled; got Fa={float(L[np.argmax(L[:, 0] != 0), 0])!r}")
         imposed[:, 0] = True
-        Dsp[:, 0] = np.where(imposed[:, 0] & (Dsp[:, 0] == Dsp[:, 0]), Dsp[:, 0], 0.0)
-    else:
-        bad = ~imposed[:, 0] & (L[:, 0] <= 0) & np.any(L[:, 1:] != 0, axis=1)
-        bad |= ~imposed[:, 0] & (L[:, 0] < 0)
-        if np.any(bad):
-            i = int(np.argmax(bad))
-            raise ValueError(f"Fa must be > 0 [N] for a single tapered roller bearing under "
-                             f"load (it presses the cone into the cup; a radial load alone "
-                             f"induces an axial force of about 1.26 F_r tan(alpha) that must "
-                             f"be held); got Fa={L[i, 0]!r} with loads {L[i].tolist()} - "
-                             "or impose the axial displacement (displacements)")
-        # with x free every roller load sum Q_j = Fa / sin(a): the radial load and the
-        # moments the rollers can balance are bounded by it
-        a = bearing.contact_angle
-        arm = 0.5 * bearing.pitch_diameter * math.sin(a) + 0.5 * bearing.roller_length
-        free_x = ~imposed[:, 0]
-        Qsum = np.where(free_x, L[:, 0], np.inf) / math.sin(a)
-        Fr = np.hypot(L[:, 1], L[:, 2]) * ~imposed[:, 1]
-        M = np.hypot(np.where(imposed[:, 3], 0.0, L[:, 3]), np.where(imposed[:, 4], 0.0, L[:, 4]))
-        bad = free_x & ((Fr > Qsum * math.cos(a)) | (M > Qsum * arm))
-        if np.any(bad):
-            i = int(np.argmax(bad))
-            raise ValueError(
-                f"the loads {L[i].tolist()} [N, N m] have no equilibrium in a single tapered "
-                f"roller bearing: with Fa = {L[i, 0]:g} N its rollers carry sum Q = Fa/sin(a)"
-                f" = {Qsum[i]:.4g} N, at most F_r = Fa/tan(a) = {Qsum[i] * math.cos(a):.4g} N"
-                f" radially and {Qsum[i] * arm:.4g} N m of moment (arm d_m sin(a)/2 + L_we/2)"
-                "; increase Fa or impose the displacements a shaft holds")
+        Dsp[:, 0] = np.where(Dsp[:, 0] == Dsp[:, 0], Dsp[:, 0], 0.0)
+    for li, im in zip(L.tolist(), imposed.tolist()):
+        _check_case(bearing, li, im)
     Pd = bearing.diametral_clearance if clearance is None else float(
         check_range(clearance, "clearance", -0.1 * bearing.roller_diameter,
                     0.1 * bearing.roller_diameter, unit="m"))
@@ -580,7 +537,7 @@ def solve(bearing: RollerBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *,
                          f"(translations) and +-2 D_we/d_m = {lim[3]:g} rad (tilts)")
     cap = model.Z * model.n_s * model.c * (MAX_APPROACH_RATIO * model.D) ** _N
     Fm = np.abs(L / model.sc).max(-1)
-    if np.any(Fm > cap):
+    if not Fm.max() <= cap:
         i = int(np.argmax(Fm))
         raise ValueError(f"the loads {L[i].tolist()} [N, N m] are beyond the load-deflection "
                          f"range of the bearing: {model.Z} rollers carry at most {cap:.4g} N "
@@ -595,22 +552,60 @@ def solve(bearing: RollerBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *,
     N = L.shape[0]
     F_app = np.where(imposed, 0.0, L)
     out_u = np.empty((N, 5))
-    out_F = np.empty((N, 5))
     out_J = np.empty((N, 5, 5))
-    out_q = np.empty((N, model.Z * model.n_s))
+    out_q = np.zeros((N, model.Z * model.n_s))
     out_d = np.empty((N, model.Z * model.n_s))
     iters = 0
+    G = model.G
     for i in range(N):
-        u, it = _newton(model, F_app[i], u0[i], ~imposed[i], rtol, max_iter)
-        d, q, F, J = _forces(model, u)
-        out_u[i], out_F[i], out_J[i], out_q[i], out_d[i] = u, F, J, q, d
+        u, it, (d, on, r, q) = _newton(model, F_app[i], u0[i], ~imposed[i], rtol, max_iter)
+        Ga = G[on]
+        out_u[i], out_d[i] = u, d
+        out_q[i, on] = q
+        out_J[i] = (Ga.T * (_N * model.c * r)) @ Ga          # the exact tangent, all DOFs
         iters = max(iters, it)
     log.debug("roller load distribution: %d cases, at most %d Newton iterations", N, iters)
-    return _checked(bearing, model, out_u, out_F, out_J, out_q, out_d, F_app, imposed,
-                    shape, Pd, iters, rtol)
+    return _checked(bearing, model, out_u, out_J, out_q, out_d, F_app, imposed, shape, Pd,
+                    iters, rtol)
 
 
-def _checked(bearing, model, u, F, J, q, d, F_app, imposed, shape, Pd, iters, rtol):
+def _check_case(bearing, L, imposed):
+    """ValueError for the loads of one case (lists of 5) the bearing cannot take."""
+    for k in range(5):
+        if imposed[k] and L[k] != 0 and (k or bearing.tapered):
+            raise ValueError(f"the load on DOF {DOF[k]!r} must be 0 when its displacement is "
+                             "imposed (the reaction is returned in result.loads)")
+    if not bearing.tapered:
+        if L[0] != 0:
+            raise ValueError(f"Fa must be 0 for a cylindrical roller bearing: its locating "
+                             f"flanges (NJ, NUP, NF designs), which carry axial load, are "
+                             f"not modelled; got Fa={L[0]!r}")
+        return
+    if imposed[0]:
+        return
+    if L[0] < 0 or (L[0] == 0 and any(L[1:])):
+        raise ValueError(f"Fa must be > 0 [N] for a single tapered roller bearing under "
+                         f"load (it presses the cone into the cup; a radial load alone "
+                         f"induces an axial force of about 1.26 F_r tan(alpha) that must "
+                         f"be held); got Fa={L[0]!r} with loads {L} - or impose the axial "
+                         "displacement (displacements)")
+    # with x free the roller loads sum to Fa / sin(a): the radial load and the moments the
+    # rollers can balance are bounded by it
+    a = bearing.contact_angle
+    arm = 0.5 * bearing.pitch_diameter * math.sin(a) + 0.5 * bearing.roller_length
+    Qsum = L[0] / math.sin(a)
+    Fr = math.hypot(0.0 if imposed[1] else L[1], 0.0 if imposed[2] else L[2])
+    M = math.hypot(0.0 if imposed[3] else L[3], 0.0 if imposed[4] else L[4])
+    if Fr > Qsum * math.cos(a) or M > Qsum * arm:
+        raise ValueError(
+            f"the loads {L} [N, N m] have no equilibrium in a single tapered roller bearing: "
+            f"with Fa = {L[0]:g} N its rollers carry sum Q = Fa/sin(a) = {Qsum:.4g} N, at "
+            f"most F_r = Fa/tan(a) = {Qsum * math.cos(a):.4g} N radially and "
+            f"{Qsum * arm:.4g} N m of moment (arm d_m sin(a)/2 + L_we/2); increase Fa or "
+            "impose the displacements a shaft holds")
+
+
+def _checked(bearing, model, u, J, q, d, F_app, imposed, shape, Pd, iters, rtol):
     """The result, after checking that it balances the loads and lies in the model's range
     (ConvergenceError / ValueError otherwise: never an unbalanced result)."""
     Z, n_s = model.Z, model.n_s
@@ -623,11 +618,11 @@ def _checked(bearing, model, u, F, J, q, d, F_app, imposed, shape, Pd, iters, rt
     scale = np.maximum(np.abs(F_app / sc).max(-1), Q.max(-1))
     rel = np.where(scale > 0, res / np.where(scale > 0, scale, 1.0), res)
     tol = max(_FLOOR_CAP, 100.0 * rtol)
-    finite = np.all(np.isfinite(u), -1) & np.all(np.isfinite(Fchk), -1) & \
-        np.all(np.isfinite(J.reshape(len(u), -1)), -1)
-    bad = ~finite | ~(rel <= tol)
-    if np.any(bad):
-        i = int(np.flatnonzero(bad)[0])
+    if not (np.isfinite(u).all() and np.isfinite(Fchk).all() and np.isfinite(J).all()
+            and rel.max() <= tol):
+        finite = np.isfinite(u).all(-1) & np.isfinite(Fchk).all(-1) & \
+            np.isfinite(J.reshape(len(u), -1)).all(-1)
+        i = int(np.flatnonzero(~finite | ~(rel <= tol))[0])
         raise ConvergenceError(
             f"roller load distribution did not reach equilibrium: relative residual "
             f"{rel[i]:.3e} (> {tol:g}) after {iters} iterations in load case {i}; loads "
