@@ -59,7 +59,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-
 from ...errors import ConvergenceError
 from .._checks import as_array, check_integer, check_range
 from . import lamina
@@ -73,7 +72,7 @@ log = logging.getLogger(__name__)
 DOF = ("x", "y", "z", "theta_y", "theta_z")
 
 #: Load-deflection range of the model: a slice approach up to this fraction of D_we
-#: (several times the approach at the static capacity, some 0.005 D_we).
+#: (about three times the approach at the static capacity, some 0.007 D_we).
 MAX_APPROACH_RATIO = 0.02
 
 #: Largest relative residual any result may have (with rtol above 1e-11: 100 rtol).
@@ -96,7 +95,6 @@ class _Model:
     sc: np.ndarray         # (5,) DOF scales (1, 1, 1, d_m/2, d_m/2)
     D: float
     psi: np.ndarray        # (Z,)
-    axial: bool            # the axial DOF carries load (tapered)
 
     @staticmethod
     def of(bearing: RollerBearing, azimuth_offset: float, clearance: float) -> "_Model":
@@ -124,8 +122,7 @@ def _model(bearing, azimuth_offset, clearance):
     sc = np.array([1.0, 1.0, 1.0, R, R])
     model = _Model(G=G, Gs=G / sc, b=np.ascontiguousarray(b).ravel(),
                    c=bearing.lamina_stiffness / n_s, Z=Z, n_s=n_s,
-                   sc=sc, D=bearing.roller_diameter, psi=psi,
-                   axial=bearing.tapered)
+                   sc=sc, D=bearing.roller_diameter, psi=psi)
     for v in (model.G, model.Gs, model.b, model.sc, model.psi):
         v.setflags(write=False)
     return model
