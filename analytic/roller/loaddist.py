@@ -152,10 +152,12 @@ class _Case:
         sum (9/19) c <delta>^(19/9) - F . v is convex in v; its gradient is the residual."""
         d = self.Gf @ v + self.b
         on = np.flatnonzero(d > 0.0)
-        dp = d[on]
+        if on.size == d.size:                        # every slice loaded (thrust)
+            dp, Ga = d, self.Gf
+        else:
+            dp, Ga = d[on], self.Gf[on]
         r = dp ** (1.0 / 9.0)
         q = self.c * dp * r
-        Ga = self.Gf[on]
         phi = (9.0 / 19.0) * float(q @ dp) - float(self.F @ v)
         return d, on, r, q, Ga, q @ Ga - self.F, phi
 
@@ -171,8 +173,9 @@ def _step(case: _Case, v, st, err, scale):
     radius of 0.01 D_we and, away from the solution (relative residual above 1e-6), an
     Armijo backtracking line search on the convex potential.  Before any slice is in
     contact, the tangent is that of every slice at the approach a uniformly loaded roller
-    set would have, and the step is lengthened by the distance to the first contact along
-    it (a start of the right size across a clearance).
+    set would have, halved (about half the rollers carry a radial load), and the step is
+    lengthened by the distance to the first contact along it (a start of the right size
+    across a clearance).
     """
     d, on, r, _, Ga, R, phi0 = st
     n = v.size
@@ -180,7 +183,7 @@ def _step(case: _Case, v, st, err, scale):
     if seed:                                         # nothing in contact yet
         Qm = scale / case.model.Z
         Ga = case.Gf
-        r = np.full(d.size, (Qm / (case.c * case.model.n_s)) ** 0.1)
+        r = np.full(d.size, 0.5 * (Qm / (case.c * case.model.n_s)) ** 0.1)
     A = case.tangent(r, Ga)
     mu = max(1e-12 * abs(float(np.trace(A))) / n, 1e-6 * scale / case.model.D)
     A.flat[:: n + 1] += mu
