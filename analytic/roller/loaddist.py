@@ -179,8 +179,8 @@ def _step(case: _Case, v, st, err, scale):
     """
     d, on, r, _, Ga, R, phi0 = st
     n = v.size
-    seed = not on.size
-    if seed:                                         # nothing in contact yet
+    first = not on.size
+    if first:                                         # nothing in contact yet
         Qm = scale / case.model.Z
         Ga = case.Gf
         r = np.full(d.size, 0.5 * (Qm / (case.c * case.model.n_s)) ** 0.1)
@@ -188,13 +188,13 @@ def _step(case: _Case, v, st, err, scale):
     mu = max(1e-12 * abs(float(np.trace(A))) / n, 1e-6 * scale / case.model.D)
     A.flat[:: n + 1] += mu
     dv = -np.linalg.solve(A, R)
-    if seed:                                         # first close the gap along dv
+    if first:                                         # first close the gap along dv
         s = case.Gf @ dv
         pos = s > 0
         if pos.any():
             dv *= 1.0 + float(np.min(-d[pos] / s[pos]))
     size = float(np.abs(dv).max())
-    lim = (1.0 if seed else 0.01) * case.model.D
+    lim = (1.0 if first else 0.01) * case.model.D
     if size > lim:
         dv *= lim / size
     t = 1.0
