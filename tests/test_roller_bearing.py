@@ -177,6 +177,39 @@ def test_sjovall_combined_load_on_a_tapered_bearing_at_half_load_zone():
     assert Fa / (Fr * math.tan(ALPHA)) == pytest.approx(Ia / Ir, rel=0.01)
 
 
+@pytest.mark.parametrize("Pd", [30e-6, 80e-6])
+def test_radial_clearance_by_a_one_dimensional_root(Pd):
+    # straight rollers, radial load: delta_j = delta_r cos psi_j - P_d/2; delta_r solves
+    # F_r = sum c_L <delta_r cos psi_j - P_d/2>^(10/9) cos psi_j (Harris & Kotzalas 2007,
+    # the radial load zone with clearance), found here by bisection
+    from scipy.optimize import brentq
+    b = cylindrical(profile="straight", diametral_clearance=Pd)
+    psi = 2 * np.pi * np.arange(14) / 14
+    cL = b.lamina_stiffness
+
+    def Fr(dr):
+        d = np.maximum(dr * np.cos(psi) - 0.5 * Pd, 0.0)
+        return np.sum(cL * d ** N_LINE * np.cos(psi))
+
+    dr = brentq(lambda x: Fr(x) - 6940.0, 0.5 * Pd, 0.5 * Pd + 1e-3, xtol=1e-18, rtol=1e-15)
+    r = b.solve(Fy=6940.0)
+    assert r.radial_deflection == pytest.approx(dr, rel=1e-9)
+    Q = cL * np.maximum(dr * np.cos(psi) - 0.5 * Pd, 0.0) ** N_LINE
+    np.testing.assert_allclose(r.roller_loads, Q, rtol=1e-8, atol=1e-8 * Q.max())
+    # the clearance argument of solve overrides the bearing's
+    r2 = cylindrical(profile="straight").solve(Fy=6940.0, clearance=Pd)
+    np.testing.assert_allclose(r2.roller_loads, r.roller_loads, rtol=1e-12)
+
+
+def test_palmgren_stiffness_changes_deflection_not_the_zero_clearance_distribution():
+    iso = cylindrical(profile="straight").solve(Fy=6940.0)
+    pal = cylindrical(profile="straight", stiffness="palmgren").solve(Fy=6940.0)
+    np.testing.assert_allclose(pal.roller_loads, iso.roller_loads, rtol=1e-9, atol=1e-9)
+    ratio = lamina.PALMGREN_CONSTANT / lamina.ISO_LAMINA_CONSTANT
+    assert pal.radial_deflection / iso.radial_deflection == pytest.approx(ratio ** -0.9,
+                                                                          rel=1e-9)
+
+
 @pytest.mark.parametrize("profile", ["straight", "iso"])
 def test_pure_thrust_on_a_tapered_bearing_loads_every_roller_alike(profile):
     b = tapered(profile=profile, diametral_clearance=20e-6)
