@@ -269,6 +269,35 @@ def shaft_system():
                "one BallBearing.solve at the larger reaction", "<= 20 ms", t <= 20e-3)
 
 
+def _roller_row(what, bearing, loads):
+    """A roller-bearing lamina solve against one BallBearing.solve (209, radial + axial)."""
+    ball = _bearing209()
+    t, tb, _ = timeit_pair(lambda: bearing.solve(**loads),
+                           lambda: ball.solve(Fa=1000.0, Fy=3000.0))
+    return Row(what, t, tb, "one BallBearing.solve (209)", "<= 1 ms", t <= 1e-3)
+
+
+@row
+def roller_cylindrical():
+    """The lamina load distribution of a cylindrical roller bearing (14 rollers 13 x 11.8
+    mm, 31 slices, ISO profile, 45 um clearance) under radial load with an imposed tilt."""
+    from ballrace.analytic.roller import RollerBearing
+    b = RollerBearing(13e-3, 11.8e-3, 14, 70.65e-3, diametral_clearance=45e-6)
+    return _roller_row("RollerBearing.solve, cylindrical (14 x 31 slices, tilt)", b,
+                       dict(Fy=6940.0, displacements=[None, None, None, 0.0, 1e-3]))
+
+
+@row
+def roller_tapered():
+    """The same for a tapered roller bearing (17 rollers, 15 deg cup, 31 slices), combined
+    radial, axial and moment load, all five DOFs free."""
+    from ballrace.analytic.roller import RollerBearing
+    b = RollerBearing(10e-3, 15e-3, 17, 60e-3, kind="tapered", contact_angle=np.radians(15),
+                      diametral_clearance=20e-6)
+    return _roller_row("RollerBearing.solve, tapered (17 x 31 slices, 5 DOF)", b,
+                       dict(Fa=5000.0, Fy=3000.0, My=20.0))
+
+
 # --------------------------------------------------------------------------- table
 def _fmt_time(t):
     if t is None or not np.isfinite(t):

@@ -2,6 +2,9 @@
 
 * :mod:`~ballrace.analytic.roller.profile` — roller profiles (straight, ISO/TS 16281's
   default, circular crown, Lundberg's and Johns–Gohar's logarithmic crowns, tables).
+* :mod:`~ballrace.analytic.roller.bearing` — :class:`RollerBearing`, cylindrical and tapered.
+* :mod:`~ballrace.analytic.roller.lamina` — the sliced contact of ISO/TS 16281.
+* :mod:`~ballrace.analytic.roller.loaddist` — the five-DOF load distribution (lamina model).
 * :mod:`~ballrace.analytic.roller.ratings` — ISO 281 / ISO 76 ratings, X/Y, a_ISO and
   rating life of roller bearings.
 * :mod:`~ballrace.analytic.roller.life` — ISO/TS 16281 reference rating life from slice
@@ -10,8 +13,12 @@
 from . import profile
 from .profile import (ISO, Crowned, JohnsGohar, Lundberg, Profile, ProfileContext, Straight,
                       Table, as_profile)
+from . import bearing, lamina, loaddist
+from .bearing import RollerBearing
+from .loaddist import RollerLoadDistribution
 from . import life, ratings
 
 __all__ = ["profile", "Profile", "ProfileContext", "Straight", "ISO", "Crowned", "Lundberg",
-           "JohnsGohar", "Table", "as_profile"]
-__all__ += ["ratings", "life"]
+           "JohnsGohar", "Table", "as_profile",
+           "bearing", "lamina", "loaddist", "RollerBearing", "RollerLoadDistribution",
+           "ratings", "life"]
