@@ -2,6 +2,8 @@
 
 * :mod:`~ballrace.analytic.roller.profile` — roller profiles (straight, ISO/TS 16281's
   default, circular crown, Lundberg's and Johns–Gohar's logarithmic crowns, tables).
+* :mod:`~ballrace.analytic.roller.contact` — the finite line contact of a profiled roller on
+  the elastic half-space (:func:`line_contact`).
 """
 from . import profile
 from .profile import (ISO, Crowned, JohnsGohar, Lundberg, Profile, ProfileContext, Straight,
@@ -9,3 +11,8 @@ from .profile import (ISO, Crowned, JohnsGohar, Lundberg, Profile, ProfileContex
 
 __all__ = ["profile", "Profile", "ProfileContext", "Straight", "ISO", "Crowned", "Lundberg",
            "JohnsGohar", "Table", "as_profile"]
+
+from . import contact
+from .contact import LineContactResult, line_contact
+
+__all__ += ["contact", "LineContactResult", "line_contact"]
