@@ -137,7 +137,7 @@ from ... import errors
 from .. import plausible
 from .._checks import as_array, check_instance, check_nonnegative, check_positive
 from ..materials import Material, effective_modulus
-from .profile import Profile, ProfileContext, as_profile
+from .profile import JohnsGohar, Lundberg, Profile, ProfileContext, as_profile
 
 __all__ = ["LineContactResult", "line_contact", "strip_function"]
 
@@ -636,6 +636,10 @@ def line_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="lun
                     "- were degrees or milliradians given?")
     Ep = float(effective_modulus(mat1, mat2))
     prof = as_profile(profile)
+    if Q == 0.0 and isinstance(prof, (Lundberg, JohnsGohar)) and prof.design_load is None:
+        raise ValueError(f"Q must be > 0 [N] for the {prof.name} profile given by name (it is "
+                         f"designed for Q); got 0.0 (give {type(prof).__name__}(design_load=...) "
+                         "to load such a roller with nothing)")
     ctx = ProfileContext(length=L, diameter=2.0 * R1, E_prime=Ep, R=R,
                          load=Q if Q > 0 else math.nan)
     w = L / n
@@ -652,7 +656,8 @@ def line_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="lun
     if Q > 0 and k < FEW_SLICES:
         errors.warn(f"the contact covers only {k} of n_slices = {n} slices "
                     f"({k * w:.3g} of {L:.3g} m): its pressures are poorly resolved; "
-                    "raise n_slices")
+                    + ("raise n_slices" if psi == 0.0 else
+                       f"raise n_slices (or check tilt = {psi:g} rad)"))
     u, _ = strips.displacement(q, np.flatnonzero(q > 0)) if Q > 0 else (np.zeros(n), None)
     gap = np.where(q > 0, 0.0, np.clip(u - delta + h, 0.0, None))
     b = strips.half_width(q)
