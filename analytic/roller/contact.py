@@ -381,8 +381,9 @@ class _Strips:
     def half_width(self, q):
         return np.sqrt(self.kb * np.clip(q, 0.0, None))
 
-    def displacement(self, q, cols):
-        """u (n,) under the loads q (zero outside ``cols``) and du/dq[:, cols]."""
+    def displacement(self, q, cols, matrix=False):
+        """u (n,) under the loads q (zero outside ``cols``) and du/dq[:, cols]; with
+        ``matrix``, the influence matrix du/dq at frozen half-widths instead of u."""
         lb = 0.5 * np.log(self.kb * q[cols])                       # ln b_j
         g, e = _strip_log(self.lt[None, :] - lb[:, None])          # [j, k]
         gf = np.concatenate([-g[:, ::-1], g], axis=1)             # odd extension
@@ -390,10 +391,47 @@ class _Strips:
         jj = np.arange(cols.size)[None, :]
         ih, il = self.i_hi[:, cols], self.i_lo[:, cols]
         D = gf[jj, ih] - gf[jj, il]                                # [i, j]
+        if matrix:
+            return self.c * D, None
         u = self.c * (D @ q[cols])
         # d/dq_j of q_j D_ij(b_j), b_j^2 = kb q_j: D - (1/2) [s G'(s)] between the edges
         J = self.c * (D - 0.5 * (ef[jj, ih] - ef[jj, il]))
         return u, J
+
+
+def _linear_start(strips, h, Q):
+    """Loads and approach with every strip's half-width frozen at the 2-D Hertz value of
+    the mean load per length (a linear complementarity problem, by active sets)."""
+    n, w = strips.n, strips.w
+    L = n * w
+    A0, _ = strips.displacement(np.full(n, Q / L), np.arange(n), matrix=True)
+    active = np.ones(n, bool)
+    q = np.zeros(n)
+    delta = float(np.min(h))
+    for _ in range(2 * n):
+        cols = np.flatnonzero(active)
+        m = cols.size
+        A = np.empty((m + 1, m + 1))
+        A[:m, :m] = A0[np.ix_(cols, cols)]
+        A[:m, m] = -1.0
+        A[m, :m] = w
+        A[m, m] = 0.0
+        sol = np.linalg.solve(A, np.append(-h[cols], Q))
+        qa, delta = sol[:m], float(sol[m])
+        if np.any(qa <= 0) and m > 1:
+            keep = qa > 0
+            if not keep.any():
+                keep[np.argmax(qa)] = True
+            active[cols[~keep]] = False
+            continue
+        q = np.zeros(n)
+        q[cols] = qa
+        gap = A0[:, cols] @ qa - delta + h
+        pen = (~active) & (gap < 0)
+        if not pen.any():
+            break
+        active |= pen
+    return np.where(q > 0, q, 0.0), delta
 
 
 def _solve_load(strips, h, Q, q0=None):
@@ -402,15 +440,11 @@ def _solve_load(strips, h, Q, q0=None):
     L = n * w
     if Q == 0.0:
         return np.zeros(n), float(np.min(h)), 0
-    q = np.full(n, Q / L) if q0 is None else q0.copy()
-    active = q > 0
-    # start: the slices whose unloaded gap lies within the 2-D Hertz approach's reach
     if q0 is None:
-        b0 = math.sqrt(strips.kb * Q / L)
-        reach = strips.c * 0.5 * math.pi * (Q / L) * (math.log(2.0 * L / b0) + 0.5) * 2.0
-        active = h - h.min() <= reach
-        q[:] = np.where(active, Q / (w * active.sum()), 0.0)
-    delta = float(np.min(h))
+        q, delta = _linear_start(strips, h, Q)
+    else:
+        q, delta = q0.copy(), float(np.min(h))
+    active = q > 0
     res = math.inf
     for it in range(1, MAX_ITERATIONS + 1):
         cols = np.flatnonzero(active)
