@@ -14,14 +14,17 @@ roller diameter of ISO's default profile is ``D_we = 2 R1``), body 2 the raceway
 roller is tilted by ``tilt`` about the rolling direction ``y`` — the normal of the axial
 plane that holds the roller axis and the load line::
 
-              tilt > 0: the end at +x goes in
-                                         ___
-        roller      ______________-------   |
-           ________/                        |  (the +x end is lowered)
-          |___ ____________________________/
-              ---------------____
-        ========================================  raceway (z = 0)
-        -x  <------------------ 0 ------------------>  +x
+    tilt psi > 0: the end at +x goes in (the roller's lower line, tilt exaggerated)
+
+      -x end
+        |''--..__
+        |        ''--..__            roller
+        |                ''--..__
+                                 ''--..__                  +x end
+                                         ''--..__            |
+      ============================================''--..__===|====  raceway (z = 0)
+      -x <------------------------ 0 ------------------------> +x
+              (y, the rolling direction, points out of the page)
 
 The gap between the unloaded surfaces at the approach ``delta`` of the roller centre is
 
@@ -59,11 +62,14 @@ the roller through the half-space: the normal displacement of the centre line of
 + x_i tan psi`` where ``q_i > 0``, ``u_i >= ...`` where ``q_i = 0``, and ``w sum q_k = Q``.
 The nonlinear system (``b_k`` depends on ``q_k``) is solved by Newton's method with the
 exact Jacobian on an active set (slices out of contact carry zero load, none carries a
-negative one) to ``1e-12`` of the approach; the load balance holds to rounding.
+negative one) to ``1e-12`` of the approach, started from the linear problem with every
+half-width frozen at the 2-D Hertz value of the mean load (an active-set solution of the
+linear complementarity problem); the load balance holds to rounding.
 
 Why strips and not a 2-D grid: the quasi-2-D strip method (Reusner 1977; Teutsch & Sauer
-2004) has one unknown per slice, so 41 slices solve in about a millisecond — the contact
-runs per roller inside a bearing calculation — while a full grid in both directions
+2004) has one unknown per slice, so 41 slices solve in about 3 ms of CPU time (four
+Newton steps; ``benchmarks/bench_roller_contact.py``) — the contact runs per roller inside
+a bearing calculation — while a full grid in both directions
 (de Mul, Kalker & Fredriksson 1986) needs some thousand unknowns for the same axial
 resolution.  The price: across the rolling direction every strip is Hertzian, which is
 exact in the middle of a long contact and an approximation within about one half-width
@@ -83,22 +89,33 @@ Lundberg's (1939) ``delta = (4 q / (pi E')) [ln(L / 2b) + 1.8863]`` (``1.8863 = 
 
 Slice count and the straight roller
 -----------------------------------
-A crowned roller converges with the slice count (the peak pressure of the ISO profile on a
-12 x 12 mm roller changes by less than 0.1 % from 41 to 81 slices).  A straight roller on
-a longer raceway does not: its end pressure is singular on a half-space (a sharp edge),
-and the end slice's peak grows with the slice count as the slice narrows — measured for a
-12 x 12 mm roller, R = 5 mm, 5 kN (2-D Hertz 1.46 GPa): 2.24, 2.49, 2.77 and 3.06 GPa at
-21, 41, 81 and 161 slices (about 0.28 GPa per doubling, i.e. logarithmic in the slice
-width, while the slice next to it settles).  Its end value is a property of the slicing,
-not of the roller: read it as "an edge peak", not as a pressure.
+A crowned roller converges with the slice count: for the 12 x 12 mm roller of the tests
+(R = 5 mm, 5 kN, steel; 2-D Hertz 1.707 GPa) the peak pressure of ISO/TS 16281's default
+profile is 1.8816, 1.8791, 1.8795 and 1.8796 GPa at 21, 41, 81 and 161 slices (41 -> 81:
+0.02 %), that of a circular crown (4 mm flat, 0.5 m crown radius) 2.0237, 2.0244, 2.0237,
+2.0241 GPa.  A straight roller on a longer raceway does not converge: its end pressure is
+singular on a half-space (a sharp edge), and the end slice's peak grows as the slice
+narrows — 2.04, 2.30, 2.75 and 3.51 GPa at 21, 41, 81 and 161 slices — while the middle
+settles (1.628, 1.623, 1.618, 1.614 GPa).  The end value of a straight (or edge-loaded)
+roller is a property of the slicing, not of the roller: read it as "an edge peak", not as
+a pressure.  The same holds for a crowned roller loaded beyond its :attr:`edge_load
+<LineContactResult.edge_load>`.
+
+The edge load itself is the load at which the end slices' *centres* touch.  For a circular
+crown it converges as the slices narrow (6535, 6905, 7100 N at 41, 81, 161 slices for the
+crown above: linearly in the slice width); for the logarithmic profiles (ISO, Lundberg,
+Johns–Gohar), whose drop grows without bound towards the end, it keeps growing with the
+slice count (ISO: 6705, 10142, 15678 N) — there the contact never quite reaches the end.
 
 Sources consulted for published edge pressures
----------------------------------------------
+----------------------------------------------
 Johns & Gohar (1981), Hartnett (1979) and de Mul, Kalker & Fredriksson (1986) show edge
-pressures of straight and crowned rollers in figures; their full inputs (and the numbers
-read from the figures) were not available to check here, so no test compares against
-them.  The tests compare against closed forms instead (Lundberg's uniform pressure and
-approach, 2-D Hertz in the middle of a long roller).
+pressures of straight and crowned rollers in figures.  The stored reference pages and
+documentation searched here held none of the three papers, only the abstract of Fujiwara &
+Kawase (NTN Technical Review 75, 2007), whose examples are computed by another numerical
+method; without the full inputs and tabulated results no test compares against them.  The
+tests compare against closed forms instead: Lundberg's uniform pressure and approach, and
+2-D Hertz in the middle of a long roller.
 
 References
 ----------
