@@ -73,7 +73,12 @@ a bearing calculation — while a full grid in both directions
 (de Mul, Kalker & Fredriksson 1986) needs some thousand unknowns for the same axial
 resolution.  The price: across the rolling direction every strip is Hertzian, which is
 exact in the middle of a long contact and an approximation within about one half-width
-``b`` of a roller end or a sharp bend of the profile.
+``b`` of a roller end or a sharp bend of the profile.  Checked against a grid of uniformly
+loaded rectangles in both directions (Love 1929; the form of de Mul et al., no shape
+assumed across; ``tests/test_roller_contact.py``), 21 slices x 40 cells, 5 kN on the
+12 x 12 mm roller: the largest pressure agrees within 0.01 % (ISO profile) and 1.8 %
+(straight roller, its edge slice), each slice's peak within 1 % and 1.8 % at the ends and
+0.6 % elsewhere, the approach within 0.1 %.
 
 The approach
 ------------
