@@ -341,3 +341,71 @@ def test_strips_against_a_grid_in_both_directions(prof, max_tol):
     assert approach == pytest.approx(c.approach, rel=2e-3)
     assert np.max(np.abs(loads[on] / c.slice_loads[on] - 1)) < 0.025
     assert loads.sum() == pytest.approx(Q, rel=1e-9)
+
+
+# --------------------------------------------------------------------------- stresses
+def test_stress_in_the_middle_of_a_long_uniform_roller_is_mcewens():
+    # Lundberg's profile at its design load on a 48 mm roller (L/b = 310): uniform p0; the
+    # middle is McEwen's plane-strain line contact (subsurface.line_stress; axial stress
+    # nu (sigma_y + sigma_z)).  Measured: sigma_z 3e-5 p0 (the integration), the horizontal
+    # stresses 1.3e-3 p0 (the roller's finite length: 5.1e-3 p0 at L = 12 mm, falling as
+    # b/L), von Mises 7e-4 p0; tolerances 2e-4 and 2.5e-3 p0.  The maxima: 2-D Hertz
+    # (Johnson 1985 §4.2, nu = 0.3) 0.5575 p0 at 0.704 b (von Mises), 0.3003 p0 at
+    # 0.786 b (Tresca); within 0.3 % in value and 2 % in depth (a parabola through a
+    # grid 0.1 b apart).
+    from ballrace.analytic import subsurface
+    c = roller.line_contact(20000.0, R1, R2, 0.048, ST, ST, profile="lundberg")
+    s = roller.contact.subsurface_stress(c, nu=0.3)
+    i = c.n_slices // 2
+    lc = hertz.line_contact(c.load_per_length[i], R1, R2, ST, ST)
+    ref = subsurface.line_stress(lc, 0.0, s.depth, nu=0.3)
+    p0 = float(lc.p_max)
+    assert np.max(np.abs(s.stress.szz[i] - ref.szz)) < 2e-4 * p0
+    assert np.max(np.abs(s.stress.syy[i] - ref.sxx)) < 2.5e-3 * p0     # rolling direction
+    assert np.max(np.abs(s.stress.sxx[i] - ref.syy)) < 2.5e-3 * p0     # along the axis
+    assert np.max(np.abs(s.von_mises[i] - ref.von_mises)) < 2.5e-3 * p0
+    v, x, z = s.centre()
+    assert x == 0.0
+    assert v == pytest.approx(0.5575 * p0, rel=3e-3)
+    assert z == pytest.approx(0.704 * float(lc.b), rel=2e-2)
+    t, _, zt = s.centre("tresca")
+    assert t == pytest.approx(0.3003 * p0, rel=3e-3)
+    assert zt == pytest.approx(0.786 * float(lc.b), rel=2e-2)
+
+
+def test_stress_peaks_at_the_edge_of_a_straight_roller_and_the_centre_of_a_crowned_one():
+    straight = roller.contact.subsurface_stress(contact("straight"))
+    v_edge, x_edge, _ = straight.edge()
+    v_mid, _, _ = straight.centre()
+    assert abs(x_edge) == pytest.approx(0.5 * L - 0.5 * L / 41, rel=1e-12)
+    assert straight.maximum() == straight.edge()
+    assert v_edge > 1.4 * v_mid                    # measured 1.41 GPa against 0.91 GPa
+    crowned = roller.contact.subsurface_stress(contact("iso"))
+    assert crowned.maximum() == crowned.centre()
+    # the ISO crown at 5 kN leaves the end slices unloaded: the edge is the last loaded one
+    assert abs(crowned.edge()[1]) == pytest.approx(0.5 * L - 1.5 * L / 41, rel=1e-12)
+    # symmetric
+    np.testing.assert_allclose(crowned.von_mises_max, crowned.von_mises_max[::-1], rtol=1e-9)
+
+
+def test_stress_follows_the_tilt():
+    s = roller.contact.subsurface_stress(contact("iso", tilt=1e-3))
+    v, x, _ = s.maximum()
+    assert x > 0.3 * L
+    assert v > roller.contact.subsurface_stress(contact("iso")).maximum()[0]
+
+
+def test_stress_bad_input():
+    c = contact("iso")
+    with pytest.raises(ValueError, match="nu"):
+        roller.contact.subsurface_stress(c, nu=0.5)
+    with pytest.raises(ValueError, match="x must lie within the roller"):
+        roller.contact.subsurface_stress(c, x=[0.0, 0.006])
+    with pytest.raises(ValueError, match="depth"):
+        roller.contact.subsurface_stress(c, depth=[1e-4, 2e-4, 4e-4])
+    with pytest.raises(ValueError, match="n_depth"):
+        roller.contact.subsurface_stress(c, n_depth=3)
+    with pytest.raises(TypeError, match="contact"):
+        roller.contact.subsurface_stress("iso")
+    with pytest.raises(ValueError, match="criterion"):
+        roller.contact.subsurface_stress(c, x=[0.0]).maximum("rankine")
