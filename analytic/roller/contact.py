@@ -121,8 +121,9 @@ pressures of straight and crowned rollers in figures.  The stored reference page
 documentation searched here held none of the three papers, only the abstract of Fujiwara &
 Kawase (NTN Technical Review 75, 2007), whose examples are computed by another numerical
 method; without the full inputs and tabulated results no test compares against them.  The
-tests compare against closed forms instead: Lundberg's uniform pressure and approach, and
-2-D Hertz in the middle of a long roller.
+tests compare against closed forms instead — Lundberg's uniform pressure and approach, 2-D
+Hertz and McEwen's stresses in the middle of a long roller — and against an independent
+solution on a grid of rectangles in both directions.
 
 References
 ----------
@@ -130,12 +131,18 @@ References
   Ingenieurwesens 10 (1939) 201–211: the logarithmic profile and the approach.
 * K. L. Johnson, *Contact Mechanics*, Cambridge University Press, 1985, eqs. 3.21, 4.43.
 * H. Reusner, *Druckflächenbelastung und Oberflächenverschiebung im Wälzkontakt von
-  Rotationskörpern*, Dissertation, Universität Karlsruhe, 1977 (the strip method; not read
-  here, cited after Teutsch & Sauer).
-* R. Teutsch and B. Sauer, *An alternative slicing technique to consider pressure
-  concentrations in non-Hertzian line contacts*, J. Tribology 126 (2004) 436–442.
+  Rotationskörpern*, Dissertation, Universität Karlsruhe, 1977; R. Teutsch and B. Sauer,
+  *An alternative slicing technique to consider pressure concentrations in non-Hertzian
+  line contacts*, J. Tribology 126 (2004) 436–442: the strip (slicing) method.  Neither
+  was read here; they are cited for the method, whose form above is derived from
+  Boussinesq's solution directly (the strip function ``G`` and its table are this
+  module's own).
 * J. M. de Mul, J. J. Kalker and B. Fredriksson, *The contact between arbitrarily curved
-  bodies of finite dimensions*, J. Tribology 108 (1986) 140–148.
+  bodies of finite dimensions*, J. Tribology 108 (1986) 140–148 (the grid form; not read
+  here).
+* A. E. H. Love, *The stress produced in a semi-infinite solid by pressure on part of the
+  boundary*, Phil. Trans. R. Soc. A 228 (1929) 377–420 (the uniformly loaded rectangle
+  of the tests' grid).
 * B. C. Carlson, DLMF §19.25 (the elliptic integral in ``G'``).
 
 Examples
