@@ -9,7 +9,8 @@ Workload: a 12 x 12 mm roller on a 60 mm raceway (R = 5 mm), 5 kN, ISO/TS 16281'
 profile, tilted by 0.5 mrad (the contact reaches one end), steel on steel.  The goal: one
 contact of 41 slices in <= 10 ms, asserted on the process's CPU time per call (the wall
 time of a shared machine says more about its other users).  The load at which the contact
-reaches the ends (``edge_load``, computed on first access) is timed separately.
+reaches the ends (``edge_load``, computed on first access) and the subsurface stresses
+(41 positions x 24 depths) are timed separately.
 """
 from __future__ import annotations
 
@@ -56,6 +57,12 @@ def test_line_contact_81_slices(benchmark):
     assert abs(c.slice_loads.sum() - 5000.0) < 1e-9 * 5000.0
 
 
+def test_subsurface_stress_41_slices(benchmark):
+    c = one_contact()
+    s = benchmark(roller.subsurface_stress, c)
+    assert s.maximum()[0] > 0
+
+
 def test_line_contact_41_slices_with_edge_load(benchmark):
     one_contact()
     e = benchmark(with_edge_load)
@@ -65,7 +72,9 @@ def test_line_contact_41_slices_with_edge_load(benchmark):
 if __name__ == "__main__":
     one_contact()
     for name, f in (("41 slices", one_contact), ("81 slices", lambda: one_contact(81)),
-                    ("41 slices + edge load", with_edge_load)):
+                    ("41 slices + edge load", with_edge_load),
+                    ("stresses below 41 slices",
+                     lambda c=one_contact(): roller.subsurface_stress(c))):
         t = min(timeit.repeat(f, number=20, repeat=5)) / 20
         print(f"{name:24s} {t * 1e3:7.2f} ms wall (best of 5), {cpu_per_call(f) * 1e3:7.2f} ms "
               "CPU")
