@@ -197,6 +197,21 @@ def test_edge_load_is_where_the_ends_start_to_touch(prof):
     assert not below.in_contact[0] and not below.in_contact[-1]
 
 
+@pytest.mark.parametrize("prof, tilt", [
+    (rp.Table([-0.006, -0.003, 0, 0.004, 0.006], [3e-6, 0.5e-6, 0, 1e-6, 6e-6]), 0.0),
+    (rp.Table([-0.006, -0.003, 0, 0.004, 0.006], [3e-6, 0.5e-6, 0, 1e-6, 6e-6]), -3e-4),
+    ("straight", 2e-4), ("iso", 5e-4), (rp.Crowned(0.004, 0.5), 1e-3)])
+def test_edge_load_of_asymmetric_and_tilted_contacts(prof, tilt):
+    # the end that touches last decides: just above the edge load every slice carries
+    # load, just below one end does not (the -x end for a positive tilt)
+    e = contact(prof, tilt=tilt).edge_load
+    assert np.all(contact(prof, tilt=tilt, Q=1.001 * e).in_contact)
+    below = contact(prof, tilt=tilt, Q=0.999 * e).in_contact
+    assert below[0] != below[-1]
+    if tilt > 0:
+        assert not below[0]
+
+
 def test_straight_untilted_roller_reaches_its_ends_at_once():
     assert contact("straight").edge_load == 0.0
 
