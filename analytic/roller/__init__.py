@@ -2,6 +2,9 @@
 
 * :mod:`~ballrace.analytic.roller.profile` — roller profiles (straight, ISO/TS 16281's
   default, circular crown, Lundberg's and Johns–Gohar's logarithmic crowns, tables).
+* :mod:`~ballrace.analytic.roller.contact` — the finite line contact of a profiled roller on
+  the elastic half-space (:func:`line_contact`) and the stresses below it
+  (:func:`subsurface_stress`).
 * :mod:`~ballrace.analytic.roller.bearing` — :class:`RollerBearing`, cylindrical and tapered.
 * :mod:`~ballrace.analytic.roller.lamina` — the sliced contact of ISO/TS 16281.
 * :mod:`~ballrace.analytic.roller.loaddist` — the five-DOF load distribution (lamina model).
@@ -13,6 +16,8 @@
 from . import profile
 from .profile import (ISO, Crowned, JohnsGohar, Lundberg, Profile, ProfileContext, Straight,
                       Table, as_profile)
+from . import contact
+from .contact import LineContactResult, RollerStress, line_contact, subsurface_stress
 from . import bearing, lamina, loaddist
 from .bearing import RollerBearing
 from .loaddist import RollerLoadDistribution
@@ -20,5 +25,6 @@ from . import life, ratings
 
 __all__ = ["profile", "Profile", "ProfileContext", "Straight", "ISO", "Crowned", "Lundberg",
            "JohnsGohar", "Table", "as_profile",
+           "contact", "LineContactResult", "line_contact", "RollerStress", "subsurface_stress",
            "bearing", "lamina", "loaddist", "RollerBearing", "RollerLoadDistribution",
            "ratings", "life"]
