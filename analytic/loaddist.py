@@ -1298,8 +1298,8 @@ def _result(bearing, model, psi, x0, z0, Pd, u, applied, imposed, arm, iters, sh
     """Build the LoadDistribution, after checking what is returned.
 
     Raises ConvergenceError if any value is not finite or the relative equilibrium residual
-    exceeds newton.roundoff_cap(rtol) = max(1e-9, 100 rtol); ValueError if a ball approach is beyond the
-    load-deflection range.  Unloaded balls report the angle of the line of groove centres
+    exceeds newton.roundoff_cap(rtol) = max(1e-9, 100 rtol); ValueError if a ball approach
+    is beyond the load-deflection range.  Unloaded balls report the angle of the line of groove centres
     folded into (-pi/2, pi/2] (the line, not its direction).
     """
     if type(state) is _OneCase:
