@@ -41,7 +41,8 @@ kinematics, so the ball forces derive from a potential and the stiffness matrix 
 
 Solution: damped Newton with the analytic Jacobian (including dK_n/dbeta), a
 Levenberg regularisation for unloaded directions (clearance) and an Armijo line search
-on the frozen-stiffness potential, vectorized over load cases.  Unloaded balls carry
+on the frozen-stiffness potential, vectorized over load cases (the step control is the
+one of :mod:`ballrace.analytic.newton`, shared by every solver).  Unloaded balls carry
 Q = 0 exactly and keep their geometric angle atan2(z, x).  Inside the solver K_n(beta)
 (which depends on beta only through cos beta) is evaluated from a per-bearing Chebyshev
 series of ln K_n built from, and checked against, the exact Hertz solution to 1e-13
