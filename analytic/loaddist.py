@@ -983,11 +983,12 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
                 phi0 = 0.4 * float(np.dot(st.Q, st.delta)) - dot(F, u)
                 dn = snew.delta
                 ph1 = 0.4 * float(np.dot(Kf, dn * dn * np.sqrt(dn))) - dot(F, unew)
-                ua, dua, Fa = np.array(u), np.array(du), np.array(F)[None]
 
                 def armijo(t):
-                    ph = ph1 if t == 1.0 else \
-                        float(_potential(model, geo, (ua + t * dua)[None], Kf[None], Fa)[0])
+                    if t == 1.0:
+                        return newton.armijo_ok(ph1, phi0, t, g)
+                    ut = np.array(step(u, t, du))[None]
+                    ph = float(_potential(model, geo, ut, Kf[None], np.array(F)[None])[0])
                     return newton.armijo_ok(ph, phi0, t, g)
 
                 t, _ = newton.backtrack_one(armijo, POLICY.potential_halvings)

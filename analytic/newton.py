@@ -147,9 +147,10 @@ def clip_factor(size, radius):
     """Factor that brings a step of largest component ``size`` [m] within ``radius`` [m].
 
     1 where the step is within the radius, else radius / size.  Arrays broadcast (a size
-    of zero gives 1); Python or NumPy scalars give a Python float 1.0 or radius / size.
+    of zero gives 1); a Python or NumPy scalar ``size`` gives a Python float 1.0 or
+    radius / size.
     """
-    if np.ndim(size) == 0 and np.ndim(radius) == 0:
+    if not isinstance(size, np.ndarray):
         return radius / size if size > radius else 1.0
     return np.minimum(1.0, radius / np.maximum(size, 1e-300))
 
@@ -232,7 +233,7 @@ def roundoff_limit(umax, dmax, policy: NewtonPolicy = POLICY):
     """Relative residual round-off allows at a largest approach ``dmax`` [m] and rigid
     displacement ``umax`` [m]: 20 eps umax / dmax [-] (infinite where no ball is loaded;
     floats give a float)."""
-    if np.ndim(dmax) == 0:
+    if not isinstance(dmax, np.ndarray):
         return policy.roundoff_eps * umax / dmax if dmax > 0 else np.inf
     with np.errstate(divide="ignore", invalid="ignore"):
         return np.where(np.asarray(dmax) > 0, policy.roundoff_eps * umax / dmax, np.inf)
@@ -247,10 +248,12 @@ def roundoff_floor(rtol, dmax, umax, policy: NewtonPolicy = POLICY):
     lands exactly on first contact is not equilibrium), never below floor_rtol rtol and
     never above :func:`roundoff_cap`.  Arrays broadcast; floats give a float.
     """
-    cap = roundoff_cap(rtol, policy)
     if isinstance(dmax, float) and isinstance(umax, float):
-        return min(max(policy.floor_rtol * rtol, policy.roundoff_eps * umax / dmax), cap) \
-            if dmax > 0 else 0.0
+        if not dmax > 0:
+            return 0.0
+        lo = policy.floor_rtol * rtol
+        return min(max(lo, policy.roundoff_eps * umax / dmax), max(policy.floor_cap, lo))
+    cap = roundoff_cap(rtol, policy)
     with np.errstate(divide="ignore", invalid="ignore"):
         fl = np.maximum(policy.floor_rtol * rtol, policy.roundoff_eps * umax / dmax)
     return np.where(np.asarray(dmax) > 0, np.minimum(fl, cap), 0.0)
