@@ -149,6 +149,11 @@ def clip_factor(size, radius):
     1 where the step is within the radius, else radius / size.  Arrays broadcast (a size
     of zero gives 1); a Python or NumPy scalar ``size`` gives a Python float 1.0 or
     radius / size.
+
+    Examples
+    --------
+    >>> clip_factor(4.0, 1.0), clip_factor(0.5, 1.0)
+    (0.25, 1.0)
     """
     if not isinstance(size, np.ndarray):
         return radius / size if size > radius else 1.0
@@ -247,6 +252,13 @@ def roundoff_floor(rtol, dmax, umax, policy: NewtonPolicy = POLICY):
     better than ~20 eps umax / delta_max.  No floor while no ball is loaded (a step that
     lands exactly on first contact is not equilibrium), never below floor_rtol rtol and
     never above :func:`roundoff_cap`.  Arrays broadcast; floats give a float.
+
+    Examples
+    --------
+    >>> roundoff_floor(1e-12, 1e-6, 1e-4)      # 100 rtol above 20 eps 1e-4 / 1e-6
+    1e-10
+    >>> roundoff_floor(1e-12, 0.0, 1e-4)       # no ball loaded: no floor
+    0.0
     """
     if isinstance(dmax, float) and isinstance(umax, float):
         if not dmax > 0:
