@@ -50,6 +50,8 @@ import numpy as np
 from ._checks import as_array, check_choice, check_nonnegative, check_positive
 from .bearing import BallBearing
 from ..errors import ConvergenceError
+from . import newton
+from .newton import POLICY
 from .loaddist import MAX_APPROACH_RATIO, _fold_unloaded, _kn, _Model
 
 __all__ = ["ARRANGEMENTS", "DuplexPair", "DuplexResult", "axial_load", "axial_deflection",
@@ -279,8 +281,9 @@ def _inverse(bearing, F, rtol=1e-13, max_iter=200, name="Fa"):
             lo = x
         else:
             hi = x
-    raise ConvergenceError(f"axial deflection did not converge for Fa={F!r} N after "
-                           f"{max_iter} iterations (bracket {lo:.6g}..{hi:.6g} m)")
+    raise newton.convergence_error(
+        "axial deflection", max_iter, abs(fx) / F, rtol,
+        context=f"for Fa={F!r} N (bracket {lo:.6g}..{hi:.6g} m)")
 
 
 def _axial(bearing, da):
@@ -563,24 +566,25 @@ class DuplexPair:
                 step = np.array([-r[0] / J[0, 0] if J[0, 0] != 0 else 1e-3 * A, 0.0])
             if not np.all(np.isfinite(step)):
                 step = np.array([1e-3 * A * np.sign(-r[0] or 1.0), 0.0])
-            cap = 0.05 * A + 0.5 * max(abs(x), abs(dr), d0)   # grows with the deflection
-            big = np.max(np.abs(step))
-            ratio = 1.0
-            if big > cap:
-                ratio = cap / big
+            # step limit, growing with the deflection
+            cap = POLICY.duplex_step * A + POLICY.duplex_step_growth * max(abs(x), abs(dr), d0)
+            ratio = newton.clip_factor(np.max(np.abs(step)), cap)
+            if ratio != 1.0:
                 step *= ratio
-            t, f0 = 1.0, float(np.sum(r**2))
-            for _ in range(50):
+            f0 = float(np.sum(r**2))
+
+            def accept(t):
+                # Armijo on |r|^2 for the (possibly shortened) Newton step
+                nonlocal xn, drn, rn, Jn
                 xn, drn = x + t * step[0], dr + t * step[1]
                 rn, Jn = self._pair(xn, drn, jac=True)
                 rn = rn - target
                 if not radial_free:
                     rn[1] = 0.0
-                # Armijo on |r|^2 for the (possibly shortened) Newton step
-                if float(np.sum(rn**2)) < (1 - 1e-4 * t * ratio) * f0:
-                    break
-                t *= 0.5
-            else:
+                return float(np.sum(rn**2)) < (1 - POLICY.armijo * t * ratio) * f0
+
+            xn = drn = rn = Jn = None
+            if not newton.backtrack_one(accept, POLICY.duplex_halvings)[1]:
                 break
             x, dr, r, J = xn, drn, rn, Jn
             err = np.max(np.abs(r)) / scale
@@ -698,8 +702,8 @@ class DuplexPair:
                 raise ValueError(f"Fa={Fa!r} N, Fr={Fr!r} N have no equilibrium within the "
                                  "grooves: they need a ball contact at 90 deg or more from "
                                  "the groove bottom (beyond the range of the model)")
-            raise ConvergenceError(f"duplex pair equilibrium did not converge: relative residual "
-                                   f"{err:.3e} after {it} iterations (Fa={Fa!r} N, Fr={Fr!r} N)")
+            raise newton.convergence_error("duplex pair equilibrium", it, err, rtol,
+                                           context=f"(Fa={Fa!r} N, Fr={Fr!r} N)")
         d, Fa_b, Fr_b, Q, b = self._state(x, dr)
         K = J                                       # analytic, at the solution
         return _checked(DuplexResult(

@@ -115,10 +115,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import _operating, hertz
+from . import _operating, hertz, newton
 from ._checks import as_array, broadcast, check_choice, check_positive, check_range
 from .bearing import BallBearing
 from ..errors import ConvergenceError
+from .newton import POLICY
 
 __all__ = [
     "CAGE_RATIO_RANGE",
@@ -1059,7 +1060,7 @@ def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39, chord_steps=True)
     r = sysm.scaled(r_raw)
     err = float(np.abs(r).max())
     it = chord = 0
-    step_cap = 0.05 * sysm.m.D
+    step_cap = POLICY.highspeed_step * sysm.m.D
     short = 0
     lu = None
     damped = False
@@ -1094,9 +1095,9 @@ def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39, chord_steps=True)
         if dx is None:                                   # singular: least squares
             fac = None
             dx = np.linalg.lstsq(J, -r_raw, rcond=1e-14)[0]
-        big = _step_size(sysm, dx)
-        if big > step_cap:
-            dx *= step_cap / big
+        f = newton.clip_factor(_step_size(sysm, dx), step_cap)
+        if f != 1.0:
+            dx *= f
         f0 = 0.5 * float(r @ r)
         # line search: t = 1, then 1/2 ... 1/64 in one batch, and so on (after a
         # shortened step, 1 ... 1/32 in one batch at once)
@@ -1107,7 +1108,7 @@ def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39, chord_steps=True)
             rn_raw = sysm.residual(bn)
             rn = sysm.scaled(rn_raw)
         if damped or not (np.isfinite(rn).all()
-                          and 0.5 * float(rn @ rn) <= (1.0 - 1e-4) * f0):
+                          and 0.5 * float(rn @ rn) <= (1.0 - POLICY.armijo) * f0):
             t = 1.0 if damped else 0.5
             while t >= min_step:
                 ts = t * _HALVINGS
@@ -1118,7 +1119,7 @@ def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39, chord_steps=True)
                 R = sysm.scaled(R_raw)
                 with np.errstate(invalid="ignore", over="ignore"):
                     ok = np.all(np.isfinite(R), axis=1) & (
-                        0.5 * np.einsum("ij,ij->i", R, R) <= (1.0 - 1e-4 * ts) * f0)
+                        0.5 * np.einsum("ij,ij->i", R, R) <= (1.0 - POLICY.armijo * ts) * f0)
                 if np.any(ok):
                     j = int(np.argmax(ok))
                     t, xn, bn, rn_raw, rn = ts[j], X[j], B.row(j), R_raw[j], R[j]
@@ -1443,9 +1444,9 @@ def _equilibrium(model, psi, L, free, wi, wo, gyro, static, F_ref, Q_ref, orbita
     if err <= rtol:
         return sysm, x, b
     if static:
-        raise ConvergenceError(
-            f"high-speed equilibrium (zero speed) did not converge: scaled residual "
-            f"{err:.3e} (rtol {rtol:g}) after {count[0]} Newton iterations ({what})")
+        raise newton.convergence_error("high-speed equilibrium (zero speed)", count[0], err,
+                                       rtol, newton=True, measure="scaled residual",
+                                       context=f"({what})")
     b_direct = b
     log.info("highspeed: direct Newton failed (residual %.3e); continuing in speed", err)
     s, ds = 0.0, 0.25

@@ -41,7 +41,8 @@ kinematics, so the ball forces derive from a potential and the stiffness matrix 
 
 Solution: damped Newton with the analytic Jacobian (including dK_n/dbeta), a
 Levenberg regularisation for unloaded directions (clearance) and an Armijo line search
-on the frozen-stiffness potential, vectorized over load cases.  Unloaded balls carry
+on the frozen-stiffness potential, vectorized over load cases (the step control is the
+one of :mod:`ballrace.analytic.newton`, shared by every solver).  Unloaded balls carry
 Q = 0 exactly and keep their geometric angle atan2(z, x).  Inside the solver K_n(beta)
 (which depends on beta only through cos beta) is evaluated from a per-bearing Chebyshev
 series of ln K_n built from, and checked against, the exact Hertz solution to 1e-13
@@ -63,6 +64,8 @@ from . import hertz
 from ._checks import (MAX_MAGNITUDE, as_array, broadcast, check_choice, check_integer, check_nonnegative,
                       check_positive, check_range)
 from ..errors import ConvergenceError
+from . import newton
+from .newton import POLICY
 from .bearing import BallBearing
 
 __all__ = [
@@ -637,27 +640,9 @@ def _masked(J, fixed, sc, mu):
     return Js
 
 
-#: Largest residual the round-off floor may accept, and the largest relative residual any
-#: solver returns (with ``rtol`` above 1e-11 the limit is ``100 rtol``).
-_FLOOR_CAP = 1e-9
-
 #: Load-deflection range of the model: contact approach of a ball up to this fraction of D
 #: (some ten times the approach at the static-capacity stress of 4.2 GPa).
 MAX_APPROACH_RATIO = 0.1
-
-_EPS20 = 20.0 * float(np.finfo(float).eps)
-
-
-def _floor(rtol, dmax, umax):
-    """Round-off floor of the relative residual at approach ``dmax`` and rigid displacement
-    ``umax`` [m]: the approach s - A is resolved to ~eps |u|, and Q ~ delta^1.5, so Newton
-    cannot do better than ~20 eps umax / delta_max.  No floor while no ball is loaded (a
-    step that lands exactly on first contact is not equilibrium) and never above
-    max(_FLOOR_CAP, 100 rtol)."""
-    cap = max(_FLOOR_CAP, 100.0 * rtol)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        fl = np.maximum(100.0 * rtol, 20.0 * np.finfo(float).eps * umax / dmax)
-    return np.where(np.asarray(dmax) > 0, np.minimum(fl, cap), 0.0)
 
 
 def _overload(model, delta, F):
@@ -697,7 +682,7 @@ def _newton(model, geo, F, u0, fixed, arm, rtol, max_iter, strict=True):
     free = ~fixed
     F = np.where(free, F, 0.0)
     Fs_ext = np.abs(F / sc).max(1)
-    step_max = 0.25 * model.A                               # trust radius [m]
+    step_max = newton.trust_radius(model.A)                 # trust radius [m]
 
     def residual(st, idx):
         R = np.where(free[idx], st.F - F[idx], 0.0) / sc
@@ -713,13 +698,10 @@ def _newton(model, geo, F, u0, fixed, arm, rtol, max_iter, strict=True):
     it = 0
     conv = np.ones(N, dtype=bool)
     best_u, best_err = u.copy(), np.where(np.isnan(err), np.inf, err)
-    cap = max(_FLOOR_CAP, 100.0 * rtol)
     while active.size:
         if it >= max_iter:
             # a residual at round-off level is convergence: take the best iterate
-            fine = active[best_err[active] <= cap]
-            u[fine], err[fine] = best_u[fine], best_err[fine]
-            active = active[best_err[active] > cap]
+            active = newton.accept_best(active, u, err, best_u, best_err, rtol)
             if not active.size:
                 break
         if it >= max_iter and not strict:
@@ -729,25 +711,24 @@ def _newton(model, geo, F, u0, fixed, arm, rtol, max_iter, strict=True):
             i = active[np.argmax(np.nan_to_num(err[active], nan=np.inf))]
             _overload(model, delta[i], F[i])
             _beyond_groove(model, geo, u[i], F[i])
-            dm_ = float(delta[i].max())
-            rnd = 20.0 * np.finfo(float).eps * float(np.abs(u[i] * sc).max()) / dm_ \
-                if dm_ > 0 else np.inf
-            raise ConvergenceError(
-                f"load distribution did not converge after {it} iterations: relative "
-                f"equilibrium residual {err[i]:.3e} (best {best_err[i]:.3e}; > rtol={rtol:g}) "
-                f"in load case {int(i)}; loads {F[i].tolist()}, displacements "
-                f"{u[i].tolist()}" + (f" (round-off limit here ~{rnd:.1e}: the largest ball "
-                                      "approach is tiny against the ring displacement)"
-                                      if rnd > 0.1 * best_err[i] else ""))
+            raise newton.convergence_error(
+                "load distribution", it, err[i], rtol, best=best_err[i],
+                measure="relative equilibrium residual",
+                context=f"in load case {int(i)}; loads {F[i].tolist()}, displacements "
+                        f"{u[i].tolist()}",
+                roundoff=newton.roundoff_limit(float(np.abs(u[i] * sc).max()),
+                                               float(delta[i].max())),
+                roundoff_hint="the largest ball approach is tiny against the ring "
+                              "displacement")
         it += 1
         a = active
         ua, Ra, fx = u[a], Rs[a], fixed[a]
         n_free = np.maximum((~fx).sum(1), 1)
         Js = _masked(J[a], fx, sc, np.zeros(a.size))
-        tr = np.abs(np.einsum("nii->n", np.where(fx[:, :, None], 0.0, Js))) / n_free
         # Levenberg floor for unloaded / weak directions: 1e-6 of the geometric stiffness
         # ~ F/A (scales with the load, so light loads still cross clearances quickly)
-        mu = np.maximum(1e-12 * tr, 1e-6 * np.maximum(Fs_ext[a], qmax[a]) / model.A)
+        mu = newton.levenberg_shift(np.einsum("nii->n", np.where(fx[:, :, None], 0.0, Js)),
+                                    np.maximum(Fs_ext[a], qmax[a]), model.A, n_free)
         Js[:, np.arange(5), np.arange(5)] += np.where(fx, 0.0, mu[:, None])
         dS = -np.linalg.solve(Js, Ra[..., None])[..., 0]
         g = (Ra * dS).sum(1)
@@ -757,59 +738,57 @@ def _newton(model, geo, F, u0, fixed, arm, rtol, max_iter, strict=True):
             sb = _State(model, geo, ua[b], arm, Kn=Kn[a][b])
             Jb = _masked(0.5 * (sb.J + np.swapaxes(sb.J, 1, 2)), fx[b], sc, mu[b])
             dS[b] = -np.linalg.solve(Jb, Ra[b][..., None])[..., 0]
-        size = np.abs(dS).max(1)
-        dS *= np.minimum(1.0, step_max / np.maximum(size, 1e-300))[:, None]
+        dS *= newton.clip_factor(np.abs(dS).max(1), step_max)[:, None]
         g = (Ra * dS).sum(1)
         du = dS / sc
-        t = np.ones(a.size)
-        local = err[a] < 1e-6                  # quadratic-convergence region: full steps
+        local = err[a] < POLICY.quadratic_region      # quadratic convergence: full steps
         if arm == "groove":
+            # Armijo on the frozen-stiffness potential (where every trial fails, this
+            # driver ends one halving below the single-case one, at 2^-60)
             Kf, Fa_ = Kn[a], F[a]
             d = delta[a]
             phi0 = 0.4 * (Kf * d * d * np.sqrt(d)).sum(1) - (Fa_ * ua).sum(1)
-            todo = ~local
-            for _ in range(60):
-                idx = np.flatnonzero(todo)
-                if not idx.size:
-                    break
-                ph = _potential(model, geo, ua[idx] + t[idx, None] * du[idx], Kf[idx],
-                                Fa_[idx])
-                ok = ph <= phi0[idx] + 1e-4 * t[idx] * g[idx]
-                todo[idx[ok]] = False
-                t[idx[~ok]] *= 0.5
+
+            def armijo(idx, t):
+                ph = _potential(model, geo, ua[idx] + t[:, None] * du[idx], Kf[idx], Fa_[idx])
+                return newton.armijo_ok(ph, phi0[idx], t, g[idx])
+
+            ok1 = local.copy()
+            ok1[~local] = armijo(np.flatnonzero(~local), np.ones(int((~local).sum())))
+            t, _ = newton.backtrack(armijo, ok1, POLICY.potential_halvings + 1)
             unew = ua + t[:, None] * du
             snew = _State(model, geo, unew, arm)
             Rn, en = residual(snew, a)
         else:
+            # backtracking on the residual norm (no Armijo term: a NaN residual is taken)
             m0 = (Ra * Ra).sum(1)
             unew = ua + du
             snew = _State(model, geo, unew, arm)
             Rn, en = residual(snew, a)
-            worse = ((Rn * Rn).sum(1) > m0) & ~local
-            for _ in range(40):
-                w = np.flatnonzero(worse)
-                if not w.size:
-                    break
-                t[w] *= 0.5
-                unew[w] = ua[w] + t[w, None] * du[w]
+
+            def decrease(w, t):
+                unew[w] = ua[w] + t[:, None] * du[w]
                 sw = _State(model, geo, unew[w], arm)
                 Rw, ew = residual(sw, a[w])
                 snew.Kn[w], snew.J[w], snew.delta[w], snew.Q[w] = sw.Kn, sw.J, sw.delta, sw.Q
                 Rn[w], en[w] = Rw, ew
-                worse[w] = (Rw * Rw).sum(1) > m0[w]
+                return ~((Rw * Rw).sum(1) > m0[w])
+
+            newton.backtrack(decrease, ~(((Rn * Rn).sum(1) > m0) & ~local),
+                             POLICY.residual_halvings)
         u[a] = unew
         iters[a] += 1
         # round-off floor: the approach s - A of a lightly loaded ball is resolved only to
         # ~eps |rigid displacement|, so once Newton stops making progress accept
         # max(100 rtol, 20 eps max|du| / delta_max) (Q ~ delta^1.5)
-        floor = (en <= _floor(rtol, snew.delta.max(1), np.abs(unew * sc).max(1))) & \
-            (en > 0.5 * err[a])
+        floor = (en <= newton.roundoff_floor(rtol, snew.delta.max(1),
+                                             np.abs(unew * sc).max(1))) & \
+            newton.stalled(en, err[a])
         if np.any(floor):
             log.debug("load distribution: %d cases stopped at the round-off floor (max %.2e)",
                       int(floor.sum()), float(en[floor].max()))
         Rs[a], err[a] = Rn, en
-        better = en < best_err[a]
-        best_u[a[better]], best_err[a[better]] = unew[better], en[better]
+        newton.keep_best(best_u, best_err, a, unew, en)
         J[a], Kn[a], delta[a], qmax[a] = snew.J, snew.Kn, snew.delta, snew.Q.max(1)
         active = a[~(en <= rtol) & ~floor]
     if it:
@@ -891,8 +870,8 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
     F = [0.0 if fx[i] else float(v) for i, v in enumerate(F[0])]
     Fsx = [F[0], F[1], F[2], F[3] / Ri, F[4] / Ri]            # applied, scaled
     Fs_ext = max(abs(Fsx[0]), abs(Fsx[1]), abs(Fsx[2]), abs(Fsx[3]), abs(Fsx[4]))
-    step_max = 0.25 * model.A
-    lev = 1e-6 / model.A
+    step_max = newton.trust_radius(model.A)
+    lev = POLICY.levenberg_geometric / model.A
     R5 = range(5)
 
     def residual(o):
@@ -912,8 +891,8 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
                     if fx[i] or fx[j]:
                         Js[i][j] = 0.0
         if mu is None:                                    # Levenberg floor (see _newton)
-            mu = max(1e-12 * abs(Js[0][0] + Js[1][1] + Js[2][2] + Js[3][3] + Js[4][4]) / n_free,
-                     lev * max(Fs_ext, qmax))
+            mu = newton.levenberg_shift_one(Js[0][0] + Js[1][1] + Js[2][2] + Js[3][3] + Js[4][4],
+                                            n_free, max(Fs_ext, qmax), lev)
         if anyfixed:
             for i in R5:
                 Js[i][i] += 1.0 if fx[i] else mu
@@ -932,7 +911,6 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
         return [u[0] + t * d[0], u[1] + t * d[1], u[2] + t * d[2], u[3] + t * d[3],
                 u[4] + t * d[4]]
 
-    cap = max(_FLOOR_CAP, 100.0 * rtol)
     u = u0[0].tolist()
     seat = geo.g0 == 0 and not any(u) and Fs_ext > 0
     it0 = 0
@@ -956,13 +934,17 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
     it = 0
     while not err <= rtol:
         if it >= max_iter:
-            if best[0] <= max(_FLOOR_CAP, 100.0 * rtol):   # round-off level: the best iterate
+            if best[0] <= newton.roundoff_cap(rtol):    # round-off level: the best iterate
                 err, u, st = best
                 break
-            raise ConvergenceError(
-                f"load distribution did not converge after {it} iterations: relative "
-                f"equilibrium residual {err:.3e} (> rtol={rtol:g}); loads {F}, "
-                f"displacements {u}")
+            raise newton.convergence_error(
+                "load distribution", it, err, rtol, best=best[0],
+                measure="relative equilibrium residual",
+                context=f"in load case 0; loads {F}, displacements {u}",
+                roundoff=newton.roundoff_limit(max(abs(v * s) for v, s in zip(u, sc)),
+                                               max(st.delta.tolist())),
+                roundoff_hint="the largest ball approach is tiny against the ring "
+                              "displacement")
         it += 1
         Js, mu = scaled(st.J, None)
         x = _gesv(Js, R)
@@ -985,13 +967,12 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
                 f = (num / den) ** (2.0 / 3.0)
                 dS = [v * f for v in dS]
                 size *= f
-        if size > step_max:
-            f = step_max / size
+        f = newton.clip_factor(size, step_max)
+        if f != 1.0:
             dS = [v * f for v in dS]
         g = dot(R, dS)
         du = [dS[0], dS[1], dS[2], dS[3] / Ri, dS[4] / Ri]
-        t = 1.0
-        local = err < 1e-6
+        local = err < POLICY.quadratic_region
         unew = step(u, 1.0, du)
         snew = _one_case(model, geo, unew, arm)
         if arm == "groove":
@@ -1001,32 +982,37 @@ def _newton_one(model, geo, F, u0, fixed, arm, rtol, max_iter):
                 Kf = st.Kn
                 phi0 = 0.4 * float(np.dot(st.Q, st.delta)) - dot(F, u)
                 dn = snew.delta
-                ph = 0.4 * float(np.dot(Kf, dn * dn * np.sqrt(dn))) - dot(F, unew)
-                if not ph <= phi0 + 1e-4 * g:
-                    ua, dua, Fa = np.array(u), np.array(du), np.array(F)[None]
-                    for _ in range(59):
-                        t *= 0.5
-                        ph = float(_potential(model, geo, (ua + t * dua)[None], Kf[None], Fa)[0])
-                        if ph <= phi0 + 1e-4 * t * g:
-                            break
+                ph1 = 0.4 * float(np.dot(Kf, dn * dn * np.sqrt(dn))) - dot(F, unew)
+
+                def armijo(t):
+                    if t == 1.0:
+                        return newton.armijo_ok(ph1, phi0, t, g)
+                    ut = np.array(step(u, t, du))[None]
+                    ph = float(_potential(model, geo, ut, Kf[None], np.array(F)[None])[0])
+                    return newton.armijo_ok(ph, phi0, t, g)
+
+                t, _ = newton.backtrack_one(armijo, POLICY.potential_halvings)
+                if t != 1.0:
                     unew = step(u, t, du)
                     snew = _one_case(model, geo, unew, arm)
             Rn, en, qn = residual(snew)
         else:
             m0 = dot(R, R)
             Rn, en, qn = residual(snew)
-            for _ in range(0 if local else 40):
-                if dot(Rn, Rn) <= m0:
-                    break
-                t *= 0.5
-                unew = step(u, t, du)
-                snew = _one_case(model, geo, unew, arm)
-                Rn, en, qn = residual(snew)
-        dmx = max(snew.delta.tolist())                                     # _floor
+            if not local:
+                def decrease(t):
+                    nonlocal unew, snew, Rn, en, qn
+                    if t != 1.0:
+                        unew = step(u, t, du)
+                        snew = _one_case(model, geo, unew, arm)
+                        Rn, en, qn = residual(snew)
+                    return dot(Rn, Rn) <= m0
+
+                newton.backtrack_one(decrease, POLICY.residual_halvings)
         umx = max(abs(unew[0]), abs(unew[1]), abs(unew[2]), abs(unew[3] * Ri),
                   abs(unew[4] * Ri))
-        fl = min(max(100.0 * rtol, _EPS20 * umx / dmx), cap) if dmx > 0 else 0.0
-        floor = fl >= en > 0.5 * err
+        floor = newton.roundoff_floor(rtol, max(snew.delta.tolist()), umx) >= en and \
+            newton.stalled(en, err)
         u, st, R, err, qmax = unew, snew, Rn, en, qn
         if err < best[0]:
             best = (err, u, st)
@@ -1316,8 +1302,8 @@ def _result(bearing, model, psi, x0, z0, Pd, u, applied, imposed, arm, iters, sh
     """Build the LoadDistribution, after checking what is returned.
 
     Raises ConvergenceError if any value is not finite or the relative equilibrium residual
-    exceeds max(_FLOOR_CAP, 100 rtol); ValueError if a ball approach is beyond the
-    load-deflection range.  Unloaded balls report the angle of the line of groove centres
+    exceeds newton.roundoff_cap(rtol) = max(1e-9, 100 rtol); ValueError if a ball approach
+    is beyond the load-deflection range.  Unloaded balls report the angle of the line of groove centres
     folded into (-pi/2, pi/2] (the line, not its direction).
     """
     if type(state) is _OneCase:
@@ -1333,7 +1319,7 @@ def _result(bearing, model, psi, x0, z0, Pd, u, applied, imposed, arm, iters, sh
         rel = np.where(scale > 0, res / np.where(scale > 0, scale, 1.0), res)
     finite = np.all(np.isfinite(u), -1) & np.all(np.isfinite(st.F), -1) & \
         np.all(np.isfinite(st.Q), -1) & np.all(np.isfinite(st.J.reshape(len(u), -1)), -1)
-    tol = max(_FLOOR_CAP, 100.0 * rtol)
+    tol = newton.roundoff_cap(rtol)
     bad = ~finite | ~(rel <= tol)
     dmax = np.where(finite, st.delta.max(-1), 0.0)
     _overload(model, dmax.max(), app[int(np.argmax(dmax))])
@@ -1368,7 +1354,7 @@ def _result_one(bearing, model, psi, z0, Pd, u, applied, imposed, arm, iters, sh
     scale = max(max(abs(app[i] / sc[i]) for i in range(5)), max(Ql))
     rel = res / scale if scale > 0 else res
     finite = math.isfinite(sum(ul) + sum(Fs) + sum(Ql) + sum(sum(r) for r in Jl))
-    tol = max(_FLOOR_CAP, 100.0 * rtol)
+    tol = newton.roundoff_cap(rtol)
     dmax = max(o.delta.tolist()) if finite else 0.0
     if dmax > MAX_APPROACH_RATIO * model.D:
         _overload(model, dmax, np.array(app))
@@ -1717,16 +1703,16 @@ def _retry(model, geo, L, u0, imposed, arm, rtol, max_iter, ok, u, iters):
         n = int(np.ceil(np.log10(k0))) if k0 > 10.0 else 0
         if n:
             # below the round-off resolution (the approach s - A is resolved to ~20 eps |u|,
-            # see _floor): no decade walk down to it, which would take ~log10(k0) failing
-            # Newton runs (300 for a load of 1e-300 N)
+            # see newton.roundoff_floor): no decade walk down to it, which would take
+            # ~log10(k0) failing Newton runs (300 for a load of 1e-300 N)
             Fm = float(np.abs(Lb[k] / sc).max())
             d_est = (Fm / model.Kn_free) ** (2.0 / 3.0)          # one ball carrying it all
             travel = max(model.A - geo.x0, geo.z0)              # rigid travel to a seat
-            if not d_est > 20.0 * np.finfo(float).eps * travel:
+            if not d_est > POLICY.roundoff_eps * travel:
                 raise ConvergenceError(
                     f"load distribution: the loads {Lb[k].tolist()} [N, N m] are too small "
                     f"for the model to resolve: a ball approach of about {d_est:.1e} m is "
-                    f"below the round-off (~{20.0 * np.finfo(float).eps * travel:.1e} m) of "
+                    f"below the round-off (~{POLICY.roundoff_eps * travel:.1e} m) of "
                     f"the ring's travel of {travel:.2g} m to its seat in the clearance")
         fracs = np.logspace(n, 0.0, n + 1) if n else (0.25, 0.5, 0.75, 1.0)
         for i, frac in enumerate(fracs):

@@ -103,13 +103,14 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.linalg import cho_solve_banded, cholesky_banded
 
-from . import loaddist
+from . import loaddist, newton
 from ._checks import (as_array, broadcast, check_choice, check_instance, check_integer,
                       check_nonnegative, check_positive, check_range)
 from .bearing import BallBearing
 from .clearance import OperatingClearance
 from .duplex import DuplexPair
 from ..errors import ConvergenceError
+from .newton import POLICY
 from .materials import BEARING_STEEL, Material
 
 __all__ = ["Shaft", "Seat", "PointLoad", "ShaftResult", "ConvergenceError", "solve",
@@ -1375,7 +1376,7 @@ def _newton(pb, rtol, max_iter, X0=None):
         None).  The condensed stiffness maps a rigid motion to zero only to ~1e-13 of its
         size: a shaft moved ~0.1 mm through its clearance feels spurious forces of
         ~1e-8 N, which hide the imbalance of a load of a few mN."""
-        if _split_error(pb, X, sc) <= 100.0 * rtol:
+        if _split_error(pb, X, sc) <= POLICY.floor_rtol * rtol:
             return X, err
         nonlocal total
         Xr, it, er, okr = _newton_step(pb, X, 1.0, sc, rtol, max_iter, robust=True)
@@ -1428,13 +1429,12 @@ def _newton(pb, rtol, max_iter, X0=None):
         last_err = min(last_err, err) if last_err is not None else err
         r_, u_ = _roundoff(pb, X)
         rnd, umax = max(rnd, r_), max(umax, u_)
-    F = _load_scale(pb)
-    raise ConvergenceError(
-        f"shaft equilibrium did not converge: relative residual {last_err:.3e} "
-        f"(> rtol={rtol:g}) after {total} Newton iterations over all load steps"
-        + (f" (round-off limit here ~{rnd:.1e}: the loads, {F:.3g} N, are too small to be "
-           f"resolved against the shaft's stiffness and the rings' displacement of "
-           f"{umax:.3g} m through their clearance)" if rnd > 0.1 * last_err else ""))
+    raise newton.convergence_error(
+        "shaft equilibrium", total, last_err, rtol, newton=True, steps=" over all load steps",
+        roundoff=rnd,
+        roundoff_hint=f"the loads, {_load_scale(pb):.3g} N, are too small to be resolved "
+                      f"against the shaft's stiffness and the rings' displacement of "
+                      f"{umax:.3g} m through their clearance")
 
 
 def _split_error(pb, X, sc):
@@ -1464,13 +1464,14 @@ def _roundoff(pb, X):
     """(relative residual below which round-off hides equilibrium at X, largest relative
     ring translation [m]).  The shaft's rigid displacement u (e.g. through a clearance) is
     resolved to ~eps |u|, so its elastic forces only to ~eps |K| |u| against its
-    stiffness K, and a ball's approach s - A to ~eps |u| (Q ~ delta^1.5, loaddist._floor)."""
+    stiffness K, and a ball's approach s - A to ~eps |u| (Q ~ delta^1.5,
+    :func:`ballrace.analytic.newton.roundoff_limit`)."""
     eps = np.finfo(float).eps
     rel, _ = pb.seat_rel(X)
     umax = float(np.abs(rel[:, :3]).max())
     dm = float(np.max(pb.dmax)) if pb.dmax.size else 0.0
     rnd = max(eps * float(np.abs(pb.Kc).max()) * float(np.abs(X[:pb.nb]).max())
-              / _load_scale(pb), 20.0 * eps * umax / dm if dm > 0 else 0.0)
+              / _load_scale(pb), newton.roundoff_limit(umax, dm) if dm > 0 else 0.0)
     return rnd, umax
 
 
@@ -1513,7 +1514,7 @@ def _newton_step(pb, X, lam, sc, rtol, max_iter, robust=False):
     geometric stiffness of the loads, 1e-6 F/A, instead of 1e-10 of the largest stiffness
     (which, against a shaft of 1e9 N/m, swamps the ~F/A stiffness of balls at the bottom
     of their grooves under a load of a few mN and makes Newton crawl)."""
-    dlim = 0.25 * pb.A_ref
+    dlim = newton.trust_radius(pb.A_ref)
     nb = pb.nb
     if robust:
         T = pb.rigid_modes()[:nb]
@@ -1554,9 +1555,10 @@ def _newton_step(pb, X, lam, sc, rtol, max_iter, robust=False):
         it += 1
         Jd = (J * D[None, :]) / sc[:, None]
         if robust:
-            mu = max(1e-16 * np.abs(np.diag(Jd)).max(), 1e-6 * ext / pb.A_ref)
+            mu = max(POLICY.levenberg_shaft_robust * np.abs(np.diag(Jd)).max(),
+                     POLICY.levenberg_geometric * ext / pb.A_ref)
         else:
-            mu = 1e-10 * np.abs(np.diag(Jd)).max()
+            mu = POLICY.levenberg_shaft * np.abs(np.diag(Jd)).max()
         Jd[np.diag_indices_from(Jd)] += mu
         try:
             dY = -np.linalg.solve(Jd, R / sc)
@@ -1586,9 +1588,10 @@ def _newton_step(pb, X, lam, sc, rtol, max_iter, robust=False):
                 rel_step[k, loc] -= dX[gl]
             size = max(np.abs(rel_step[:, :3]).max(), np.abs(rel_step[:, 3:]).max() * Rmax)
             g = float(R @ dX)
-        if size > dlim:
-            dX *= dlim / size
-            g *= dlim / size
+        f = newton.clip_factor(size, dlim)
+        if f != 1.0:
+            dX *= f
+            g *= f
         if robust:
             dr = Tp @ dX[:nb]
             dXd = dX.copy()
@@ -1599,8 +1602,9 @@ def _newton_step(pb, X, lam, sc, rtol, max_iter, robust=False):
         # residual norm, which the potential's round-off cannot judge near the solution.
         p0 = pb.potential
         m0 = float(np.sum((R / sc) ** 2))
-        t = 1.0
-        for _ in range(40):
+
+        def accept(t):
+            nonlocal rn, Xdn, Xn, Rn, Jn, Rsn
             if robust:
                 rn, Xdn = r + t * dr, Xd + t * dXd
                 Xn = Xdn.copy()
@@ -1608,17 +1612,18 @@ def _newton_step(pb, X, lam, sc, rtol, max_iter, robust=False):
             else:
                 Xn, Xdn = X + t * dX, None
             Rn, Jn, Rsn, _, _ = pb.evaluate(Xn, lam, Yd=Xdn)
-            if pb.potential <= p0 + 1e-4 * t * g or \
-                    float(np.sum((Rn / sc) ** 2)) <= (1 - 1e-4 * t) * m0:
-                break
-            t *= 0.5
+            return newton.armijo_ok(pb.potential, p0, t, g) or \
+                float(np.sum((Rn / sc) ** 2)) <= (1 - POLICY.armijo * t) * m0
+
+        rn = Xdn = Xn = Rn = Jn = Rsn = None
+        newton.backtrack_one(accept, POLICY.shaft_halvings)
         en = error(Rn, Rsn)
-        if en > 0.5 * err and err < 1e3 * rtol:
+        if newton.stalled(en, err) and err < POLICY.near_tolerance * rtol:
             # no more progress near the tolerance: the round-off floor of the sums
             best = min(en, err)
             if en < err:
                 X, err = Xn, en
-            return X, it, best, best <= 100 * rtol
+            return X, it, best, best <= POLICY.floor_rtol * rtol
         X, R, J, Rs, err = Xn, Rn, Jn, Rsn, en
         if robust:
             r, Xd = rn, Xdn

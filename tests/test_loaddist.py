@@ -17,7 +17,7 @@ from hypothesis import HealthCheck, given, reject, settings
 from hypothesis import strategies as st
 
 import ballrace
-from ballrace.analytic import loaddist
+from ballrace.analytic import loaddist, newton
 from ballrace.analytic.bearing import BallBearing
 from ballrace.analytic.loaddist import ConvergenceError
 
@@ -531,9 +531,9 @@ def test_issue14_radial_landing_on_first_contact_is_not_equilibrium(brg, Fr):
 
 def test_issue14_floor_never_accepts_before_contact():
     # the round-off floor is 0 while no ball is loaded, and capped at 1e-9 (100 rtol)
-    assert loaddist._floor(1e-12, 0.0, 1e-4) == 0.0
-    assert loaddist._floor(1e-12, 1e-30, 1e-4) == pytest.approx(1e-9)
-    assert loaddist._floor(1e-12, 1e-6, 1e-4) == pytest.approx(1e-10)
+    assert newton.roundoff_floor(1e-12, 0.0, 1e-4) == 0.0
+    assert newton.roundoff_floor(1e-12, 1e-30, 1e-4) == pytest.approx(1e-9)
+    assert newton.roundoff_floor(1e-12, 1e-6, 1e-4) == pytest.approx(1e-10)
 
 
 def test_issue14_nan_is_not_convergence():
