@@ -649,21 +649,13 @@ def parse_case(data: dict, source: str = "<case>") -> BearingCase:
     hint = _kind_hint(data, source)
     if hint:
         raise CaseFileError(hint)
-    from ballrace.casefiles.schema import read_material
+    from ballrace.casefiles.schema import read_materials
 
     spec = validate_spec(_models(), data, source)
     q = quantity_reader(source)
 
     b = spec.bearing
-    mats = {}
-    for which in ("ball", "ring"):
-        m = getattr(spec.materials, which)
-        if m is not None:
-            kw = read_material(m, q, f"[materials.{which}]", m.name or which)
-            try:
-                mats[which] = material(**kw)
-            except ValueError as exc:
-                raise CaseFileError(f"{source}: [materials.{which}]: {exc}") from None
+    mats = read_materials(spec.materials, q, source, material)
     if (b.diametral_clearance is None) == (b.free_contact_angle is None):
         raise CaseFileError(f"{source}: [bearing]: give exactly one of diametral_clearance "
                             "and free_contact_angle")

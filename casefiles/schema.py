@@ -56,7 +56,7 @@ import functools
 from typing import Literal, Optional
 
 __all__ = ["strict", "subset", "bearing_keys", "material_keys", "materials_keys",
-           "fits_keys", "oil_keys", "operation_keys", "read_material",
+           "fits_keys", "oil_keys", "operation_keys", "read_material", "read_materials",
            "read_operating_clearance", "DENSITY", "EXPANSION"]
 
 #: pint dimensions of the keys read here.
@@ -202,6 +202,24 @@ def read_material(m, q, where: str, name: str, density: bool = True) -> dict:
     if density and given is not None:
         kw["density"] = q(given, DENSITY, f"{where}.density")
     return kw
+
+
+def read_materials(spec, q, source: str, make) -> dict:
+    """``{"ball": Material, "ring": Material}`` of a ``[materials]`` table ``spec``
+    (:func:`materials_keys`; a material not given is left out), each built by ``make``
+    from its keywords (:func:`read_material`); an error names ``[materials.ball]``."""
+    from ballrace.errors import CaseFileError
+
+    mats = {}
+    for which in ("ball", "ring"):
+        m = getattr(spec, which)
+        if m is not None:
+            kw = read_material(m, q, f"[materials.{which}]", m.name or which)
+            try:
+                mats[which] = make(**kw)
+            except (ValueError, TypeError) as exc:
+                raise CaseFileError(f"{source}: [materials.{which}]: {exc}") from None
+    return mats
 
 
 def read_operating_clearance(f, brg, q, source: str, where: str, *, shaft_bore,

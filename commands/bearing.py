@@ -179,22 +179,11 @@ def register(app) -> None:
         units: Annotated[str, typer.Option("--units", help=UNITS_HELP)] = "eng",
     ):
         """Load distribution, Hertz contacts, ratings, life and EHL film of a bearing case."""
-        from ballrace.casefiles.bearing import CaseFileError, load_case
-        from ballrace.cli import check_units, fail
+        from ballrace.casefiles.bearing import load_case
+        from ballrace.commands import run_case_file
 
-        check_units(units)
-        p = Path(case_file)
-        if p.is_dir():
-            fail(f"{case_file}: is a directory; give a bearing case file (.toml)")
-        try:
-            case = load_case(case_file)
-            result = analyze(case)
-        except CaseFileError as exc:
-            fail(_kind_hint(p) or str(exc))
-        except UnicodeDecodeError:
-            fail(f"{case_file}: not a text file; give a bearing case file (TOML)")
-        except (OSError, ValueError, RuntimeError) as exc:
-            fail(f"{case_file}: {exc}")
+        result = run_case_file(case_file, units, "bearing", load_case, analyze,
+                               lambda exc: _kind_hint(Path(case_file)) or str(exc))
         if as_json:
             typer.echo(json.dumps(jsonable(result), indent=2))
             return

@@ -10,7 +10,6 @@ from __future__ import annotations
 import json
 import logging
 import math
-from pathlib import Path
 from typing import Annotated, Optional
 
 import numpy as np
@@ -391,22 +390,11 @@ def register(app) -> None:
             "--plot", help="Write a picture of the shaft (PNG/SVG/PDF) to this file.")] = None,
     ):
         """An elastic shaft on its ball bearings: reactions, ball loads, deflection, lives."""
-        from ballrace.errors import CaseFileError
-        from ballrace.cli import check_units, fail
+        from ballrace.commands import run_case_file
 
-        check_units(units)
-        p = Path(case_file)
-        if p.is_dir():
-            fail(f"{case_file}: is a directory; give a shaft case file (.toml)")
-        try:
-            case = load_shaft_case(case_file)
-            result = analyze(case)
-        except CaseFileError as exc:
-            fail(str(exc).splitlines()[0] if "\n" in str(exc) else str(exc))
-        except UnicodeDecodeError:
-            fail(f"{case_file}: not a text file; give a shaft case file (TOML)")
-        except (OSError, ValueError, RuntimeError) as exc:
-            fail(f"{case_file}: {exc}")
+        result = run_case_file(case_file, units, "shaft", load_shaft_case, analyze,
+                               lambda exc: str(exc).splitlines()[0] if "\n" in str(exc)
+                               else str(exc))
         if plot_file:
             scale = plot(result, plot_file)
             if not as_json:

@@ -175,7 +175,7 @@ def parse_fe_case(data: dict, source: str = "<case>", **overrides) -> FECaseFile
     """
     import ballrace
     from ballrace.casefiles.bearing import CaseFileError, quantity_reader, validate_spec
-    from ballrace.casefiles.schema import read_material
+    from ballrace.casefiles.schema import read_materials
 
     from . import api
 
@@ -187,15 +187,7 @@ def parse_fe_case(data: dict, source: str = "<case>", **overrides) -> FECaseFile
     q = quantity_reader(source)
 
     c = spec.case
-    mats = {}
-    for which in ("ball", "ring"):
-        m = getattr(spec.materials, which)
-        if m is not None:
-            kw = read_material(m, q, f"[materials.{which}]", m.name or which)
-            try:
-                mats[which] = ballrace.Material(**kw)
-            except (ValueError, TypeError) as exc:
-                raise CaseFileError(f"{source}: [materials.{which}]: {exc}") from None
+    mats = read_materials(spec.materials, q, source, ballrace.Material)
     load = q(c.load, "[force]", "[case].load")
     race = c.contact in ("inner", "outer")
     if race and c.ball_diameter is not None:
