@@ -72,7 +72,6 @@ every error names the file and the ``[table].key`` it is about.
 from __future__ import annotations
 
 import dataclasses
-import functools
 import math
 import re
 import tomllib
@@ -86,6 +85,7 @@ __all__ = ["CaseFileError", "BearingCase", "load_case", "parse_case"]
 
 
 from ballrace.errors import CaseFileError  # noqa: E402 - one class for every case file
+from ballrace.casefiles.schema import bearing_keys  # noqa: E402,F401 - shared [bearing] keys
 
 
 def rating_angle(kind: str, nominal, raw, where: str):
@@ -108,28 +108,6 @@ def rating_angle(kind: str, nominal, raw, where: str):
                          f"0 deg (ISO 281:2007); got {raw!r} - use type = "
                          "\"angular-contact\" for a bearing with a design angle")
     return nominal
-
-
-@functools.cache
-def bearing_keys():
-    """Pydantic model of the bearing keys every case file shares (the ``[bearing]`` table
-    here, each ``[bearings.NAME]`` table of a shaft case file); built on first use."""
-    from pydantic import BaseModel, ConfigDict, Field
-
-    class BearingKeys(BaseModel):
-        model_config = ConfigDict(extra="forbid", frozen=True)
-        type: Literal["deep-groove", "angular-contact"] = "deep-groove"
-        name: str = ""
-        ball_diameter: str
-        n_balls: int = Field(ge=3)
-        pitch_diameter: str
-        f_inner: float = Field(gt=0.5)
-        f_outer: float = Field(gt=0.5)
-        diametral_clearance: Optional[str] = None
-        free_contact_angle: Optional[str] = None
-        nominal_contact_angle: Optional[str] = None
-
-    return BearingKeys
 
 
 def bearing_from_keys(b, q, source: str, where: str, **extra):
@@ -165,33 +143,21 @@ def bearing_from_keys(b, q, source: str, where: str, **extra):
 
 
 def _models():
-    """Pydantic models, built on first use (pydantic is imported lazily)."""
-    from pydantic import BaseModel, ConfigDict, Field
+    """Pydantic models, built on first use (pydantic is imported lazily); the shared
+    sections come from :mod:`ballrace.casefiles.schema`."""
+    from pydantic import Field
 
-    class _Strict(BaseModel):
-        model_config = ConfigDict(extra="forbid", frozen=True)
+    from ballrace.casefiles import schema
+
+    _Strict = schema.strict()
 
     class BearingSpec(bearing_keys()):
         n_rows: int = Field(default=1, ge=1, le=2)
-
-    class MaterialSpec(_Strict):
-        E: str
-        nu: float = Field(gt=-1.0, lt=0.5)
-        density: Optional[str] = None
-        name: str = ""
-
-    class MaterialsSpec(_Strict):
-        ball: Optional[MaterialSpec] = None
-        ring: Optional[MaterialSpec] = None
 
     class LoadsSpec(_Strict):
         radial: str = "0 N"
         axial: str = "0 N"
         eccentricity: Optional[str] = None
-
-    class OperationSpec(_Strict):
-        speed: str
-        rotating_ring: Literal["inner", "outer"] = "inner"
 
     class LubricantSpec(_Strict):
         viscosity: str
@@ -211,38 +177,18 @@ def _models():
         fatigue_limit: Optional[str] = None
         fatigue_limit_method: Literal["hertz", "simplified"] = "hertz"
 
-    class OilSpec(_Strict):
-        nu40: Optional[str] = None
-        nu100: Optional[str] = None
-        temperature: Optional[str] = None
-        viscosity: Optional[str] = None
-        ep_additives: bool = False
-
-    class FitsSpec(_Strict):
-        bore: str
-        outside_diameter: str
-        shaft_interference: str = "0 m"
-        housing_interference: str = "0 m"
-        shaft_bore: str = "0 m"
-        housing_diameter: str = "inf m"
-        inner_temperature: str = "20 degC"
-        outer_temperature: str = "20 degC"
-        reference_temperature: str = "20 degC"
-        shaft_expansion: Optional[str] = None
-        housing_expansion: Optional[str] = None
-        shaft: Optional[MaterialSpec] = None
-        housing: Optional[MaterialSpec] = None
+    MaterialsSpec = schema.materials_keys()
 
     class CaseSpec(_Strict):
         title: str = ""
         bearing: BearingSpec
         materials: MaterialsSpec = MaterialsSpec()
         loads: LoadsSpec
-        operation: OperationSpec
+        operation: schema.operation_keys()
         lubricant: Optional[LubricantSpec] = None
         life: LifeSpec = LifeSpec()
-        oil: Optional[OilSpec] = None
-        fits: Optional[FitsSpec] = None
+        oil: Optional[schema.oil_keys()] = None
+        fits: Optional[schema.fits_keys()] = None
 
     return CaseSpec
 
@@ -401,8 +347,8 @@ def _positive(value: float, text, where: str, example: str = "") -> float:
 
 def _iso_inputs(spec, brg, source, q):
     """ISO 281 / fits inputs of a case (see :func:`parse_case`)."""
-    from ballrace.analytic import clearance as _cl
     from ballrace.analytic import iso281
+    from ballrace.casefiles.schema import read_material, read_operating_clearance
 
     out: dict = {}
     lf = spec.life
@@ -455,25 +401,12 @@ def _iso_inputs(spec, brg, source, q):
         for which in ("shaft", "housing"):
             m = getattr(f, which)
             if m is not None:
-                mats[which] = material(E=q(m.E, "[pressure]", f"[fits.{which}].E"),
-                                       nu=m.nu, name=m.name or which)
-        exp = {k: q(getattr(f, k), "1 / [temperature]", f"[fits].{k}")
-               for k in ("shaft_expansion", "housing_expansion")}
-        T = {k: parse_temperature(getattr(f, k), f"{source}: [fits].{k}")
-             for k in ("inner_temperature", "outer_temperature", "reference_temperature")}
-        try:
-            out["clearance"] = _cl.operating_clearance(
-                brg, bore=q(f.bore, "[length]", "[fits].bore"),
-                outside_diameter=q(f.outside_diameter, "[length]", "[fits].outside_diameter"),
-                shaft_interference=q(f.shaft_interference, "[length]", "[fits].shaft_interference"),
-                housing_interference=q(f.housing_interference, "[length]",
-                                       "[fits].housing_interference"),
-                shaft_bore=q(f.shaft_bore, "[length]", "[fits].shaft_bore"),
-                housing_diameter=parse_inf(q, f.housing_diameter, "[fits].housing_diameter"),
-                shaft_material=mats.get("shaft"), housing_material=mats.get("housing"),
-                **T, **exp)
-        except ValueError as exc:
-            raise CaseFileError(f"{source}: [fits]: {exc}") from None
+                mats[which] = material(**read_material(m, q, f"[fits.{which}]", m.name or which,
+                                                       density=False))
+        out["clearance"] = read_operating_clearance(
+            f, brg, q, source, "[fits]",
+            shaft_bore=q(f.shaft_bore, "[length]", "[fits].shaft_bore"),
+            shaft_material=mats.get("shaft"), housing_material=mats.get("housing"))
     return out
 
 
@@ -716,23 +649,13 @@ def parse_case(data: dict, source: str = "<case>") -> BearingCase:
     hint = _kind_hint(data, source)
     if hint:
         raise CaseFileError(hint)
+    from ballrace.casefiles.schema import read_materials
+
     spec = validate_spec(_models(), data, source)
     q = quantity_reader(source)
 
     b = spec.bearing
-    mats = {}
-    for which in ("ball", "ring"):
-        m = getattr(spec.materials, which)
-        if m is not None:
-            kw = dict(E=q(m.E, "[pressure]", f"[materials.{which}].E"), nu=m.nu,
-                      name=m.name or which)
-            if m.density is not None:
-                kw["density"] = q(m.density, "[mass] / [length] ** 3",
-                                  f"[materials.{which}].density")
-            try:
-                mats[which] = material(**kw)
-            except ValueError as exc:
-                raise CaseFileError(f"{source}: [materials.{which}]: {exc}") from None
+    mats = read_materials(spec.materials, q, source, material)
     if (b.diametral_clearance is None) == (b.free_contact_angle is None):
         raise CaseFileError(f"{source}: [bearing]: give exactly one of diametral_clearance "
                             "and free_contact_angle")

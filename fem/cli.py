@@ -37,6 +37,7 @@ command line beside a case file take precedence over the file.
 """
 from __future__ import annotations
 
+import functools
 import json
 import tomllib
 from dataclasses import dataclass
@@ -87,13 +88,21 @@ class FECaseFile:
     traction_pressure: str = "fe"
 
 
+#: The ``[bearing]`` keys an FE case file takes: the geometry of the shared bearing keys
+#: (:func:`ballrace.casefiles.schema.bearing_keys`), in this order.
+BEARING_KEYS = ("name", "ball_diameter", "n_balls", "pitch_diameter", "f_inner", "f_outer",
+                "free_contact_angle", "diametral_clearance")
+
+
+@functools.cache
 def _models():
     from typing import Literal
 
-    from pydantic import BaseModel, ConfigDict, Field
+    from pydantic import Field
 
-    class _Strict(BaseModel):
-        model_config = ConfigDict(extra="forbid", frozen=True)
+    from ballrace.casefiles import schema
+
+    _Strict = schema.strict()
 
     class CaseSpec(_Strict):
         contact: Literal["inner", "outer", "plane", "ball"] = "inner"
@@ -101,24 +110,9 @@ def _models():
         contact_angle: Optional[str] = None
         ball_diameter: Optional[str] = None
 
-    class BearingSpec(_Strict):
-        name: str = ""
-        ball_diameter: str
-        n_balls: int = Field(ge=3)
-        pitch_diameter: str
-        f_inner: float = Field(gt=0.5)
-        f_outer: float = Field(gt=0.5)
-        free_contact_angle: Optional[str] = None
-        diametral_clearance: Optional[str] = None
-
-    class MaterialSpec(_Strict):
-        E: str
-        nu: float = Field(gt=-1.0, lt=0.5)
-        name: str = ""
-
-    class MaterialsSpec(_Strict):
-        ball: Optional[MaterialSpec] = None
-        ring: Optional[MaterialSpec] = None
+    BearingSpec = schema.subset(schema.bearing_keys(), "BearingSpec", BEARING_KEYS)
+    MaterialSpec = schema.subset(schema.material_keys(), "MaterialSpec", ("E", "nu", "name"))
+    MaterialsSpec = schema.materials_keys(MaterialSpec)
 
     class FemSpec(_Strict):
         level: Literal["quick", "standard", "fine"] = "standard"
@@ -181,6 +175,7 @@ def parse_fe_case(data: dict, source: str = "<case>", **overrides) -> FECaseFile
     """
     import ballrace
     from ballrace.casefiles.bearing import CaseFileError, quantity_reader, validate_spec
+    from ballrace.casefiles.schema import read_materials
 
     from . import api
 
@@ -192,16 +187,7 @@ def parse_fe_case(data: dict, source: str = "<case>", **overrides) -> FECaseFile
     q = quantity_reader(source)
 
     c = spec.case
-    mats = {}
-    for which in ("ball", "ring"):
-        m = getattr(spec.materials, which)
-        if m is not None:
-            try:
-                mats[which] = ballrace.Material(
-                    E=q(m.E, "[pressure]", f"[materials.{which}].E"), nu=m.nu,
-                    name=m.name or which)
-            except (ValueError, TypeError) as exc:
-                raise CaseFileError(f"{source}: [materials.{which}]: {exc}") from None
+    mats = read_materials(spec.materials, q, source, ballrace.Material)
     load = q(c.load, "[force]", "[case].load")
     race = c.contact in ("inner", "outer")
     if race and c.ball_diameter is not None:

@@ -187,7 +187,7 @@ def _schema_keys(model, prefix=""):
 
 
 def test_every_shaft_key_is_documented():
-    from ballrace.commands.shaft import _models
+    from ballrace.casefiles.shaft import _models
 
     section = _shaft_section()
     keys = sorted({k for _, k in _schema_keys(_models())})
