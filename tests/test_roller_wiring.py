@@ -139,7 +139,7 @@ def test_static_safety_of_a_straight_roller_set_against_iso_76():
     p = p_iso * math.sqrt(ratio / 5) * math.sqrt(b.E_prime / Ep_iso)
     assert r.max_pressure == pytest.approx(p, rel=1e-9)
     assert r.static_safety == pytest.approx((4000e6 / p) ** 2, rel=1e-9)
-    assert 1.1 < r.static_safety < 1.3                       # measured 1.20
+    assert 1.2 < r.static_safety < 1.35                      # measured 1.27
 
 
 def test_static_safety_below_one_warns_at_the_callers_line():
