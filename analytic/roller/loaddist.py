@@ -475,7 +475,7 @@ class RollerLoadDistribution:
         Parameters
         ----------
         j : int
-            Roller index, 0 ... Z-1 (roller 0 at the azimuth offset from +y).
+            Roller index [-], 0 ... Z-1 (roller 0 at the azimuth offset from +y).
         raceway : {"inner", "outer"}
             The contact.
         n_slices : int, optional
