@@ -203,9 +203,15 @@ def reference_rating_life(bearing, result, *, dynamic_rating=None, rotating: str
                           nominal_contact_angle=None) -> ReferenceRatingLife:
     r"""ISO/TS 16281 basic reference rating life L10r from any load-distribution result.
 
+    A roller bearing (:class:`ballrace.analytic.roller.RollerBearing`, or any bearing
+    with a ``reference_rating_life`` method) is handed to its own method: the lamina life
+    of ISO/TS 16281 (:func:`ballrace.analytic.roller.life.reference_rating_life`), whose
+    result has the same L10r, L_inner, L_outer, Q_ci, Q_ce, Q_ei, Q_ee, P_ref, C and
+    rotating.
+
     Parameters
     ----------
-    bearing : BallBearing
+    bearing : BallBearing or RollerBearing
         Geometry (D, Z, D_pw, f_i, f_o, rows).
     result : object
         A static solution with ``ball_loads`` [N] (one per ball, 0 for unloaded ones, a
@@ -253,6 +259,15 @@ def reference_rating_life(bearing, result, *, dynamic_rating=None, rotating: str
     from .bearing import BallBearing
     from .ratings import dynamic_rating as _rating
 
+    if not isinstance(bearing, BallBearing) and callable(
+            getattr(bearing, "reference_rating_life", None)):
+        # a roller bearing computes its own (lamina) life: no import of it here
+        if nominal_contact_angle is not None:
+            raise ValueError("nominal_contact_angle is for ball bearings; a roller bearing "
+                             "is rated at its own contact angle (give dynamic_rating [N] to "
+                             f"use another C); got {nominal_contact_angle!r}")
+        return bearing.reference_rating_life(result, dynamic_rating=dynamic_rating,
+                                             rotating=rotating)
     check_instance(bearing, "bearing", BallBearing)
     check_choice(rotating, "rotating", ("inner", "outer"))
     if hasattr(result, "ball_loads"):

@@ -34,6 +34,7 @@ AREA_TITLES = {
     "kinematics": "Kinematics and defect frequencies",
     "highspeed": "High speed: centrifugal force, gyroscopic moment, Jones equilibrium",
     "shaft": "Shafts on their bearings",
+    "roller": "Roller bearings and the finite line contact",
     "fem": "Finite-element checks",
 }
 

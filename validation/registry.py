@@ -45,6 +45,7 @@ CALC_MODULES = (
     "ballrace.validation.calc_ehl",
     "ballrace.validation.calc_kinematics",
     "ballrace.validation.calc_shaft",
+    "ballrace.validation.calc_roller",
     "ballrace.validation.calc_fem",
 )
 

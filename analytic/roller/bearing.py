@@ -158,9 +158,10 @@ class RollerBearing:
 
     Notes
     -----
-    The load ratings (ISO 281 C_r, ISO 76 C_0r) are not methods of this class yet: they
-    come from the roller rating functions of this package (``roller.ratings``) and will be
-    wired as ``dynamic_rating()`` / ``static_rating()`` when those exist.
+    Load ratings: :meth:`dynamic_rating` (ISO 281 C_r) and :meth:`static_rating` (ISO 76
+    C_0r) from :mod:`~ballrace.analytic.roller.ratings`; the ISO/TS 16281 reference rating
+    life of a solution: :meth:`reference_rating_life` (also reached through
+    :func:`ballrace.analytic.life.reference_rating_life`).
 
     Examples
     --------
@@ -405,6 +406,112 @@ class RollerBearing:
         """
         off = float(as_array(azimuth_offset, "azimuth_offset", unit="rad"))
         return off + 2.0 * np.pi * np.arange(self.n_rollers) / self.n_rollers
+
+    @property
+    def inner_raceway_radius(self) -> float:
+        """Radius of the inner raceway in the rolling direction at the middle of the roller,
+        D_we (1 - gamma) / (2 gamma) [m] ((d_m - D_we)/2 for a cylindrical bearing): with the
+        roller's D_we/2 it gives :attr:`inner_radius`."""
+        g = self.gamma
+        return 0.5 * self.roller_diameter * (1.0 - g) / g
+
+    @property
+    def outer_raceway_radius(self) -> float:
+        """Radius of the outer raceway in the rolling direction, negative (concave),
+        -D_we (1 + gamma) / (2 gamma) [m] (-(d_m + D_we)/2 for a cylindrical bearing): with
+        the roller's D_we/2 it gives :attr:`outer_radius`."""
+        g = self.gamma
+        return -0.5 * self.roller_diameter * (1.0 + g) / g
+
+    # ------------------------------------------------------------------ ratings and life
+    def dynamic_rating(self) -> float:
+        r"""Basic dynamic radial load rating C_r of ISO 281:2007 [N].
+
+        .. math:: C_r = b_m\, f_c\, (i\, L_{we}\cos\alpha)^{7/9} Z^{3/4} D_{we}^{29/27}
+
+        (N, mm inside) with b_m = 1.1 (cylindrical and tapered roller bearings, ISO 281:2007
+        Table 1), f_c from Lundberg & Palmgren's line-contact expression at
+        gamma = D_we cos(alpha)/d_m (:func:`~ballrace.analytic.roller.ratings.fc_factor`),
+        i = :attr:`n_rows`, alpha = :attr:`contact_angle` (0 cylindrical, the cup angle of a
+        tapered bearing), L_we = :attr:`roller_length`, D_we = :attr:`roller_diameter` (the
+        mean diameter of a tapered roller).  Both kinds are rated as radial bearings.
+
+        What was checked (:mod:`~ballrace.analytic.roller.ratings`): the f_c expression
+        against the ISO/TS 16281 raceway capacities and Lundberg & Palmgren's raceway
+        capacity (0.5 %), and the catalogue ratings of seven cylindrical roller bearings
+        (Oswald, Zaretsky & Poplawski, NASA/TM-2012-217115, 2012, Table III), recomputed
+        to +0.6 ... +0.9 % with L_we taken from the catalogue C_0r (also a validation case,
+        ``validation/cases/roller.toml``).  The printed f_c table of ISO 281 was not read.
+
+        Examples
+        --------
+        >>> from ballrace.analytic.roller import RollerBearing
+        >>> round(RollerBearing(13e-3, 11.8e-3, 14, 70.65e-3).dynamic_rating())
+        75809
+        """
+        from . import ratings
+
+        return float(ratings.dynamic_rating(self.roller_diameter, self.roller_length,
+                                            self.n_rollers, self.pitch_diameter,
+                                            self.contact_angle, self.n_rows,
+                                            b_m=ratings.B_M[self.kind]))
+
+    def static_rating(self) -> float:
+        r"""Basic static radial load rating C_0r of ISO 76:2006 [N].
+
+        .. math:: C_{0r} = 44\left(1 - \frac{D_{we}\cos\alpha}{d_m}\right)
+                  i\, Z\, L_{we}\, D_{we}\cos\alpha
+
+        (N, mm inside; :func:`~ballrace.analytic.roller.ratings.static_rating`), radial for
+        both kinds.  Checked: with ISO 76's most loaded roller, Q_max = 5 C_0r/(i Z cos a),
+        on a straight roller the inner contact reaches 3991 MPa for every geometry (the
+        4000 MPa of the definition; 44 is 44.2 rounded,
+        :func:`~ballrace.analytic.roller.ratings.static_rating_pressure`).  The static safety
+        of an actual load distribution is
+        :attr:`RollerLoadDistribution.static_safety
+        <ballrace.analytic.roller.loaddist.RollerLoadDistribution.static_safety>`.
+
+        Examples
+        --------
+        >>> from ballrace.analytic.roller import RollerBearing
+        >>> round(RollerBearing(13e-3, 11.8e-3, 14, 70.65e-3).static_rating())
+        77107
+        """
+        from . import ratings
+
+        return float(ratings.static_rating(self.roller_diameter, self.roller_length,
+                                           self.n_rollers, self.pitch_diameter,
+                                           self.contact_angle, self.n_rows))
+
+    def reference_rating_life(self, result, *, dynamic_rating=None, rotating: str = "inner"):
+        """ISO/TS 16281 basic reference rating life L10r of a solution of this bearing.
+
+        :func:`ballrace.analytic.roller.life.reference_rating_life` with the slice loads of
+        ``result`` (the cup's, and the cone's where they differ: ``slice_loads_inner``);
+        :func:`ballrace.analytic.life.reference_rating_life` hands a roller bearing to this
+        method.
+
+        Parameters
+        ----------
+        result : RollerLoadDistribution
+            A solution of this bearing (:meth:`solve`).
+        dynamic_rating : float, optional
+            C [N]; default :meth:`dynamic_rating`.
+        rotating : {"inner", "outer"}
+            Ring rotating relative to the load.
+
+        Returns
+        -------
+        ballrace.analytic.roller.life.ReferenceRatingLife
+        """
+        from . import life
+
+        bearing = getattr(result, "bearing", self)
+        if bearing is not self and bearing != self:
+            raise ValueError("result is the solution of another bearing: solve this bearing "
+                             "(bearing.solve(...)) and pass its result")
+        return life.reference_rating_life(self, result, dynamic_rating=dynamic_rating,
+                                          rotating=rotating)
 
     # ------------------------------------------------------------------ load distribution
     def solve(self, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, **kwargs):

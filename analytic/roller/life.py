@@ -258,6 +258,29 @@ class ReferenceRatingLife:
     rotating: str
     n_slices: int
 
+    @property
+    def Q_ci(self):
+        """Raceway capacity of the inner ring for the whole roller, q_ci n_s^(7/9) [N]
+        (the name of the ball-bearing result)."""
+        return self.q_ci * self.n_slices ** (7.0 / 9.0)
+
+    @property
+    def Q_ce(self):
+        """Raceway capacity of the outer ring for the whole roller, q_ce n_s^(7/9) [N]."""
+        return self.q_ce * self.n_slices ** (7.0 / 9.0)
+
+    @property
+    def Q_ei(self):
+        """Equivalent roller load of the inner raceway, Q_ci L_inner^(-1/4) [N]: the load of
+        a uniformly loaded roller (equal slices) that gives the inner ring the same life,
+        L_inner = (Q_ci / Q_ei)^4 (the ball result's Q_ei with the line-contact exponent)."""
+        return _s(self.Q_ci * np.asarray(self.L_inner, float) ** -0.25)
+
+    @property
+    def Q_ee(self):
+        """Equivalent roller load of the outer raceway, Q_ce L_outer^(-1/4) [N]."""
+        return _s(self.Q_ce * np.asarray(self.L_outer, float) ** -0.25)
+
     def hours(self, speed_rpm):
         """L10r in hours at ``speed_rpm`` [rev/min] [h]."""
         n = check_positive(speed_rpm, "speed_rpm", "rev/min")

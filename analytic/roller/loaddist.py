@@ -63,6 +63,7 @@ from ...errors import ConvergenceError
 from .._checks import as_array, check_integer, check_range
 from . import lamina
 from .bearing import RollerBearing
+from .profile import Profile
 
 __all__ = ["RollerLoadDistribution", "ConvergenceError", "solve", "DOF",
            "MAX_APPROACH_RATIO"]
@@ -383,10 +384,195 @@ class RollerLoadDistribution:
         (tapered; 0 for cylindrical: flanges not modelled) [N]."""
         return self.roller_loads * self.bearing.rib_load_ratio
 
+    @property
+    def slice_loads_inner(self):
+        """Slice loads at the inner raceway (cone), q_jk Q_i/Q_o [N], shape (..., Z, n_s)
+        (= :attr:`slice_loads` for a cylindrical bearing and for a tapered one with the
+        default rib angle, where Q_i = Q_o).  The ISO/TS 16281 life uses them for the
+        inner raceway."""
+        return self.slice_loads * self.bearing.inner_load_ratio
+
+    # ------------------------------------------------------------ pressures and safety
+    def slice_pressures(self, raceway: str = "inner"):
+        r"""Contact pressure of every slice of the lamina model at one raceway [Pa].
+
+        Each slice is taken as a 2-D Hertz line contact of its load per length
+        q_jk / w (w = L_we / n_s) on the reduced radius of the raceway contact, R_i or
+        R_o (:attr:`RollerBearing.inner_radius`, :attr:`RollerBearing.outer_radius`):
+
+        .. math:: p_{jk} = \sqrt{\frac{q_{jk}\,E'}{2\pi R\,w}}
+
+        (Johnson, *Contact Mechanics*, 1985, eq. 4.45 with E' = 2E*), the inner raceway
+        with the cone load q_jk Q_i/Q_o.  The slices are independent here: the pressure
+        peak at a roller end that the elastic half-space couples in is missing (see
+        :meth:`roller_contact`, which solves the finite line contact of a roller).
+
+        Parameters
+        ----------
+        raceway : {"inner", "outer"}
+            The contact.
+
+        Returns
+        -------
+        ndarray
+            Shape (..., Z, n_s) [Pa].
+        """
+        from .._checks import check_choice
+
+        check_choice(raceway, "raceway", ("inner", "outer"))
+        b = self.bearing
+        q = self.slice_loads_inner if raceway == "inner" else self.slice_loads
+        R = b.inner_radius if raceway == "inner" else b.outer_radius
+        return np.sqrt(q / b.slice_width * b.E_prime / (2.0 * math.pi * R))
+
+    @property
+    def max_pressure(self):
+        """Largest slice pressure of the lamina model over both raceways [Pa] (per load
+        case; :meth:`slice_pressures`)."""
+        p = np.maximum(self.slice_pressures("inner").max(axis=(-2, -1)),
+                       self.slice_pressures("outer").max(axis=(-2, -1)))
+        return _scalar(p)
+
+    @property
+    def static_safety(self):
+        r"""Static safety of the most loaded slice, s0 = (4000 MPa / p_max)^2 [-] (per case).
+
+        ISO 76:2006 bases C_0r of roller bearings on 4000 MPa at the most heavily loaded
+        contact; in a line contact the load grows as p^2, so s0 = (4000 MPa / p_max)^2
+        (:func:`~ballrace.analytic.ratings.static_safety_from_pressure`, ``kind="roller"``)
+        from :attr:`max_pressure`, the lamina pressure of the most loaded slice (clearance,
+        tilt and profile included).  ``inf`` without load.  :func:`solve` warns when it is
+        below 1.  The lamina pressure has no edge peak: a straight or edge-loaded roller
+        has a higher pressure at its end on the half-space (:meth:`roller_contact`).
+        """
+        from ..ratings import static_safety_from_pressure
+
+        return _scalar(static_safety_from_pressure(self.max_pressure, kind="roller"))
+
+    # ------------------------------------------------------------ finite line contact
+    def roller_contact(self, j: int, raceway: str = "inner", *, n_slices=None):
+        """The finite line contact of roller ``j`` on the elastic half-space, at its load
+        and tilt in this solution (:func:`~ballrace.analytic.roller.contact.line_contact`).
+
+        The lamina model's slices are independent springs; here the slices of one roller
+        are coupled through the half-space, which shows the pressure peaks at the roller
+        ends that the lamina model cannot.  The contact is solved with
+
+        * the roller's load at that raceway: :attr:`inner_loads` (cone) or
+          :attr:`roller_loads` (cup) [N];
+        * the roller's tilt against each raceway, :attr:`roller_tilts` (half the raceway
+          tilt; positive: the end at +x goes in, the frame of both models);
+        * R1 = D_we/2 and the raceway radius :attr:`RollerBearing.inner_raceway_radius` or
+          :attr:`RollerBearing.outer_raceway_radius` (reduced radius R_i or R_o);
+        * the bearing's profile exactly as the lamina model sees it (a logarithmic profile
+          given by name keeps the bearing's design load), seen once;
+        * ``n_slices`` slices, by default the bearing's, so that ``x`` are the lamina
+          slice centres and :meth:`slice_pressures` compare slice by slice.
+
+        The line contact is solved alone: its approach and load distribution along the
+        roller do not feed back into the bearing's equilibrium.
+
+        Parameters
+        ----------
+        j : int
+            Roller index [-], 0 ... Z-1 (roller 0 at the azimuth offset from +y).
+        raceway : {"inner", "outer"}
+            The contact.
+        n_slices : int, optional
+            Slices of the line contact [-], odd, >= 5; default the bearing's.
+
+        Returns
+        -------
+        LineContactResult
+
+        Raises
+        ------
+        ValueError
+            For a result of several load cases (index the load case first by solving it
+            alone), a bad roller index or raceway.
+        """
+        from .._checks import check_choice
+        from .contact import line_contact
+
+        check_choice(raceway, "raceway", ("inner", "outer"))
+        if self.roller_loads.ndim != 1:
+            raise ValueError(f"roller_contact needs a result of one load case; this one has "
+                             f"load cases of shape {self.roller_loads.shape[:-1]} (solve the "
+                             "case alone)")
+        Z = self.bearing.n_rollers
+        if isinstance(j, bool) or not isinstance(j, (int, np.integer)) or not -Z <= j < Z:
+            raise ValueError(f"j must be a roller index in [0, {Z - 1}]; got {j!r}")
+        b = self.bearing
+        Q = float((self.inner_loads if raceway == "inner" else self.roller_loads)[j])
+        R2 = b.inner_raceway_radius if raceway == "inner" else b.outer_raceway_radius
+        n = b.n_slices if n_slices is None else n_slices
+        return line_contact(Q, 0.5 * b.roller_diameter, R2, b.roller_length, b.material,
+                            b.material, profile=_bound_profile(b),
+                            tilt=math.atan(float(self.roller_tilts[j])), n_slices=n)
+
+    def roller_contacts(self, raceway: str = "inner", *, n_slices=None) -> dict:
+        """:meth:`roller_contact` of every loaded roller: ``{j: LineContactResult}`` in
+        roller order [-].
+
+        Parameters
+        ----------
+        raceway : {"inner", "outer"}
+            The contact.
+        n_slices : int, optional
+            Slices of the line contacts [-]; default the bearing's.
+        """
+        if self.roller_loads.ndim != 1:
+            raise ValueError(f"roller_contacts needs a result of one load case; this one has "
+                             f"load cases of shape {self.roller_loads.shape[:-1]}")
+        return {int(j): self.roller_contact(int(j), raceway, n_slices=n_slices)
+                for j in np.flatnonzero(self.roller_loads > 0)}
+
 
 def _scalar(x):
     a = np.asarray(x)
     return float(a) if a.ndim == 0 else a
+
+
+class _BoundProfile(Profile):
+    """A bearing's profile evaluated in the bearing's own context, whatever contact it is
+    used in: the finite line contact of a roller then sees the very drop the lamina model
+    sees (a logarithmic profile given by name keeps the bearing's design load)."""
+
+    def __init__(self, profile, context):
+        self.profile, self.context = profile, context
+        self.name = profile.name
+
+    def _drop(self, ax, u, x, ctx):
+        return np.asarray(self.profile.drop(x, self.context), dtype=float)
+
+    def __repr__(self) -> str:
+        return f"{self.profile!r} (of the bearing)"
+
+
+def _bound_profile(bearing: RollerBearing) -> Profile:
+    return _BoundProfile(bearing.profile, bearing.profile_context)
+
+
+def _warn_overload(r: "RollerLoadDistribution") -> "RollerLoadDistribution":
+    """``r``, after a UserWarning (at the user's line) when its static safety is below 1;
+    nothing inside a nested solve that silences the operating checks."""
+    from .. import _operating
+
+    if _operating.silenced() or not r.roller_loads.size:
+        return r
+    s0 = np.asarray(r.static_safety, float)
+    bad = s0 < 1.0
+    if not np.any(bad):
+        return r
+    i = np.unravel_index(int(np.argmin(s0)), s0.shape) if s0.ndim else ()
+    p = float(np.asarray(r.max_pressure, float)[i])
+    cases = "" if s0.ndim == 0 or s0.size == 1 else f" in {int(bad.sum())} of {s0.size} load cases"
+    _operating.warn(f"roller load distribution: static safety s0 = {float(s0[i]):.3g} < 1{cases}: "
+                    f"the most loaded slice of the lamina model reaches p_max = {p / 1e6:.0f} "
+                    f"MPa, above the 4000 MPa on which ISO 76 bases C_0r of roller bearings "
+                    "(s0 = (4000 MPa / p_max)^2); the permanent raceway deformation exceeds "
+                    "the 1e-4 D_we that C_0r allows")
+    return r
 
 
 # =========================================================================== solve
@@ -565,8 +751,8 @@ def solve(bearing: RollerBearing, Fa=0.0, Fy=0.0, Fz=0.0, My=0.0, Mz=0.0, *,
         out_J[i] = (Ga.T * (_N * model.c * r)) @ Ga          # the exact tangent, all DOFs
         iters = max(iters, it)
     log.debug("roller load distribution: %d cases, at most %d Newton iterations", N, iters)
-    return _checked(bearing, model, out_u, out_J, out_q, out_d, F_app, imposed, shape, Pd,
-                    iters, rtol)
+    return _warn_overload(_checked(bearing, model, out_u, out_J, out_q, out_d, F_app,
+                                   imposed, shape, Pd, iters, rtol))
 
 
 def _check_case(bearing, L, imposed):
