@@ -655,7 +655,8 @@ class ShaftResult:
         are those of the shaft frame mapped by :data:`MIRROR`), or a tuple of two
         (bearing 1, bearing 2) for a duplex pair; ball loads, contact angles, Hertz
         contacts, subsurface shear and truncation as for a single bearing.  Built on
-        first access by loaddist's own checked solver with every DOF imposed."""
+        first access by loaddist's own checked solver with every DOF imposed.  For any
+        other seat bearing: its rows' :meth:`~ballrace.analytic.contract.Row.result`."""
         from . import _operating
 
         out = []
