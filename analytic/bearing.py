@@ -364,7 +364,7 @@ class BallBearing:
             Contact angle beta [rad].
         """
         b = as_array(contact_angle, "contact_angle")
-        return hertz._scalar(self.ball_diameter * np.cos(b) / self.pitch_diameter)
+        return hertz.scalar_result(self.ball_diameter * np.cos(b) / self.pitch_diameter)
 
     def curvature(self, race: str, contact_angle) -> hertz.Curvature:
         r"""Effective radii Rx, Ry of the ball–race contact at contact angle beta.
@@ -410,7 +410,7 @@ class BallBearing:
         f = self.f_inner if race == "inner" else self.f_outer
         Rx = 0.5 * D * (1.0 - g) if race == "inner" else 0.5 * D * (1.0 + g)
         Ry = f * D / (2.0 * f - 1.0) + 0.0 * Rx
-        return hertz.Curvature(Rx=hertz._scalar(Rx), Ry=hertz._scalar(Ry))
+        return hertz.Curvature(Rx=hertz.scalar_result(Rx), Ry=hertz.scalar_result(Ry))
 
     def contact_stiffness(self, contact_angle, method: str = "exact"):
         r"""Load–deflection constants of the inner, outer and ball-between-races contacts.
@@ -449,7 +449,7 @@ class BallBearing:
         Ki = hertz.contact_stiffness(ci.Rx, ci.Ry, Ep, method)
         Ko = hertz.contact_stiffness(co.Rx, co.Ry, Ep, method)
         Kn = (Ki ** (-2.0 / 3.0) + Ko ** (-2.0 / 3.0)) ** -1.5
-        return Ki, Ko, hertz._scalar(Kn)
+        return Ki, Ko, hertz.scalar_result(Kn)
 
     def contacts(self, ball_loads, contact_angles, race: str,
                  method: str = "exact") -> hertz.HertzContact:
@@ -551,3 +551,43 @@ class BallBearing:
         """Basic static load rating C0 [N]; see :func:`ballrace.analytic.ratings.static_rating`."""
         from .ratings import static_rating
         return static_rating(self)
+
+    # ------------------------------------------------------------------ shaft seat
+    # The seat contract (ballrace.analytic.contract.SeatBearing): one ball row.  Plain
+    # class attributes, not dataclass fields.
+    accepts_clearance = True
+    carries_axial = True
+    life_exponent = 3.0
+    seat_name = "single"
+
+    def seat_rows(self, direction, offset, row_spacing, clearance):
+        """The bearing as a shaft seat: its one row (a
+        :class:`~ballrace.analytic.loaddist.RingModel`), centred at the seat; see
+        :meth:`ballrace.analytic.contract.SeatBearing.seat_rows` (direction [-], offset
+        [m], row_spacing [m], clearance [m] or None)."""
+        from .contract import RowMount
+        from .loaddist import RingModel
+        if self.n_rows != 1:
+            raise ValueError(f"bearing must be single-row (n_rows=1); got n_rows={self.n_rows}")
+        return (RowMount(RingModel(self, clearance), direction, 0.0, offset, True),)
+
+    def spring_axial_load(self, direction) -> float:
+        """No spring inside a single bearing: 0 [N] (direction [-] unused)."""
+        return 0.0
+
+    def equivalent_load(self, radial_load, axial_load, contact_angle=None):
+        """Dynamic equivalent load P [N] (ISO 281:2007, clause 6.2, X and Y from the
+        geometry; :func:`ballrace.analytic.life.equivalent_load_for`), or None where the
+        standard gives none; radial_load, axial_load [N], contact_angle [rad]."""
+        from .life import equivalent_load_for
+        try:
+            return float(equivalent_load_for(self, radial_load, axial_load,
+                                             contact_angle=contact_angle).P)
+        except ValueError:
+            return None
+
+    def seat_warnings(self, what, results, tilt) -> tuple:
+        """Static safety, contact angle and tilt messages of the seat
+        (:func:`ballrace.analytic.loaddist.seat_warnings`); tilt [rad]."""
+        from .loaddist import seat_warnings
+        return seat_warnings(self, what, results, tilt)

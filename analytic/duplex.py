@@ -52,7 +52,7 @@ from .bearing import BallBearing
 from ..errors import ConvergenceError
 from . import newton
 from .newton import POLICY
-from .loaddist import MAX_APPROACH_RATIO, _fold_unloaded, _kn, _Model
+from .loaddist import MAX_APPROACH_RATIO, BallModel, fold_unloaded
 
 __all__ = ["ARRANGEMENTS", "DuplexPair", "DuplexResult", "axial_load", "axial_deflection",
            "power_law_unloading_ratio"]
@@ -75,7 +75,7 @@ def _groove_centres(bearing, da, dr):
 
 def _constants(bearing):
     """(A, sin beta_f, cos beta_f, psi, cos psi) of a bearing, cached with its model."""
-    m = _Model.of(bearing)
+    m = BallModel.of(bearing)
     hit = _CONST.get(id(m))
     if hit is None or hit[0] is not m:
         if len(_CONST) > 256:                                # bounded: models come and go
@@ -102,16 +102,16 @@ def _forces(bearing, da, dr, jac=False):
     s = np.hypot(x, z)
     b = np.arctan2(z, x)
     # K_n from the bearing model's table (exact Hertz to 1e-13, as in loaddist.solve)
-    model = _Model.of(bearing)
+    model = BallModel.of(bearing)
     sb = np.maximum(s, 1e-300)
     c, sn = x / sb, z / sb
-    Kn, dlnK = _kn(model, b, c, sn)
+    Kn, dlnK = model.contact_stiffness(b, c, sn)
     # half-torus grooves: no contact where the groove-centre line points inwards (x <= 0);
     # unloaded balls report that line's angle folded into (-pi/2, pi/2] (as in loaddist)
     d = np.where(x > 0, np.maximum(s - A, 0.0), 0.0)
     sq = np.sqrt(d)
     Q = Kn * d * sq
-    b = _fold_unloaded(b, Q)
+    b = fold_unloaded(b, Q)
     cpsi = _constants(bearing)[4]
     Fa = np.sum(Q * np.sin(b), axis=-1)
     Fr = np.sum(Q * np.cos(b) * cpsi, axis=-1)
@@ -245,7 +245,7 @@ def _inverse(bearing, F, rtol=1e-13, max_iter=200, name="Fa"):
     A = bearing.curvature_center_distance
     # upper end from the point-contact power law at the free angle, F = Z K_n
     # sin(b_f) (da sin(b_f))^1.5 (no more than a guess: the angle grows with the load)
-    m = _Model.of(bearing)
+    m = BallModel.of(bearing)
     sf = max(float(np.sin(m.beta_f)), 0.1)
     lo, hi = 0.0, min(1.5 * (F / (m.Z * m.Kn_free * sf)) ** (2.0 / 3.0) / sf, A)
     if not hi > 0.0:
@@ -659,7 +659,7 @@ class DuplexPair:
         if self.arrangement != "DT" and P == 0 and Fa == 0 and Fr > 0:
             log.info("duplex: no preload and no axial load; the radial load alone sets "
                      "the axial position")
-        cap = 2.0 * _Model.of(self.bearing).capacity
+        cap = 2.0 * BallModel.of(self.bearing).capacity
         if max(abs(Fa) + P, Fr) > cap:
             raise ValueError(
                 f"Fa={Fa!r} N, Fr={Fr!r} N (preload {P:g} N) are beyond the load-deflection "
@@ -712,3 +712,56 @@ class DuplexPair:
             ball_loads=Q, contact_angles=b, stiffness=K, unloading_load=self.unloading_load,
             separated=bool(np.any(np.max(Q, axis=-1) == 0.0)),
             residual=float(np.max(np.abs(r if radial_free else r[:1])))))
+
+    # ------------------------------------------------------------------ shaft seat
+    # The seat contract (ballrace.analytic.contract.SeatBearing): two ball rows.  Plain
+    # class attributes, not dataclass fields.
+    accepts_clearance = False           # the rows keep their preload
+    carries_axial = True
+    life_exponent = 3.0
+
+    @property
+    def seat_name(self) -> str:
+        """"pair DB", "pair DF" or "pair DT" (for tables)."""
+        return "pair " + self.arrangement
+
+    def seat_rows(self, direction, offset, row_spacing, clearance):
+        """The pair as a shaft seat: its two rows (bearing 1, bearing 2), each at the
+        preload deflection delta_0 plus the seat's offset, and kept there at the start;
+        see :meth:`ballrace.analytic.contract.SeatBearing.seat_rows` (direction [-],
+        offset [m], row_spacing [m], clearance [m] or None).
+
+        The rows follow the arrangement: in DT both take thrust the same way; in DB (O) a
+        row carrying +x shaft thrust sits on the -x side of the seat, in DF (X) on the +x
+        side."""
+        from .contract import RowMount
+        from .loaddist import RingModel
+        if self.bearing.n_rows != 1:
+            raise ValueError("bearing must be single-row (n_rows=1); got "
+                             f"n_rows={self.bearing.n_rows}")
+        row = RingModel(self.bearing, clearance)     # one model: both rows evaluated together
+        d = direction
+        d0 = self.preload_deflection + offset
+        h = 0.5 * row_spacing
+        if self.arrangement == "DT":
+            return (RowMount(row, d, -h, d0, False), RowMount(row, d, h, d0, False))
+        s = -1.0 if self.arrangement == "DB" else 1.0
+        return (RowMount(row, d, s * d * h, d0, False), RowMount(row, -d, -s * d * h, d0, False))
+
+    def spring_axial_load(self, direction) -> float:
+        """The seat's reaction gains ``-direction * P`` for a DT pair's spring preload P
+        [N] (Fa = 2 F(delta) - P); 0 for DB and DF.  direction: +1 or -1 [-]."""
+        if self.arrangement == "DT":
+            return -direction * self.preload
+        return 0.0
+
+    def equivalent_load(self, radial_load, axial_load, contact_angle=None):
+        """None: a preloaded pair has no catalog (C/P)^3 life here (its rows' ISO/TS 16281
+        lives apply); radial_load, axial_load [N], contact_angle [rad] unused."""
+        return None
+
+    def seat_warnings(self, what, results, tilt) -> tuple:
+        """Static safety, contact angle and tilt messages of the seat's two rows
+        (:func:`ballrace.analytic.loaddist.seat_warnings`); tilt [rad]."""
+        from .loaddist import seat_warnings
+        return seat_warnings(self.bearing, what, results, tilt)

@@ -1355,10 +1355,23 @@ def approximation_errors(alpha_r, method: str) -> dict[str, np.ndarray]:
             for q in ("k", "ellipk", "ellipe", "a", "b", "approach", "p_max")}
 
 
-def _scalar(x):
-    """0-d arrays become numpy scalars; other arrays pass through."""
+def scalar_result(x):
+    """A broadcasting formula's result as the caller expects it: a 0-d array becomes a
+    numpy scalar (scalar inputs give a scalar), any other array passes through unchanged.
+
+    The one place the package turns 0-d results into scalars; other modules wrap their
+    results with it so that scalar in, scalar out holds alike everywhere.
+
+    Parameters
+    ----------
+    x : array_like
+        The result, in whatever unit it carries [-].
+    """
     x = np.asarray(x)
     return x[()] if x.ndim == 0 else x
+
+
+_scalar = scalar_result          # the module's own short name
 
 
 def _error_table() -> str:  # pragma: no cover - documentation generator

@@ -183,7 +183,7 @@ def ball_mass(D, density):
     D = check_positive(D, "D", "m", bounded=True)
     rho = check_positive(density, "density", "kg/m^3", bounded=True)
     D, rho = broadcast(D=D, density=rho)
-    return hertz._scalar(rho * np.pi * D**3 / 6.0)
+    return hertz.scalar_result(rho * np.pi * D**3 / 6.0)
 
 
 def ball_inertia(D, density):
@@ -207,7 +207,7 @@ def ball_inertia(D, density):
     >>> round(float(ball_inertia(22.225e-3, 7850.0)) * 1e6, 4)   # [kg mm^2]
     2.2288
     """
-    return hertz._scalar(np.asarray(ball_mass(D, density)) * np.asarray(D, float) ** 2 / 10.0)
+    return hertz.scalar_result(np.asarray(ball_mass(D, density)) * np.asarray(D, float) ** 2 / 10.0)
 
 
 def centrifugal_force(D, density, d_m, orbital_speed):
@@ -242,7 +242,7 @@ def centrifugal_force(D, density, d_m, orbital_speed):
     d_m = check_positive(d_m, "d_m", "m", bounded=True)
     w = as_array(orbital_speed, "orbital_speed", bounded=True, tiny_ok=True, unit="rad/s")
     broadcast(D=D, density=density, d_m=d_m, orbital_speed=w)
-    return hertz._scalar(0.5 * m * d_m * w * w)
+    return hertz.scalar_result(0.5 * m * d_m * w * w)
 
 
 def gyroscopic_moment(D, density, ball_speed, orbital_speed, pitch_angle):
@@ -281,7 +281,7 @@ def gyroscopic_moment(D, density, ball_speed, orbital_speed, pitch_angle):
     b = check_range(pitch_angle, "pitch_angle", -np.pi / 2, np.pi / 2, low_inclusive=True,
                     high_inclusive=True, unit="rad")
     broadcast(D=D, density=density, ball_speed=wR, orbital_speed=wc, pitch_angle=b)
-    return hertz._scalar(J * wR * wc * np.sin(b))
+    return hertz.scalar_result(J * wR * wc * np.sin(b))
 
 
 # =========================================================================== model
@@ -1342,8 +1342,8 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
     if friction_coefficient is not None:
         mu = float(check_positive(friction_coefficient, "friction_coefficient", "-"))
     rtol = float(check_range(rtol, "rtol", 0.0, 1e-3, high_inclusive=True, unit="-"))
-    from .loaddist import _check_loads, _Model as _StaticModel
-    _check_loads(_StaticModel.of(bearing), L[None])     # overload: the static model's words
+    from .loaddist import check_load_range
+    check_load_range(bearing, L[None])     # overload: the static model's words
     model = _Model.of(bearing)
     psi = bearing.azimuths(0.0)
     Z = model.Z

@@ -74,6 +74,8 @@ __all__ = [
     "MOMENT_ARMS",
     "solve",
     "ring_forces",
+    "RingModel",
+    "MAX_APPROACH_RATIO",
     "radial",
     "thrust",
     "combined",
@@ -274,13 +276,41 @@ def ball_stiffness(bearing: BallBearing, contact_angle):
     b = check_range(contact_angle, "contact_angle", -np.pi, np.pi, low_inclusive=True,
                     high_inclusive=True, unit="rad")
     Kn, d = _kn_exact(_Model.of(bearing), b)
-    return hertz._scalar(Kn), hertz._scalar(d)
+    return hertz.scalar_result(Kn), hertz.scalar_result(d)
 
 
 # =========================================================================== model
 @dataclass(frozen=True)
-class _Model:
-    """Plain numbers of a bearing used by the kernels."""
+class BallModel:
+    """Plain numbers of a single-row ball bearing used by the kernels (frozen; one per
+    bearing, cached: build it with :meth:`of`).
+
+    Other ball-row models (:mod:`~ballrace.analytic.duplex`,
+    :mod:`~ballrace.analytic.highspeed`) share it so that every model uses the same ball
+    stiffness and load range.
+
+    Attributes
+    ----------
+    D, dm, A, Ri : float
+        Ball diameter, pitch diameter, groove curvature-centre distance, inner-groove
+        centre radius [m].
+    Ep : float
+        Effective modulus E' [Pa].
+    Ry_i, Ry_o : float
+        Transverse radii of the inner and outer contact [m].
+    Z : int
+        Number of balls [-].
+    beta_f : float
+        Free contact angle [rad].
+    Pd : float
+        Diametral clearance [m].
+    table : ndarray or None
+        Chebyshev table of ln K_n(beta) (None: exact Hertz at every call) [-].
+    Kn_free : float
+        K_n at the free contact angle [N/m^1.5].
+    capacity : float
+        Largest resultant the balls carry within :data:`MAX_APPROACH_RATIO` [N].
+    """
 
     D: float
     dm: float
@@ -298,7 +328,7 @@ class _Model:
     geos: dict = field(default_factory=dict, repr=False, compare=False)  # _geo() cache
 
     @staticmethod
-    def of(b: BallBearing) -> "_Model":
+    def of(b: BallBearing) -> "BallModel":
         """The model of bearing ``b``: looked up by identity (a dict and a weak reference,
         about 0.3 us), else by value (hashing the frozen bearing, some us), else built."""
         hit = _MODELS.get(id(b))
@@ -315,13 +345,13 @@ class _Model:
 
     @staticmethod
     @functools.lru_cache(maxsize=64)
-    def _of(b: BallBearing) -> "_Model":
+    def _of(b: BallBearing) -> "BallModel":
         if b.n_rows != 1:
             raise NotImplementedError(
                 f"load distribution is implemented for single-row bearings (n_rows=1); "
                 f"got n_rows={b.n_rows}")
         D = b.ball_diameter
-        m = _Model(D=D, dm=b.pitch_diameter, A=b.curvature_center_distance,
+        m = BallModel(D=D, dm=b.pitch_diameter, A=b.curvature_center_distance,
                    Ri=b.inner_groove_center_radius, Ep=b.E_prime,
                    Ry_i=b.f_inner * D / (2 * b.f_inner - 1),
                    Ry_o=b.f_outer * D / (2 * b.f_outer - 1), Z=b.n_balls,
@@ -331,6 +361,15 @@ class _Model:
         cap = m.Z * Kmax * (MAX_APPROACH_RATIO * D) ** 1.5
         return replace(m, table=_kn_table(m), Kn_free=Kf, capacity=cap)
 
+
+    def contact_stiffness(self, beta, c=None, sn=None):
+        """Ball stiffness K_n(beta) [N/m^1.5] and d ln K_n / d beta [1/rad] (arrays) from
+        the model's table (exact Hertz where it does not reach); ``c``, ``sn``: cos(beta),
+        sin(beta) [-] when known.  beta: contact angles [rad]."""
+        return _kn(self, beta, c, sn)
+
+
+_Model = BallModel               # the module's own short name
 
 #: id(bearing) -> (weak reference to it, its _Model): see _Model.of
 _MODELS: dict = {}
@@ -1083,7 +1122,7 @@ class LoadDistribution:
     @property
     def max_ball_load(self):
         """Largest ball load Q_max [N]."""
-        return hertz._scalar(np.max(self.ball_loads, axis=-1))
+        return hertz.scalar_result(np.max(self.ball_loads, axis=-1))
 
     @property
     def residual(self):
@@ -1097,29 +1136,30 @@ class LoadDistribution:
         sc[3:] = self.bearing.inner_groove_center_radius
         r = np.abs(self.residual / sc).max(-1)
         scale = np.maximum(np.abs(self.applied / sc).max(-1), self.max_ball_load)
-        return hertz._scalar(np.where(scale > 0, r / np.where(scale > 0, scale, 1.0), r))
+        return hertz.scalar_result(np.where(scale > 0, r / np.where(scale > 0, scale, 1.0), r))
 
     @property
     def axial_deflection(self):
         """Axial deflection of the bearing: the inner ring's displacement dx relative to the
         outer ring from the reference configuration [m]."""
-        return hertz._scalar(self.displacements[..., 0])
+        return hertz.scalar_result(self.displacements[..., 0])
 
     @property
     def radial_deflection(self):
         """Radial deflection of the bearing sqrt(dy^2 + dz^2) [m] (inner ring relative to
         the outer ring, from the reference configuration)."""
-        return hertz._scalar(np.hypot(self.displacements[..., 1], self.displacements[..., 2]))
+        return hertz.scalar_result(np.hypot(self.displacements[..., 1],
+                                            self.displacements[..., 2]))
 
     @property
     def misalignment(self):
         """Tilt of the inner ring sqrt(theta_y^2 + theta_z^2) [rad]."""
-        return hertz._scalar(np.hypot(self.displacements[..., 3], self.displacements[..., 4]))
+        return hertz.scalar_result(np.hypot(self.displacements[..., 3], self.displacements[..., 4]))
 
     @property
     def max_pressure(self):
         """Largest contact pressure p_max over the balls and both races [Pa] (per case)."""
-        return hertz._scalar(np.maximum(np.max(np.asarray(self.inner.p_max), axis=-1),
+        return hertz.scalar_result(np.maximum(np.max(np.asarray(self.inner.p_max), axis=-1),
                                         np.max(np.asarray(self.outer.p_max), axis=-1)))
 
     @property
@@ -1134,7 +1174,7 @@ class LoadDistribution:
         P0 = X0 Fr + Y0 Fa) it sees the load distribution the bearing really has.
         """
         from .ratings import static_safety_from_pressure
-        return hertz._scalar(static_safety_from_pressure(self.max_pressure))
+        return hertz.scalar_result(static_safety_from_pressure(self.max_pressure))
 
     @functools.cached_property
     def loaded_zone(self):
@@ -1148,7 +1188,7 @@ class LoadDistribution:
         model = _Model.of(self.bearing)
         u = self.displacements.reshape(-1, 5)
         x0 = model.A - 0.5 * self.clearance
-        return hertz._scalar(_loaded_zone(model, x0, self.axial_offset, u)
+        return hertz.scalar_result(_loaded_zone(model, x0, self.axial_offset, u)
                              .reshape(self.displacements.shape[:-1]))
 
     # ------------------------------------------------------------------ contacts
@@ -1198,13 +1238,13 @@ class LoadDistribution:
         c = self.inner if race == "inner" else self.outer
         f = self.bearing.f_inner if race == "inner" else self.bearing.f_outer
         half = np.arcsin(np.clip(np.asarray(c.a) / (f * self.bearing.ball_diameter), 0.0, 1.0))
-        return hertz._scalar(theta_s - (np.abs(self.contact_angles) + half))
+        return hertz.scalar_result(theta_s - (np.abs(self.contact_angles) + half))
 
     def truncated(self, race: str):
         """Per ball: True where the contact ellipse runs over the shoulder (``None`` if no
         shoulder height was given); see :meth:`truncation_margin`."""
         m = self.truncation_margin(race)
-        return None if m is None else hertz._scalar((np.asarray(m) < 0) & (self.ball_loads > 0))
+        return None if m is None else hertz.scalar_result((np.asarray(m) < 0) & (self.ball_loads > 0))
 
 
 def _loaded_zone(model, x0, z0, u):
@@ -1246,17 +1286,27 @@ def _loaded_zone(model, x0, z0, u):
 
 
 # =========================================================================== public solvers
-def _fold_unloaded(beta, Q):
+def fold_unloaded(beta, Q):
     """Contact angles with those of unloaded balls folded into (-pi/2, pi/2] [rad].
 
     An unloaded ball reports the angle of its line of groove centres (a line has no sense,
     so atan2's pi on the far side becomes 0).  Loaded balls have x > 0 and |beta| <= pi/2
     already; they are left alone, so a loaded ball at beta = -pi/2 in floating point keeps
     its sign (and its thrust).
+
+    Parameters
+    ----------
+    beta : array_like
+        Contact angles [rad].
+    Q : array_like
+        Ball loads [N] (same shape).
     """
     unl = ~(np.asarray(Q) > 0)
     beta = np.where(unl & (np.abs(beta) > 0.5 * np.pi), beta - np.copysign(np.pi, beta), beta)
     return np.where(unl & (beta <= -0.5 * np.pi), beta + np.pi, beta)
+
+
+_fold_unloaded = fold_unloaded
 
 
 def _plain(v) -> bool:
@@ -1295,6 +1345,20 @@ def _check_loads(model, L):
             f"load-deflection range of the bearing: {model.Z} balls carry at most "
             f"{cap:.4g} N (moments over the arm {arm:.4g} m) at a contact approach of "
             f"{MAX_APPROACH_RATIO:g} D")
+
+
+def check_load_range(bearing: BallBearing, loads) -> None:
+    """ValueError if loads exceed what the bearing's balls carry within the model's range
+    (:data:`MAX_APPROACH_RATIO`): the same check and words as :func:`solve`.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        Single-row bearing.
+    loads : array_like
+        (Fa, Fy, Fz [N], My, Mz [N m]), shape (5,) or (N, 5).
+    """
+    _check_loads(_Model.of(bearing), np.reshape(np.asarray(loads, float), (-1, 5)))
 
 
 def _result(bearing, model, psi, x0, z0, Pd, u, applied, imposed, arm, iters, shape, method,
@@ -1668,6 +1732,162 @@ def ring_forces(bearing: BallBearing, displacements, *, moment_arm: str = "groov
     shape = u.shape[:-1]
     st = _State(model, geo, u.reshape(-1, 5), moment_arm)
     return st.F.reshape(shape + (5,)), st.J.reshape(shape + (5, 5))
+
+
+class RingModel:
+    r"""One ball row at a fixed clearance, as a shaft seat sees it: the
+    :class:`~ballrace.analytic.contract.Row` of a :class:`~ballrace.BallBearing`.
+
+    The model of :func:`solve` (exact-Hertz K_n(beta) at each ball's own angle, contact
+    angles free, groove moment arm) evaluated at imposed inner-ring displacements, with the
+    bearing's model, reference configuration and ball kinematics built once: the fast path
+    an outer Newton iteration (:mod:`~ballrace.analytic.shaft`) calls many times.  Two ring
+    models of equal bearings at the same clearance compare equal (their rows are evaluated
+    together).
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        Single-row bearing.
+    clearance : float, optional
+        Diametral clearance P_d of the reference configuration [m], < 2A; default the
+        bearing's.
+
+    Attributes
+    ----------
+    reference_axial_offset : float
+        z0 of the just-touching reference [m] (0 without clearance); at u_x = -z0 the balls
+        sit at the groove bottoms.
+    approach_limit : float
+        :data:`MAX_APPROACH_RATIO` D [m].
+    step_length : float
+        Groove curvature-centre distance A [m].
+    moment_radius : float
+        Inner-groove centre radius R_i [m].
+
+    Examples
+    --------
+    >>> import ballrace
+    >>> brg = ballrace.BallBearing(22.225e-3, 16, 125.26e-3, 0.5232, 0.5232,
+    ...                            free_contact_angle=np.radians(40))
+    >>> r = solve(brg, Fa=17800.0, Fy=8900.0, Mz=-200.0)
+    >>> F, K, dmax, energy = RingModel(brg).ring_forces(r.displacements[None])
+    >>> bool(np.allclose(F[0], r.loads, rtol=1e-12))
+    True
+    """
+
+    __slots__ = ("bearing", "clearance", "_model", "_geo", "reference_axial_offset",
+                 "approach_limit", "step_length", "moment_radius", "_key")
+
+    def __init__(self, bearing: BallBearing, clearance=None):
+        if not isinstance(bearing, BallBearing):
+            raise TypeError(f"bearing must be a ballrace.BallBearing; got "
+                            f"{type(bearing).__name__}")
+        model = _Model.of(bearing)
+        _, x0, z0 = _reference(model, clearance, False)
+        self.bearing, self.clearance = bearing, clearance
+        self._model = model
+        self._geo = _geo(model, bearing, 0.0, x0, z0)
+        self.reference_axial_offset = z0
+        self.approach_limit = MAX_APPROACH_RATIO * bearing.ball_diameter
+        self.step_length = bearing.curvature_center_distance
+        self.moment_radius = bearing.inner_groove_center_radius
+        self._key = (bearing, clearance)
+
+    def __eq__(self, other):
+        return type(other) is RingModel and self._key == other._key
+
+    def __hash__(self):
+        return hash(self._key)
+
+    def __repr__(self):
+        return f"RingModel({self.bearing!r}, clearance={self.clearance!r})"
+
+    def _state(self, u):
+        return _State(self._model, self._geo, np.asarray(u, float).reshape(-1, 5), "groove")
+
+    def ring_forces(self, u):
+        """Ball-force resultant on the inner ring, its analytic tangent, largest approach
+        and elastic energy at imposed displacements, every DOF imposed (no equilibrium
+        iteration); the same numbers as ``solve(bearing, displacements=u,
+        clearance=clearance)`` (``.loads``, ``.stiffness``).
+
+        Parameters
+        ----------
+        u : ndarray, shape (N, 5)
+            Inner-ring displacements (dx, dy, dz [m], theta_y, theta_z [rad]).
+
+        Returns
+        -------
+        F : ndarray, shape (N, 5)
+            (Fa, Fy, Fz [N], My, Mz [N m]).
+        K : ndarray, shape (N, 5, 5)
+            dF/du [N/m, N/rad, N m/m, N m/rad].
+        delta_max : ndarray, shape (N,)
+            Largest ball approach [m].
+        energy : ndarray, shape (N,)
+            Elastic energy of the ball contacts, sum 2/5 K_n(beta_j) delta_j^(5/2) [J]
+            (the potential of F with K_n held at each ball's angle).
+        """
+        st = self._state(u)
+        d = st.delta
+        return st.F, st.J, d.max(1), 0.4 * (st.Kn * d * d * np.sqrt(d)).sum(1)
+
+    def element_loads(self, u) -> np.ndarray:
+        """Ball loads [N], shape u.shape[:-1] + (Z,), at displacements u (..., 5)
+        [m, rad]."""
+        u = np.asarray(u, float)
+        return self._state(u).Q.reshape(u.shape[:-1] + (-1,))
+
+    def result(self, u) -> "LoadDistribution":
+        """The checked :class:`LoadDistribution` at imposed displacements u (5,) [m, rad]."""
+        return solve(self.bearing, displacements=np.asarray(u, float), clearance=self.clearance)
+
+    def rating_life(self, u, *, dynamic_rating=None, rotating: str = "inner",
+                    nominal_contact_angle=None):
+        """ISO/TS 16281 reference rating life of the row at displacements u (..., 5)
+        [m, rad] (:func:`~ballrace.analytic.iso16281.reference_rating_life` of its ball
+        loads); dynamic_rating [N], nominal_contact_angle [rad] as there."""
+        from .iso16281 import reference_rating_life
+        return reference_rating_life(self.bearing, _BallLoads(self.element_loads(u)),
+                                     dynamic_rating=dynamic_rating, rotating=rotating,
+                                     nominal_contact_angle=nominal_contact_angle)
+
+
+@dataclass(frozen=True)
+class _BallLoads:
+    """Ball loads of one row [N] (what the ISO/TS 16281 life reads from a result)."""
+
+    ball_loads: np.ndarray
+
+
+def seat_warnings(bearing: BallBearing, what: str, results, tilt) -> tuple:
+    """Messages (str or None) for ball rows working beyond their limits: static safety
+    s0 < 1 (only computed where a ball load may reach 4200 MPa), a deep-groove bearing
+    beyond :data:`~ballrace.analytic.ratings.DEEP_GROOVE_ANGLE_LIMIT`, a tilt beyond
+    :data:`~ballrace.analytic.ratings.PERMISSIBLE_MISALIGNMENT`.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing of the rows.
+    what : str
+        Names the seat in the messages.
+    results : sequence of LoadDistribution
+        The rows' results.
+    tilt : float
+        Inner-ring tilt relative to the outer ring [rad].
+    """
+    from . import _operating as op
+    from .ratings import static_safety_from_pressure
+
+    Q = np.concatenate([np.atleast_1d(ld.ball_loads) for ld in results])
+    beta = np.concatenate([np.atleast_1d(ld.contact_angles) for ld in results])
+    safety = None
+    if op.may_be_overloaded(bearing, Q):
+        p = max(float(np.max(ld.max_pressure)) for ld in results)
+        safety = op.safety_message(what, np.asarray(static_safety_from_pressure(p), float), p)
+    return safety, op.angle_message(what, bearing, Q, beta), op.tilt_message(what, bearing, tilt)
 
 
 def _retry(model, geo, L, u0, imposed, arm, rtol, max_iter, ok, u, iters):
@@ -2204,7 +2424,7 @@ def jones_radial_factor(clearance_ratio):
     """
     c = check_range(clearance_ratio, "clearance_ratio", 0.0, 1.0, low_inclusive=True, unit="-")
     q = 1.0 - c
-    return hertz._scalar(np.pi * q**1.5 / (2.491 * (np.sqrt(1.0 + (q / 1.23) ** 2) - 1.0)))
+    return hertz.scalar_result(np.pi * q**1.5 / (2.491 * (np.sqrt(1.0 + (q / 1.23) ** 2) - 1.0)))
 
 
 def stribeck_max_ball_load(Fr, n_balls, factor: float = 5.0):
@@ -2236,7 +2456,7 @@ def stribeck_max_ball_load(Fr, n_balls, factor: float = 5.0):
     Fr = check_nonnegative(Fr, "Fr", "N", bounded=True, tiny_ok=True)
     Z = float(check_integer(n_balls, "n_balls", 1))
     f = float(check_range(factor, "factor", 0.0, None, unit="-"))
-    return hertz._scalar(f * Fr / Z)
+    return hertz.scalar_result(f * Fr / Z)
 
 
 def jones_max_ball_load(Fr, n_balls, Kn, clearance=0.0):
@@ -2292,4 +2512,4 @@ def jones_max_ball_load(Fr, n_balls, Kn, clearance=0.0):
         hi = np.where(pos, mid, hi)
         lo = np.where(pos, lo, mid)
     t = np.exp(0.5 * (lo + hi))
-    return hertz._scalar(Kn * t**1.5), hertz._scalar(t + half)
+    return hertz.scalar_result(Kn * t**1.5), hertz.scalar_result(t + half)

@@ -2,9 +2,10 @@ r"""An elastic shaft on two or more ball bearings, solved together.
 
 The shaft is a straight, stepped, solid or hollow beam along x, discretised into
 two-node Timoshenko beam elements (axial, two lateral translations, two rotations per
-node; torsion is not modelled).  Every seat is a :class:`~ballrace.BallBearing` or a
-:class:`~ballrace.analytic.duplex.DuplexPair` whose inner ring moves with the shaft
-node and whose outer ring sits in the housing (rigid, or through a given housing
+node; torsion is not modelled).  Every seat holds a bearing -- a
+:class:`~ballrace.BallBearing`, a :class:`~ballrace.analytic.duplex.DuplexPair`, or any
+bearing that implements the seat contract (:mod:`ballrace.analytic.contract`) -- whose
+inner ring moves with the shaft node and whose outer ring sits in the housing (rigid, or through a given housing
 stiffness).  The bearings keep their exact nonlinear five-degree-of-freedom
 load–deflection law (:mod:`ballrace.analytic.loaddist`: rigid rings, exact Hertz K_n at
 each ball's own contact angle, contact angles free); one global Newton iteration finds
@@ -103,12 +104,10 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.linalg import cho_solve_banded, cholesky_banded
 
-from . import loaddist, newton
+from . import contract, loaddist, newton
 from ._checks import (as_array, broadcast, check_choice, check_instance, check_integer,
                       check_nonnegative, check_positive, check_range)
-from .bearing import BallBearing
 from .clearance import OperatingClearance
-from .duplex import DuplexPair
 from ..errors import ConvergenceError
 from .newton import POLICY
 from .materials import BEARING_STEEL, Material
@@ -299,10 +298,11 @@ class Seat:
     ----------
     position : float
         x of the bearing centre on the shaft [m].
-    bearing : BallBearing or DuplexPair
-        The bearing: a single-row ball bearing (any free contact angle) or a duplex
+    bearing : BallBearing, DuplexPair or SeatBearing
+        The bearing: a single-row ball bearing (any free contact angle), a duplex
         pair (DB/DF/DT; its preload is kept: each row starts at the preload deflection
-        delta_0 of :attr:`DuplexPair.preload_deflection`).
+        delta_0 of :attr:`DuplexPair.preload_deflection`), or any object implementing
+        :class:`~ballrace.analytic.contract.SeatBearing`.
     direction : {+1, -1}
         Which way the bearing (for a pair: its bearing 1) takes thrust in the shaft
         frame: +1 when the shaft moving towards +x loads its free-contact-angle side,
@@ -347,12 +347,11 @@ class Seat:
 
     def __post_init__(self) -> None:
         set_ = object.__setattr__
-        if not isinstance(self.bearing, (BallBearing, DuplexPair)):
-            raise TypeError("bearing must be a ballrace.BallBearing or a DuplexPair; got "
-                            f"{type(self.bearing).__name__}")
-        b = self.bearing if isinstance(self.bearing, BallBearing) else self.bearing.bearing
-        if b.n_rows != 1:
-            raise ValueError(f"bearing must be single-row (n_rows=1); got n_rows={b.n_rows}")
+        lacks = contract.missing(self.bearing)
+        if lacks:
+            raise TypeError("bearing must be a ballrace.BallBearing or a DuplexPair (or "
+                            "implement ballrace.analytic.contract.SeatBearing); got "
+                            f"{type(self.bearing).__name__}, which lacks {', '.join(lacks)}")
         set_(self, "position", _scalar(self.position, "position", "m"))
         if isinstance(self.direction, (bool, np.bool_)) or self.direction not in (1, -1):
             raise ValueError(f"direction must be +1 or -1; got {self.direction!r}")
@@ -368,43 +367,48 @@ class Seat:
         if self.clearance is not None:
             if isinstance(self.clearance, OperatingClearance):
                 set_(self, "clearance", self.clearance.operating)
-            if isinstance(self.bearing, DuplexPair):
-                raise ValueError("clearance is for a single bearing; a DuplexPair's rows "
-                                 "keep their own preload")
+            if not self.bearing.accepts_clearance:
+                raise ValueError("clearance is for a single bearing; a "
+                                 f"{type(self.bearing).__name__}'s rows keep their own "
+                                 "preload")
             set_(self, "clearance", _scalar(self.clearance, "clearance", "m"))
         set_(self, "row_spacing", float(check_nonnegative(self.row_spacing, "row_spacing",
                                                           "m", bounded=True, tiny_ok=True)))
         set_(self, "floating", bool(self.floating))
+        mounts = tuple(self.bearing.seat_rows(self.direction, self.offset, self.row_spacing,
+                                              self.clearance))
+        for m in mounts:
+            lacks = contract.missing(m.row, contract.ROW_MEMBERS)
+            if lacks:
+                raise TypeError(f"the rows of a {type(self.bearing).__name__} must implement "
+                                "ballrace.analytic.contract.Row; a "
+                                f"{type(m.row).__name__} lacks {', '.join(lacks)}")
+        set_(self, "_mounts", mounts)
 
     @property
-    def ball_bearing(self) -> BallBearing:
-        """The single-row bearing (of each row for a pair)."""
-        return self.bearing if isinstance(self.bearing, BallBearing) else self.bearing.bearing
+    def mounts(self) -> tuple:
+        """The bearing's rows as mounted here
+        (:class:`~ballrace.analytic.contract.RowMount`)."""
+        return self._mounts
+
+    @property
+    def ball_bearing(self):
+        """The single-row ball bearing of the rows (of each row for a pair); None for a
+        bearing whose rows are not ball rows."""
+        return getattr(self._mounts[0].row, "bearing", None)
 
     def rows(self):
         """[(direction, axial offset of the row from the seat [m], mounted offset [m])]."""
-        b = self.bearing
-        d = self.direction
-        if isinstance(b, BallBearing):
-            return [(d, 0.0, self.offset)]
-        d0 = b.preload_deflection + self.offset
-        h = 0.5 * self.row_spacing
-        if b.arrangement == "DT":
-            return [(d, -h, d0), (d, h, d0)]
-        # DB (O): a row carrying +x shaft thrust sits on the -x side; DF (X) the reverse
-        s = -1.0 if b.arrangement == "DB" else 1.0
-        return [(d, s * d * h, d0), (-d, -s * d * h, d0)]
+        return [(m.direction, m.axial_offset, m.mounted_offset) for m in self._mounts]
 
     @property
     def constant_axial(self) -> float:
         """Constant axial load of a spring in the seat, in the shaft frame [N].
 
         The seat's reaction gains ``-direction * P`` for a DT pair's spring preload P
-        (DuplexPair: Fa = 2 F(delta) - P)."""
-        b = self.bearing
-        if isinstance(b, DuplexPair) and b.arrangement == "DT":
-            return -self.direction * b.preload
-        return 0.0
+        (DuplexPair: Fa = 2 F(delta) - P); see
+        :meth:`~ballrace.analytic.contract.SeatBearing.spring_axial_load`."""
+        return float(self.bearing.spring_axial_load(self.direction))
 
 
 # =========================================================================== loads
@@ -581,53 +585,14 @@ def _shape(xi, L, phi):
 
 
 # =========================================================================== bearing forces
-def _ring_forces(bearing: BallBearing, clearance, u, balls: bool = False):
-    """Ball-force resultant on the inner ring and its tangent stiffness at imposed ring
-    displacements, in the bearing's own (loaddist) frame.
-
-    Evaluates the :mod:`ballrace.analytic.loaddist` model directly (its ball kinematics,
-    exact-Hertz K_n(beta) and analytic Jacobian dF/du including dK_n/dbeta) without an
-    equilibrium iteration: every DOF is imposed.  Same numbers as
-    ``loaddist.solve(bearing, displacements=u, clearance=clearance)`` (``.loads``,
-    ``.stiffness``), without building a result.
-
-    Parameters
-    ----------
-    bearing : BallBearing
-        Single-row bearing.
-    clearance : float or None
-        Diametral clearance of the reference configuration [m]; None: the bearing's.
-    u : ndarray, shape (N, 5)
-        Inner-ring displacements (dx, dy, dz [m], theta_y, theta_z [rad]).
-
-    Returns
-    -------
-    F : ndarray, shape (N, 5)
-        (Fa, Fy, Fz [N], My, Mz [N m]).
-    K : ndarray, shape (N, 5, 5)
-        dF/du [N/m, N/rad, N m/m, N m/rad].
-    delta_max : ndarray, shape (N,)
-        Largest ball approach [m].
-    energy : ndarray, shape (N,)
-        Elastic energy of the ball contacts, sum 2/5 K_n(beta_j) delta_j^(5/2) [J] (the
-        potential of F with K_n held at each ball's angle; the line search's merit).
-    Q : ndarray, shape (N, Z)
-        Ball loads [N] (only with ``balls=True``).
-    """
-    model = loaddist._Model.of(bearing)                  # both cached by loaddist
-    _, x0, z0 = loaddist._reference(model, clearance, False)
-    geo = loaddist._geo(model, bearing, 0.0, x0, z0)
-    st = loaddist._State(model, geo, np.asarray(u, float).reshape(-1, 5), "groove")
-    d = st.delta
-    energy = 0.4 * (st.Kn * d * d * np.sqrt(d)).sum(1)
-    if balls:
-        return st.F, st.J, d.max(1), energy, st.Q
-    return st.F, st.J, d.max(1), energy
-
-
-def _ring_result(bearing: BallBearing, clearance, u) -> loaddist.LoadDistribution:
-    """The checked LoadDistribution of a bearing at imposed ring displacements u (5,)."""
-    return loaddist.solve(bearing, displacements=np.asarray(u, float), clearance=clearance)
+def _ring_forces(bearing, clearance, u, balls: bool = False):
+    """(F, K, delta_max, energy[, ball loads]) of a single-row ball bearing at imposed
+    inner-ring displacements u (N, 5) [m, rad], in its own frame:
+    :meth:`loaddist.RingModel.ring_forces` (kept for callers that hold a bearing and a
+    clearance [m] rather than a row)."""
+    row = loaddist.RingModel(bearing, clearance)
+    out = row.ring_forces(u)
+    return out + (row.element_loads(np.asarray(u, float).reshape(-1, 5)),) if balls else out
 
 
 # =========================================================================== result
@@ -691,13 +656,14 @@ class ShaftResult:
         are those of the shaft frame mapped by :data:`MIRROR`), or a tuple of two
         (bearing 1, bearing 2) for a duplex pair; ball loads, contact angles, Hertz
         contacts, subsurface shear and truncation as for a single bearing.  Built on
-        first access by loaddist's own checked solver with every DOF imposed."""
+        first access by loaddist's own checked solver with every DOF imposed.  For any
+        other seat bearing: its rows' :meth:`~ballrace.analytic.contract.Row.result`."""
         from . import _operating
 
         out = []
         with _operating.quiet():            # solve() has said what needs saying
             for k in range(len(self.seats)):
-                ld = [_ring_result(b, c, ul) for kk, b, c, ul in self._rows if kk == k]
+                ld = [row.result(ul) for kk, row, ul in self._rows if kk == k]
                 out.append(ld[0] if len(ld) == 1 else tuple(ld))
         return tuple(out)
 
@@ -944,27 +910,30 @@ class _Problem:
             nxt += len(loc)
             self.outer.append((np.array(loc, int), np.array(gl, int), Kh))
         self.N = nxt
-        # rows: (seat k, bearing, clearance, G (5x5 map shaft rel. -> local), mounted offset)
+        # rows: (seat k, contract Row, G (5x5 map shaft rel. -> local), mounted offset,
+        # centred start)
         self.rows = []
         for k, s in enumerate(seats):
-            for d, a, off in s.rows():
+            for m in s.mounts:
+                a = m.axial_offset
                 P = np.eye(5)
                 P[1, 4], P[2, 3] = a, -a            # rigid ring: row at x + a
-                T = np.ones(5) if d > 0 else MIRROR
-                self.rows.append((k, s.ball_bearing, s.clearance, T[:, None] * P, off))
+                T = np.ones(5) if m.direction > 0 else MIRROR
+                self.rows.append((k, m.row, T[:, None] * P, m.mounted_offset, m.centred))
         self.rk = np.array([r[0] for r in self.rows], int)
-        self.Gr = np.array([r[3] for r in self.rows])
-        self.roff = np.array([r[4] for r in self.rows])
-        grp = {}
+        self.Gr = np.array([r[2] for r in self.rows])
+        self.roff = np.array([r[3] for r in self.rows])
+        grp = {}                                    # equal rows: one call for all of them
         for i, r in enumerate(self.rows):
-            grp.setdefault((r[1], r[2]), []).append(i)
-        self.groups = [(key, np.array(v)) for key, v in grp.items()]
+            grp.setdefault(r[1], (r[1], []))[1].append(i)
+        self.groups = [(row, np.array(v)) for row, v in grp.values()]
         self.dmax = np.zeros(len(self.rows))
         self.fmax = np.zeros(len(self.rows))      # largest row force (preloaded pairs)
         self.const = np.zeros((ns, 5))
         for k, s in enumerate(seats):
             self.const[k, 0] = s.constant_axial
-        self.A_ref = min(s.ball_bearing.curvature_center_distance for s in seats)
+        self.A_ref = min(r[1].step_length for r in self.rows)
+        self.moment_radius = max(r[1].moment_radius for r in self.rows)
 
     def node(self, x):
         return int(np.argmin(np.abs(self.nodes - x)))
@@ -1036,8 +1005,8 @@ class _Problem:
         ul = np.einsum("rij,rj->ri", self.Gr, rel[self.rk])
         ul[:, 0] += self.roff
         energy = 0.0
-        for (b, c), idx in self.groups:
-            F, J, dm, en = _ring_forces(b, c, ul[idx])
+        for row, idx in self.groups:
+            F, J, dm, en = row.ring_forces(ul[idx])
             energy += float(en.sum())
             self.fmax[idx] = np.abs(F[:, :3]).max(1)
             for j, r in enumerate(idx):
@@ -1116,16 +1085,17 @@ def _check_setup(shaft, seats, loads):
     # with a non-zero diagonal; a floating seat never axially); the rigid shaft's motion
     # (u0, v0, w0, theta_y, theta_z) about x = 0 moves a seat at x by
     # (u0, v0 + theta_z x, w0 - theta_y x, theta_y, theta_z)
-    if not any(not s.floating and (s.housing_stiffness is None or
-                                   s.housing_stiffness[0, 0] > 0) for s in seats):
-        raise ValueError("the shaft has no axial support: every seat is floating or has no "
-                         "axial housing stiffness (give one locating seat, floating=False) "
+    if not any(not s.floating and s.bearing.carries_axial and
+               (s.housing_stiffness is None or s.housing_stiffness[0, 0] > 0) for s in seats):
+        raise ValueError("the shaft has no axial support: every seat is floating, has no "
+                         "axial housing stiffness or a bearing that carries no axial load "
+                         "(give one locating seat, floating=False) "
                          f"-- free rigid-body mode: {DOF_NAMES[0]}")
     Kr = np.zeros((5, 5))
     for s in seats:
         held = np.ones(5) if s.housing_stiffness is None else \
             (np.diag(s.housing_stiffness) > 0).astype(float)
-        if s.floating:
+        if s.floating or not s.bearing.carries_axial:
             held[0] = 0.0
         T = np.eye(5)
         T[1, 4], T[2, 3] = s.position, -s.position
@@ -1260,8 +1230,8 @@ def solve(shaft: Shaft, seats, loads=(), *, gravity=None, shaft_temperature_chan
         X0 = initial._X
     X, its, res = _newton(pb, rtol, max_iter, X0)
     R, _, Rs, Ks, dmax = pb.evaluate(X, want_J=False)
-    for (k, b, _, _, _), d in zip(pb.rows, dmax):
-        lim = loaddist.MAX_APPROACH_RATIO * b.ball_diameter
+    for (k, row, _, _, _), d in zip(pb.rows, dmax):
+        lim = row.approach_limit
         if d > lim:
             raise ValueError(
                 f"the loads are beyond the load-deflection range of the bearing at seat {k} "
@@ -1269,10 +1239,10 @@ def solve(shaft: Shaft, seats, loads=(), *, gravity=None, shaft_temperature_chan
                 f"{loaddist.MAX_APPROACH_RATIO:g} D = {lim:.3g} m")
     rel, W = pb.seat_rel(X)
     rows = []
-    for k, b, c, Gm, off in pb.rows:
+    for k, row, Gm, off, _ in pb.rows:
         ul = Gm @ rel[k]
         ul[0] += off
-        rows.append((k, b, c, ul))
+        rows.append((k, row, ul))
     U = pb.full(X)
     return _checked(ShaftResult(shaft=shaft, seats=seats, loads=loads, nodes=pb.nodes,
                                 node_displacements=U, reactions=Rs,
@@ -1328,26 +1298,17 @@ def _checked(r: ShaftResult) -> ShaftResult:
     except (ValueError, ConvergenceError) as exc:         # pragma: no cover - defensive
         log.debug("shaft: seat checks skipped (%s)", exc)
         return r
-    tilt, pressure = r.misalignment, None            # the seats' pressures only if needed
+    tilt = r.misalignment
     for k, s in enumerate(r.seats):
         what = (f"shaft seats[{k}]" + (f" '{s.name}'" if s.name else "")
                 + f" (x = {s.position * 1e3:g} mm)")
-        b = s.ball_bearing
-        rows = r._seat_rows(k)
-        Q = np.concatenate([np.atleast_1d(ld.ball_loads) for ld in rows])
-        beta = np.concatenate([np.atleast_1d(ld.contact_angles) for ld in rows])
-        safety = None
-        if op.may_be_overloaded(b, Q):
-            if pressure is None:
-                pressure, s0 = r.max_pressure, r.static_safety
-            safety = op.safety_message(what, s0[k], pressure[k])
-        op.emit(safety, op.angle_message(what, b, Q, beta), op.tilt_message(what, b, tilt[k]))
+        op.emit(*s.bearing.seat_warnings(what, r._seat_rows(k), tilt[k]))
     return r
 
 
 def _scales(pb):
     """Residual scale per reduced DOF: forces 1, moments / R (largest inner-groove radius)."""
-    R = max(s.ball_bearing.inner_groove_center_radius for s in pb.seats)
+    R = pb.moment_radius
     sc = np.ones(pb.N)
     sc[3:pb.nb:5] = R
     sc[4:pb.nb:5] = R
@@ -1478,8 +1439,9 @@ def _roundoff(pb, X):
 def _centred_start(pb):
     """Start with the balls of every single-row seat at the bottom of their grooves: the
     shaft's axial position and each floating seat's outer ring chosen (least squares) so
-    that each such row's axial displacement is -z0 of its reference (loaddist._reference);
-    duplex rows keep their reference position."""
+    that each such row's axial displacement is -z0 of its reference
+    (:attr:`~ballrace.analytic.contract.Row.reference_axial_offset`); rows not marked
+    ``centred`` (duplex rows) keep their mounted position."""
     X = np.zeros(pb.N)
     cols = {("a",): 0}
     for k, (loc, gl, _) in enumerate(pb.outer):
@@ -1487,14 +1449,14 @@ def _centred_start(pb):
             cols[("b", k)] = len(cols)
     A = np.zeros((len(pb.rows), len(cols)))
     rhs = np.zeros(len(pb.rows))
-    for i, (k, b, c, G, off) in enumerate(pb.rows):
+    for i, (k, row, G, off, centred) in enumerate(pb.rows):
         g = G[0, 0]
         A[i, 0] = g
         if ("b", k) in cols:
             A[i, cols[("b", k)]] = -g
         target = off
-        if isinstance(pb.seats[k].bearing, BallBearing):
-            target = -loaddist._reference(loaddist._Model.of(b), c, False)[2]
+        if centred:
+            target = -row.reference_axial_offset
         rhs[i] = target - off + g * pb.w0[k, 0]
     sol = np.linalg.lstsq(A, rhs, rcond=None)[0]
     X[0:pb.nb:5] = sol[0]
@@ -1542,7 +1504,7 @@ def _newton_step(pb, X, lam, sc, rtol, max_iter, robust=False):
 
     err = error(R, Rs)
     it = 0
-    Rmax = max(s.ball_bearing.inner_groove_center_radius for s in pb.seats)
+    Rmax = pb.moment_radius
     # unknown scaling: tilts in units of 1/R, so rotations weigh like translations
     D = np.ones(pb.N)
     D[3:pb.nb:5] = 1.0 / Rmax
@@ -1631,13 +1593,6 @@ def _newton_step(pb, X, lam, sc, rtol, max_iter, robust=False):
 
 
 # =========================================================================== life
-@dataclass(frozen=True)
-class _Balls:
-    """Ball loads of one row [N] (what the ISO/TS 16281 life reads from a result)."""
-
-    ball_loads: np.ndarray
-
-
 @dataclass(frozen=True)
 class ShaftLife:
     r"""Fatigue lives of the seats and of the bearing system (frozen).
@@ -1738,7 +1693,6 @@ def rating_lives(result: ShaftResult, *, rotating: str = "inner", dynamic_rating
     -------
     ShaftLife
     """
-    from .iso16281 import reference_rating_life
     from .life import BALL_WEIBULL_SLOPE
 
     check_instance(result, "result", ShaftResult)
@@ -1750,12 +1704,10 @@ def rating_lives(result: ShaftResult, *, rotating: str = "inner", dynamic_rating
     alpha = _per_seat(nominal_contact_angle, "nominal_contact_angle", ns)
     rows, ratings, seat, cat = [], [], [], []
     for k, s in enumerate(result.seats):
-        # the ball loads of the seat's rows (as in result.bearings, without building them)
-        lds = [_Balls(_ring_forces(b, c, ul[None], balls=True)[4][0])
-               for kk, b, c, ul in result._rows if kk == k]
-        rr = [reference_rating_life(s.ball_bearing, ld_, dynamic_rating=C[k],
-                                    rotating=rotating, nominal_contact_angle=alpha[k])
-              for ld_ in lds]
+        # the rows' lives from their element loads (without building result.bearings)
+        rr = [row.rating_life(ul, dynamic_rating=C[k], rotating=rotating,
+                              nominal_contact_angle=alpha[k])
+              for kk, row, ul in result._rows if kk == k]
         Ls = [float(r.modified(**modified)) if modified else float(r.L10r) for r in rr]
         cat.append(_catalog_life(s, result.reactions[k], rr[0].C, alpha[k], modified))
         ratings.append(tuple(rr))
@@ -1801,22 +1753,17 @@ def _per_seat(v, name, ns):
 
 
 def _catalog_life(seat, R, C, alpha, modified):
-    """ISO 281 (C/P)^3 (or L_nm) of a single-bearing seat from its reaction; None if n/a."""
+    """ISO 281 (C/P)^p (or L_nm) of a seat from its reaction, with the bearing's
+    equivalent load and life exponent p (contract.SeatBearing); None if n/a."""
     from .iso281 import modified_rating_life
-    from .life import equivalent_load_for
 
-    if isinstance(seat.bearing, DuplexPair):
-        return None
     Fr, Fa = float(np.hypot(R[1], R[2])), float(abs(R[0]))
-    try:
-        P = float(equivalent_load_for(seat.ball_bearing, Fr, Fa, contact_angle=alpha).P)
-    except ValueError:
-        return None
-    if not P > 0:
+    P = seat.bearing.equivalent_load(Fr, Fa, alpha)
+    if P is None or not P > 0:
         return None
     if modified:
         return float(modified_rating_life(C, P, **modified))
-    return float((C / P) ** 3)
+    return float((C / P) ** seat.bearing.life_exponent)
 
 
 @dataclass(frozen=True)
@@ -1881,7 +1828,6 @@ def duty_cycle(shaft: Shaft, seats, cases, *, rotating: str = "inner", dynamic_r
     cases = list(_sequence(cases, "cases", "(loads, fraction, speed_rpm)"))
     if not cases:
         raise ValueError("cases must hold at least one (loads, fraction, speed_rpm)")
-    from .iso16281 import reference_rating_life
     from .life import BALL_WEIBULL_SLOPE
 
     check_choice(rotating, "rotating", ("inner", "outer"))
@@ -1911,12 +1857,10 @@ def duty_cycle(shaft: Shaft, seats, cases, *, rotating: str = "inner", dynamic_r
     C = _per_seat(dynamic_rating, "dynamic_rating", ns)
     A = _per_seat(nominal_contact_angle, "nominal_contact_angle", ns)
     seat_L = np.zeros((len(res), ns))
-    for i, (k, b, c, _) in enumerate(res[0]._rows):
-        U = np.array([r._rows[i][3] for r in res])
-        Q = _ring_forces(b, c, U, balls=True)[4]
-        rr = reference_rating_life(res[0].seats[k].ball_bearing, _Balls(Q),
-                                   dynamic_rating=C[k], rotating=rotating,
-                                   nominal_contact_angle=A[k])
+    for i, (k, row, _) in enumerate(res[0]._rows):
+        U = np.array([r._rows[i][2] for r in res])
+        rr = row.rating_life(U, dynamic_rating=C[k], rotating=rotating,
+                             nominal_contact_angle=A[k])
         L = np.asarray(rr.modified(**modified) if modified else rr.L10r, float)
         with np.errstate(divide="ignore"):
             seat_L[:, k] += np.where(np.isinf(L), 0.0, L ** -e)

@@ -146,7 +146,7 @@ from scipy import optimize, special
 
 from . import plausible
 from ._checks import as_array, broadcast, check_choice, check_nonnegative, check_range
-from .hertz import HertzContact, LineContact, _scalar
+from .hertz import HertzContact, LineContact, scalar_result as _scalar
 
 __all__ = [
     "OrthogonalShear",

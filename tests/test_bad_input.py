@@ -83,7 +83,8 @@ NOT_INPUTS = {"Curvature", "HertzContact", "LineContact", "OrthogonalShear", "Ma
               "LundbergPalmgrenLife", "LoadDistribution", "ConvergenceError",
               "DuplexResult", "HighSpeedResult", "FatigueLoadLimit",
               "ReferenceRatingLife", "OperatingClearance", "SurfaceTension",
-              "ShaftResult", "ShaftLife", "DutyCycleLife"}
+              "ShaftResult", "ShaftLife", "DutyCycleLife",
+              "Row", "SeatBearing", "RowMount", "missing"}   # the seat contract: interfaces
 
 BAD = {
     "scale": [-1.0, 0.0, math.nan, math.inf, -math.inf, 1e308],
@@ -462,6 +463,8 @@ TABLE.update({
                              dict(bearing="object", displacements="coord",
                                   moment_arm="choice", clearance="signed",
                                   azimuth_offset="finite"), ()),
+    "loaddist.RingModel": (dict(bearing=ANGULAR, clearance=10e-6),
+                           dict(bearing="object", clearance="signed"), ()),
 })
 
 # shaft: a short shaft on two deep-groove bearings (a solve takes milliseconds)
