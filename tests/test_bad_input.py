@@ -62,10 +62,11 @@ RADIAL = loaddist.radial(BEARING, 5000.0)
 #: command line and the case-file reader (now ballrace.commands and ballrace.casefiles;
 #: their input errors are CLI usage errors and CaseFileError, tested in
 #: tests/test_cli*.py and tests/test_bearing_cli.py).
-NOT_API = {"cli", "casefile", "isocase", "shaft_cli", "plausible", "roller"}
+NOT_API = {"cli", "casefile", "isocase", "shaft_cli", "plausible", "roller", "newton"}
 # plausible holds the unit-slip warnings the entry points call (their messages are tested
 # in tests/test_trust3_errors.py); the roller sub-package tests its bad input in
-# tests/test_roller_*.py.
+# tests/test_roller_*.py; newton is the solvers' shared step control (its functions take the
+# solvers' own arrays, tested in tests/test_newton.py), not a formula a user calls.
 # shaft_cli is the ``ballrace shaft CASE.toml`` command and its case-file reader: its
 # errors are one-line case-file errors naming the key (tests/test_shaft_cli.py); the
 # numbers it passes on are checked by shaft.Shaft, Seat, PointLoad and solve (rows below).
