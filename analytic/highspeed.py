@@ -1204,7 +1204,7 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
           Fz=0.0, My=0.0, Mz=0.0, control: str = "outer", gyroscopic: str = "harris",
           tilt: str = "fixed", orbital: str = "cage", friction_coefficient=None,
           rtol: float = 1e-10,
-          max_iter: int = 60, _start_from: str = "static") -> HighSpeedResult:
+          max_iter: int = 60, start: str = "static") -> HighSpeedResult:
     r"""High-speed equilibrium (Jones 1960) of a ball bearing under Fa, Fr at given speeds.
 
     Solves the module equations (H&D 1981 eqs. 3.93–3.112; Harris 2001 ch. 25) for the
@@ -1260,6 +1260,10 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
         Tolerance on the residuals relative to the load scale [-].
     max_iter : int, optional
         Newton iteration limit (per continuation step).
+    start : {"static", "estimate"}
+        Where the iteration starts: the static load distribution of the same loads
+        (default), or a crude estimate (a ring displacement of 1e-3 D in the direction of
+        each load) — to check that the equilibrium found does not depend on the start.
 
     Returns
     -------
@@ -1321,7 +1325,7 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
     check_choice(gyroscopic, "gyroscopic", GYROSCOPIC)
     check_choice(tilt, "tilt", ("fixed", "free"))
     check_choice(orbital, "orbital", ORBITALS)
-    check_choice(_start_from, "_start_from", ("static", "estimate"))
+    check_choice(start, "start", ("static", "estimate"))
     L = np.array([float(a) if a.ndim == 0 else np.nan
                   for a in (as_array(v, n, bounded=True, tiny_ok=True) for v, n in
                             ((Fa, "Fa"), (Fr, "Fr"), (Fz, "Fz"), (My, "My"), (Mz, "Mz")))])
@@ -1352,7 +1356,7 @@ def solve(bearing: BallBearing, Fa=0.0, Fr=0.0, speed_inner=0.0, speed_outer=0.0
 
     # ---- static solution: starting values (Jones 1960 / H&D 3.61-3.74)
     u0 = np.zeros(5)
-    if _start_from == "static":
+    if start == "static":
         from .loaddist import solve as static_solve
         d = np.zeros(5)
         d[free] = np.nan

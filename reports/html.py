@@ -192,7 +192,7 @@ def tolerance_text(exp, got: float | None = None) -> str:
     """
     ref = next((v for v in (exp.value, exp.max, exp.min, got)
                 if v is not None and math.isfinite(v) and v != 0), None)
-    unit = _name_unit(exp)
+    unit = name_unit(exp)
 
     def eng(v, digits):
         s = format_eng(v, exp.dimension, ref, digits)
@@ -213,7 +213,9 @@ def tolerance_text(exp, got: float | None = None) -> str:
     return " + ".join(parts) or "exact"
 
 
-def _reference(c) -> float | None:
+def reference_value(c) -> float | None:
+    """The value that sets the engineering prefix of comparison ``c``'s numbers (the first
+    finite non-zero of expected, maximum, minimum, got), or None."""
     for v in (c.expected, c.maximum, c.minimum, c.got):
         if v is not None and math.isfinite(v) and v != 0:
             return v
@@ -232,7 +234,8 @@ def _nowrap(text: str):
     return Markup('<span class="n">') + escape(text) + Markup("</span>")
 
 
-def _name_unit(c) -> str:
+def name_unit(c) -> str:
+    """The unit a dimensionless output counts, from the end of its name (NAME_UNITS)."""
     if not c.dimension:
         for suffix, unit in NAME_UNITS:
             if c.name.endswith(suffix):
@@ -241,8 +244,8 @@ def _name_unit(c) -> str:
 
 
 def _cfmt_text(c, what: str) -> str:
-    s = format_eng(getattr(c, what), c.dimension, _reference(c))
-    unit = _name_unit(c)
+    s = format_eng(getattr(c, what), c.dimension, reference_value(c))
+    unit = name_unit(c)
     return f"{s} {unit}" if unit and s != "—" else s
 
 
@@ -251,17 +254,19 @@ def _cfmt(c, what: str):
     return _nowrap(_cfmt_text(c, what))
 
 
-def _err_text(c) -> str:
+def error_text(c) -> str:
+    """The error of comparison ``c`` as text: a relative error in %, else a signed
+    difference (or the margin to a bound) in the output's unit."""
     if c.error is None:
         return "—"
     if c.rel_error is not None and c.expected is not None:
         s = _number(100 * c.rel_error, 2)
         return f"{s if s.startswith('-') else '+' + s} %"
-    unit = _name_unit(c)
+    unit = name_unit(c)
     if c.expected is None:
-        s = format_eng(-c.error, c.dimension, _reference(c))
+        s = format_eng(-c.error, c.dimension, reference_value(c))
     else:
-        s = format_eng(c.error, c.dimension, _reference(c), 3)   # a difference: 3 digits
+        s = format_eng(c.error, c.dimension, reference_value(c), 3)   # a difference: 3 digits
         s = s if s.startswith("-") else "+" + s
     return f"{s} {unit}" if unit else s
 
@@ -271,7 +276,7 @@ def _err(c):
     the number never does)."""
     from markupsafe import Markup
 
-    text = _err_text(c)
+    text = error_text(c)
     if c.error is not None and c.expected is None and not (
             c.rel_error is not None and c.expected is not None):
         return Markup("margin ") + _nowrap(text)

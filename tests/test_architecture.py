@@ -28,10 +28,11 @@ ALIASES = {"analytic/cli.py": "ballrace.commands.bearing",
            "analytic/shaft_cli.py": "ballrace.commands.shaft",
            "analytic/casefile.py": "ballrace.casefiles.bearing",
            "validation/teach.py": "ballrace.teach.figures"}
-_MODULE_NAMES = {"hertz", "loaddist", "duplex", "shaft", "highspeed", "casefile", "bearing",
-                 "ratings", "life", "iso281", "iso16281", "subsurface", "ehl", "clearance",
-                 "kinematics", "explorer", "teach", "api", "model", "extract", "solvers",
-                 "registry", "runner", "schema"}
+#: Names under which a module of the package can be bound in another (``from . import hertz``):
+#: every module's own name, found on disk, so a new module is watched from its first commit.
+_MODULE_NAMES = {p.stem for p in ROOT.rglob("*.py")
+                 if not p.stem.startswith("_") and ".venv" not in p.parts
+                 and "tests" not in p.parts} | {"casefile", "teach", "explorer"}
 
 
 def _sources():

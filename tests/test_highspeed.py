@@ -84,11 +84,11 @@ def test_independent_start_converges_to_same_static_solution():
     same equilibrium (1e-8 relative)."""
     for kw in (dict(Fa=17800.0), dict(Fa=17800.0, Fr=8900.0), dict(Fa=1000.0, Fr=8900.0)):
         a = hs.solve(BRG, **kw)
-        b = hs.solve(BRG, _start_from="estimate", **kw)
+        b = hs.solve(BRG, start="estimate", **kw)
         Q = a.inner_loads.max()
         assert np.max(np.abs(a.inner_loads - b.inner_loads)) < 1e-8 * Q
         a = hs.solve(BRG, speed_inner=10000 * RPM, **kw)
-        b = hs.solve(BRG, speed_inner=10000 * RPM, _start_from="estimate", **kw)
+        b = hs.solve(BRG, speed_inner=10000 * RPM, start="estimate", **kw)
         assert np.max(np.abs(a.outer_loads - b.outer_loads)) < 1e-8 * a.outer_loads.max()
 
 

@@ -80,7 +80,7 @@ def test_tolerances_read_in_the_values_unit_to_three_digits(atol, dim, value, te
 def test_no_tolerance_or_error_of_a_run_is_in_python_e_notation():
     """Every tolerance and error text of the shaft and life_iso cases (angles, forces,
     viscosities, a temperature) reads as the report shows it: no "5.72958e-08"."""
-    from ballrace.reports.html import _cfmt_text, _err_text
+    from ballrace.reports.html import _cfmt_text, error_text
     from ballrace.validation.runner import run_cases
     from ballrace.validation.schema import load_cases
 
@@ -89,7 +89,7 @@ def test_no_tolerance_or_error_of_a_run_is_in_python_e_notation():
         if c.id in ("highspeed-218-zero-speed-equals-static", "bearing-209-geometry")]
     run = run_cases(cases, serial=True, fem="none")
     texts = [t for r in run.results for c in r.comparisons
-             for t in (c.tolerance, _err_text(c), _cfmt_text(c, "got"))]
+             for t in (c.tolerance, error_text(c), _cfmt_text(c, "got"))]
     assert len(texts) > 60
     bad = [t for t in texts if re.search(r"\de[-+]?\d", t)]
     assert not bad, bad

@@ -226,7 +226,7 @@ def test_solver_follows_the_equilibrium_connected_to_the_static_solution():
                                free_contact_angle=np.radians(40))
     Fa, Fr, w = 3481.9347109378414, 1.0, 111.38356379651813
     r = hs.solve(brg, Fa=Fa, Fr=Fr, speed_inner=w)
-    other = hs.solve(brg, Fa=Fa, Fr=Fr, speed_inner=w, _start_from="estimate")
+    other = hs.solve(brg, Fa=Fa, Fr=Fr, speed_inner=w, start="estimate")
     _check_hs(brg, r)
     assert not r.warnings and not np.any(r.beyond_groove_inner)
     assert np.any(other.beyond_groove_inner)                        # another equilibrium

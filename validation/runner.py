@@ -240,11 +240,11 @@ def _err_text(c: Comparison) -> str:
     from ballrace.reports import html
 
     if c.expected is None and c.error is not None:      # a bound: the excess over it
-        s = html.format_eng(c.error, c.dimension, html._reference(c))
-        unit = html._name_unit(c)
+        s = html.format_eng(c.error, c.dimension, html.reference_value(c))
+        unit = html.name_unit(c)
         s = s if s.startswith("-") else "+" + s
         return f"{s} {unit}" if unit else s
-    return html._err_text(c)
+    return html.error_text(c)
 
 
 def _result(case: Case, status: str, message: str, duration: float = 0.0, comps=(),
