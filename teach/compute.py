@@ -484,10 +484,10 @@ ROLLER_LOAD_MAX = 1.0e6
 #: Largest slice width over the contact's largest half-width [-].  The stress below the
 #: contact is integrated with nodes some tenths of the half-width apart along the roller
 #: (:func:`ballrace.analytic.roller.subsurface_stress`), so its time grows with this
-#: ratio: about 0.1 s at 1-3, 0.2 s at 5, 0.6 s at 10, 2 s at 30 and 2 minutes at 300
-#: (measured on a 2-core machine shared with other jobs).  A lightly loaded long roller
-#: is refused with the load that would do.
-SLICE_OVER_WIDTH_MAX = 5.0
+#: ratio: 0.15-0.2 s at 1-3, about 0.3 s at 4-5, 0.65 s at 7.6, 2 s at 30 and 2 minutes
+#: at 300 (a 2-core machine shared with other jobs, load average 7).  A lightly loaded
+#: long roller is refused, with the load that would do.
+SLICE_OVER_WIDTH_MAX = 4.0
 
 
 def roller_inputs(params: dict) -> dict:
@@ -555,6 +555,26 @@ def _roller_profile(prof):
     return prof
 
 
+def _light_load(c, inp: dict, mat) -> float:
+    """The smallest load of two significant digits (within some 25 %) whose contact meets
+    :data:`SLICE_OVER_WIDTH_MAX` [N]: a few more line contacts of some ms each."""
+    from ballrace.analytic import roller
+
+    w = float(c.slice_width)
+    need = inp["Q"] * (w / (SLICE_OVER_WIDTH_MAX * float(c.half_width.max()))) ** 2
+    for _ in range(30):
+        need = float(f"{need:.2g}")
+        if need >= ROLLER_LOAD_MAX:
+            return ROLLER_LOAD_MAX
+        t = roller.line_contact(need, inp["R1"], inp["R2"], inp["length"], mat, mat,
+                                profile=_roller_profile(inp["profile"]), tilt=inp["tilt"],
+                                n_slices=ROLLER_SLICES)
+        if w <= SLICE_OVER_WIDTH_MAX * float(t.half_width.max()):
+            return need
+        need *= 1.25
+    return need
+
+
 def _roller_sample(inp: dict) -> dict:
     """One roller state (uncached): the line contact, its stresses, packed for the page."""
     import warnings
@@ -571,10 +591,7 @@ def _roller_sample(inp: dict) -> dict:
                    tilt=inp["tilt"], n_slices=ROLLER_SLICES)
         w, bmax = float(c.slice_width), float(c.half_width.max())
         if not w <= SLICE_OVER_WIDTH_MAX * bmax:
-            need = inp["Q"] * (w / (SLICE_OVER_WIDTH_MAX * bmax)) ** 2
-            need = float(f"{need:.2g}")
-            need = need if need >= inp["Q"] * (w / (SLICE_OVER_WIDTH_MAX * bmax)) ** 2 \
-                else float(f"{need * 1.1:.2g}")
+            need = _light_load(c, inp, mat)
             raise InputError("load", f"load: {inp['Q']:.4g} N is too light for this roller's "
                              f"stress map: the slice width L/{ROLLER_SLICES} = "
                              f"{w * 1e3:.3g} mm is more than {SLICE_OVER_WIDTH_MAX:g} times "
