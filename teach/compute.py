@@ -592,11 +592,11 @@ def _roller_sample(inp: dict) -> dict:
         w, bmax = float(c.slice_width), float(c.half_width.max())
         if not w <= SLICE_OVER_WIDTH_MAX * bmax:
             need = _light_load(c, inp, mat)
-            raise InputError("load", f"load: {inp['Q']:.4g} N is too light for the stresses below "
-                             f"this roller to be computed quickly: the slice width L/{ROLLER_SLICES} = "
-                             f"{w * 1e3:.3g} mm is more than {SLICE_OVER_WIDTH_MAX:g} times "
-                             f"the contact half-width b = {bmax * 1e6:.3g} µm (they would "
-                             f"take seconds to minutes); raise the load to about {need:g} N "
+            raise InputError("load", f"load: {inp['Q']:.4g} N is too light for the "
+                             "stresses below this roller to be computed quickly: the slice "
+                             f"width L/{ROLLER_SLICES} = {w * 1e3:.3g} mm is more than "
+                             f"{SLICE_OVER_WIDTH_MAX:g} times the contact half-width b = "
+                             f"{bmax * 1e6:.3g} µm (they would take seconds to minutes); raise the load to about {need:g} N "
                              "or more, or shorten the roller")
         s = _guard("load", roller.subsurface_stress, c, inp["nu"], n_depth=ROLLER_DEPTHS)
         edge_load = float(c.edge_load)
