@@ -596,8 +596,9 @@ def _roller_sample(inp: dict) -> dict:
                              "stresses below this roller to be computed quickly: the slice "
                              f"width L/{ROLLER_SLICES} = {w * 1e3:.3g} mm is more than "
                              f"{SLICE_OVER_WIDTH_MAX:g} times the contact half-width b = "
-                             f"{bmax * 1e6:.3g} µm (they would take seconds to minutes); raise the load to about {need:g} N "
-                             "or more, or shorten the roller")
+                             f"{bmax * 1e6:.3g} µm (they would take seconds to minutes); "
+                             f"raise the load to about {need:g} N or more, or shorten the "
+                             "roller")
         s = _guard("load", roller.subsurface_stress, c, inp["nu"], n_depth=ROLLER_DEPTHS)
         edge_load = float(c.edge_load)
     for wm in caught:
