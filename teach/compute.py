@@ -17,6 +17,14 @@ max_shear`, :func:`~ballrace.analytic.subsurface.von_mises` and
 :func:`~ballrace.analytic.subsurface.orthogonal_shear`.  This module only samples them on
 coarse grids and packs the samples for the page.
 
+The roller mode (``mode = "roller"``, :func:`compute_roller`) is the finite line contact
+of a profiled roller on a raceway, :func:`~ballrace.analytic.roller.line_contact`, and the
+von Mises and Tresca stresses below it, :func:`~ballrace.analytic.roller.subsurface_stress`:
+the pressure of every slice, a von Mises map in the plane through the roller's axis and
+the maxima at the centre and at the end of the contact (SI), cached on the SI inputs.  Its
+inputs are bounded (:data:`TILT_MAX`, :data:`ROLLER_LOAD_MAX`,
+:data:`SLICE_OVER_WIDTH_MAX`) so that a state answers in some tenths of a second.
+
 The stress fields scale exactly with the contact: in units of p0 and of the minor
 semi-axis b they depend only on the semi-axis ratio, nu and the traction coefficient.
 The sampled fields are therefore cached on those three, and a change of load (or of the
