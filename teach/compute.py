@@ -492,9 +492,10 @@ ROLLER_LOAD_MAX = 1.0e6
 #: Largest slice width over the contact's largest half-width [-].  The stress below the
 #: contact is integrated with nodes some tenths of the half-width apart along the roller
 #: (:func:`ballrace.analytic.roller.subsurface_stress`), so its time grows with this
-#: ratio: 0.15-0.2 s at 1-3, about 0.3 s at 4-5, 0.65 s at 7.6, 2 s at 30 and 2 minutes
-#: at 300 (a 2-core machine shared with other jobs, load average 7).  A lightly loaded
-#: long roller is refused, with the load that would do.
+#: ratio.  CPU time of the stress map: 30-70 ms up to a ratio of 4, 0.2 s at 7.6, 0.5 s at
+#: 11, 4 s at 27 and 6.6 s at 38 (wall time some 4 times that on a 2-core machine shared
+#: with other jobs, load average 7-10).  The bound keeps a request well below 0.5 s of
+#: CPU; a lightly loaded long roller is refused, with the load that would do.
 SLICE_OVER_WIDTH_MAX = 4.0
 
 
