@@ -353,6 +353,14 @@
   }
 
   // ------------------------------------------------------------------ roller mode
+  // text on a box of its own (legible over curves and colour maps)
+  function boxedText(ctx, text, x, y, fg, bg) {
+    const w = ctx.measureText(text).width, h = 13;
+    const left = ctx.textAlign === "right" ? x - w : ctx.textAlign === "center" ? x - w / 2 : x;
+    const top = ctx.textBaseline === "top" ? y : ctx.textBaseline === "bottom" ? y - h : y - h / 2;
+    ctx.save(); ctx.fillStyle = bg; ctx.fillRect(left - 2, top - 1, w + 4, h + 1); ctx.restore();
+    ctx.fillStyle = fg; ctx.fillText(text, x, y);
+  }
   function drawRollerPressure() {
     const cv = $("#c-rpress"), ctx = prep(cv);
     const ln = cur.line, t = cur.table;
@@ -377,17 +385,17 @@
     // the 2-D Hertz p0 at the mean load per length
     const ph = t.p_hertz * 1e-9;
     ctx.strokeStyle = "#c00"; ctx.setLineDash([6, 4]); ctx.beginPath(); ctx.moveTo(f.px(-half), f.py(ph)); ctx.lineTo(f.px(half), f.py(ph)); ctx.stroke(); ctx.setLineDash([]);
-    ctx.fillStyle = "#c00"; ctx.textAlign = "left"; ctx.textBaseline = "bottom";
-    ctx.fillText(`2-D Hertz p0 at Q/L = ${fmt(t.p_hertz, 1e-9)} GPa`, box[0] + 6, f.py(ph) - 2);
+    ctx.textAlign = "right"; ctx.textBaseline = "top";
+    boxedText(ctx, `2-D Hertz p0 at Q/L = ${fmt(t.p_hertz, 1e-9)} GPa`, box[0] + box[2] - 6, f.py(ph) + 3, "#c00", "rgba(255,255,255,0.85)");
     // the pressure of every slice
     ctx.strokeStyle = "#1f4e9c"; ctx.lineWidth = 2; ctx.beginPath();
     x.forEach((v, i) => { const X = f.px(v), Y = f.py(p[i]); i ? ctx.lineTo(X, Y) : ctx.moveTo(X, Y); });
     ctx.stroke(); ctx.lineWidth = 1;
     ctx.fillStyle = "#1f4e9c";
     x.forEach((v, i) => { ctx.beginPath(); ctx.arc(f.px(v), f.py(p[i]), 2.2, 0, 2 * Math.PI); ctx.fill(); });
-    ctx.textBaseline = "top"; ctx.fillStyle = "#000";
-    ctx.fillText(`centre ${fmt(t.p_centre, 1e-9)} GPa, end of the contact ${fmt(t.p_edge, 1e-9)} GPa at x = ${fmt(t.x_edge, 1e3)} mm, ` +
-      `max ${fmt(t.p_max, 1e-9)} GPa`, box[0] + 6, box[1] + 4);
+    ctx.textAlign = "left"; ctx.textBaseline = "top";
+    boxedText(ctx, `centre ${fmt(t.p_centre, 1e-9)} GPa, end of the contact ${fmt(t.p_edge, 1e-9)} GPa at x = ${fmt(t.x_edge, 1e3)} mm, ` +
+      `max ${fmt(t.p_max, 1e-9)} GPa`, box[0] + 6, box[1] + 4, "#000", "rgba(255,255,255,0.85)");
     cv.dataset.points = String(x.length);
   }
   function drawRollerMap() {
@@ -421,17 +429,16 @@
     const mark = (k, lab, col, dx) => {
       const [v, x, z] = cur.marks[k], X = f.px(x * 1e3), Y = f.py(z * 1e3);
       ctx.strokeStyle = col; ctx.lineWidth = 2; ctx.beginPath(); ctx.arc(X, Y, 6, 0, 2 * Math.PI); ctx.stroke(); ctx.lineWidth = 1;
-      ctx.fillStyle = col; ctx.textBaseline = "middle";
-      ctx.textAlign = dx < 0 ? "right" : "left";
-      ctx.fillText(`${lab} ${fmt(v, 1e-6)} MPa at ${fmt(z, 1e3)} mm`, X + dx, Y + (k === "vm_edge" ? 14 : 0));
+      ctx.textBaseline = "middle"; ctx.textAlign = dx < 0 ? "right" : "left";
+      boxedText(ctx, `${lab} ${fmt(v, 1e-6)} MPa at z = ${fmt(z, 1e3)} mm`, X + dx, Y + (k === "vm_edge" ? 16 : 0), col, "rgba(0,0,0,0.6)");
     };
     mark("vm_centre", "centre", "#fff", 10);
     const ex = cur.marks.vm_edge[1];
     mark("vm_edge", "edge", "#ff6", ex > 0 ? -10 : 10);
     const mx = cur.marks.vm_maximum;
     if (Math.abs(mx[1] - cur.marks.vm_centre[1]) > 1e-12 && Math.abs(mx[1] - ex) > 1e-12) mark("vm_maximum", "max", "#f80", 10);
-    ctx.fillStyle = "#fff"; ctx.textAlign = "left"; ctx.textBaseline = "top";
-    ctx.fillText(`depths ${fmt(m.z[0], 1e3)}–${fmt(m.z[nz - 1], 1e3)} mm (0.2–2.5 b); dotted: depth of the maximum`, box[0] + 4, box[1] + box[3] - 16);
+    ctx.textAlign = "left"; ctx.textBaseline = "top";
+    boxedText(ctx, `depths ${fmt(m.z[0], 1e3)}–${fmt(m.z[nz - 1], 1e3)} mm (0.2–2.5 b); dotted: depth of the maximum`, box[0] + 4, box[1] + box[3] - 16, "#fff", "rgba(0,0,0,0.6)");
     cv.dataset.cells = String(nx * nz);
   }
   const RROWS = [["load", "load Q [N]", 1], ["length", "roller length L [mm]", 1e3], ["R", "reduced radius R [mm]", 1e3],
