@@ -2,6 +2,8 @@
 
 * ``teach subsurface`` — the stress fields under a contact as a PNG
   (:mod:`ballrace.teach.figures`);
+* ``teach roller`` — the pressure along a profiled roller and the stresses below its
+  centre and its end (:func:`ballrace.teach.compute.compute_roller`);
 * ``teach serve`` — the subsurface-stress explorer in the browser
   (:mod:`ballrace.teach.server`);
 * ``teach export`` — the explorer as one self-contained HTML file
@@ -106,6 +108,92 @@ def teach_subsurface(
 
     console.print(literal(f"wrote {out}"))
     print_sections(console, [("Marked on the figure", _teach_rows(info))], units)
+
+
+#: ``teach roller``'s options: the explorer's input -> the option that sets it.
+_ROLLER_OPTIONS = {"load": "--load", "profile": "--profile", "flat": "--flat",
+                   "crown": "--crown", "tilt": "--tilt", "r_roller": "--roller-radius",
+                   "length": "--length", "r_race": "--raceway-radius", "E": "--E",
+                   "nu": "--nu"}
+
+
+@teach_app.command("roller")
+def teach_roller(
+    load: Annotated[str, typer.Option(help='Normal load on the roller ("5 kN").')]
+        = DEFAULTS["load"],
+    profile: Annotated[str, typer.Option(
+        help="Roller profile: straight | iso | lundberg | johns-gohar | crowned (with "
+             "--flat and --crown).")] = DEFAULTS["profile"],
+    flat: Annotated[str, typer.Option(help="crowned: length of the straight middle.")]
+        = DEFAULTS["flat"],
+    crown: Annotated[str, typer.Option(help="crowned: radius of the crown arcs.")]
+        = DEFAULTS["crown"],
+    tilt: Annotated[str, typer.Option(
+        help='Tilt about the rolling direction ("1 mrad"; > 0: the +x end goes in; '
+             "at most 10 mrad).")] = DEFAULTS["tilt"],
+    roller_radius: Annotated[str, typer.Option("--roller-radius", help="Roller radius R1.")]
+        = DEFAULTS["r_roller"],
+    length: Annotated[str, typer.Option(help="Effective roller length L.")]
+        = DEFAULTS["length"],
+    raceway_radius: Annotated[str, typer.Option(
+        "--raceway-radius", help='Raceway radius R2 ("inf" flat, < 0 concave).')]
+        = DEFAULTS["r_race"],
+    e: Annotated[str, typer.Option("--E", help="Young's modulus (both bodies).")]
+        = DEFAULTS["E"],
+    nu: Annotated[str, typer.Option("--nu", help="Poisson's ratio (both bodies).")]
+        = DEFAULTS["nu"],
+    units: Annotated[str, typer.Option("--units", help=UNITS_HELP)] = "eng",
+    json_out: Annotated[bool, typer.Option("--json", help="Print the numbers as JSON (SI).")]
+        = False,
+):
+    """Pressure along a profiled roller and the stresses below its centre and its end.
+
+    The finite line contact of the roller on the raceway (half-space, 41 slices) and the
+    von Mises and Tresca maxima over depth below it, as the explorer's roller mode.
+    """
+    import json
+
+    from ballrace.console import make_console, print_sections
+
+    from .compute import compute_roller
+
+    if units not in ("eng", "si", "us"):
+        _usage(f"--units must be one of eng, si, us; got {units!r}")
+    params = {"mode": "roller", "load": load, "profile": profile, "flat": flat,
+              "crown": crown, "tilt": tilt, "r_roller": roller_radius, "length": length,
+              "r_race": raceway_radius, "E": e, "nu": nu}
+    try:
+        r = compute_roller(params)
+    except InputError as exc:
+        _usage(f"{_ROLLER_OPTIONS.get(exc.field, '--' + exc.field)}: {one_line(exc)}")
+    t = r["table"]
+    if json_out:
+        typer.echo(json.dumps({"inputs": params, "result": t, "note": r["note"]}, indent=2))
+        return
+    if r["note"]:
+        typer.echo(f"warning: {r['note']}", err=True)
+    console = make_console()
+    name = profile.strip().lower()
+    title = f"{name} roller on a raceway, tilt {t['tilt'] * 1e3:.4g} mrad"
+    print_sections(console, [
+        (title, [("load Q", t["load"], "force"), ("length L", t["length"], "length"),
+                 ("reduced radius R", t["R"], "length"),
+                 ("2-D Hertz p0 at Q/L", t["p_hertz"], "stress"),
+                 ("pressure at the centre", t["p_centre"], "stress"),
+                 ("pressure at the contact's end", t["p_edge"], "stress"),
+                 ("  its x", t["x_edge"], "length"),
+                 ("largest pressure", t["p_max"], "stress"),
+                 ("length in contact", t["contact_length"], "length"),
+                 ("approach", t["approach"], "small"),
+                 ("load to reach the roller ends", t["edge_load"], "force")]),
+        ("Stresses below the roller (maxima over depth)", [
+            (f"{label}, {where}{suffix}", t[f"{key}_{w}{part}"], kind)
+            for key, label in (("vm", "von Mises"), ("tr", "Tresca"))
+            for w, where in (("centre", "centre"), ("edge", "end"), ("maximum", "overall"))
+            for part, suffix, kind in (("", "", "stress"), ("_x", ": x", "length"),
+                                       ("_depth", ": depth", "length"))
+            if not (part == "_x" and w == "centre")]),
+    ], units)
 
 
 def _teach_rows(info: dict) -> list:

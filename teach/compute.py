@@ -17,6 +17,14 @@ max_shear`, :func:`~ballrace.analytic.subsurface.von_mises` and
 :func:`~ballrace.analytic.subsurface.orthogonal_shear`.  This module only samples them on
 coarse grids and packs the samples for the page.
 
+The roller mode (``mode = "roller"``, :func:`compute_roller`) is the finite line contact
+of a profiled roller on a raceway, :func:`~ballrace.analytic.roller.line_contact`, and the
+von Mises and Tresca stresses below it, :func:`~ballrace.analytic.roller.subsurface_stress`:
+the pressure of every slice, a von Mises map in the plane through the roller's axis and
+the maxima at the centre and at the end of the contact (SI), cached on the SI inputs.  Its
+inputs are bounded (:data:`TILT_MAX`, :data:`ROLLER_LOAD_MAX`,
+:data:`SLICE_OVER_WIDTH_MAX`) so that a state answers in some tenths of a second.
+
 The stress fields scale exactly with the contact: in units of p0 and of the minor
 semi-axis b they depend only on the semi-axis ratio, nu and the traction coefficient.
 The sampled fields are therefore cached on those three, and a change of load (or of the
@@ -35,7 +43,8 @@ import numpy as np
 
 __all__ = ["FIELDS", "DEFAULTS", "EXPORT_GRID", "TRACTION_MAX", "InputError", "one_line",
            "compute", "compute_safe", "case_inputs", "unpack", "export_grid",
-           "export_params"]
+           "export_params", "ROLLER_PROFILES", "ROLLER_SLICES", "ROLLER_DEPTHS", "TILT_MAX",
+           "ROLLER_LOAD_MAX", "SLICE_OVER_WIDTH_MAX", "roller_inputs", "compute_roller"]
 
 log = logging.getLogger(__name__)
 
@@ -50,6 +59,9 @@ DEFAULTS = {
     "rx1": "6.35 mm", "ry1": "6.35 mm", "rx2": "inf", "ry2": "inf", "E": "200 GPa",
     "race": "inner", "D": "12.7 mm", "dm": "65 mm", "f": "0.52", "angle": "0 deg",
     "case": "",
+    # roller mode (mode "roller"): a profiled roller on a raceway, the load above
+    "profile": "iso", "flat": "8 mm", "crown": "0.5 m", "tilt": "0 mrad",
+    "r_roller": "6 mm", "length": "12 mm", "r_race": "30 mm",
 }
 
 # Grids of one state (coordinates in units of the minor semi-axis b).
@@ -192,7 +204,7 @@ def _contact(params: dict):
         cv = brg.curvature(race, angle)
         c = _guard("D", hertz.elliptical_contact, Q, float(cv.Rx), float(cv.Ry), brg.E_prime)
     else:
-        raise InputError("mode", f"mode must be 'bodies' or 'bearing'; got {mode!r}")
+        raise InputError("mode", f"mode must be 'bodies', 'bearing' or 'roller'; got {mode!r}")
     return c, nu, mu, changed
 
 
@@ -343,6 +355,8 @@ def compute(params: dict, maxima: bool = True) -> dict:
     True and the table's ``tau_max``, ``vm_max`` rows are None): the page asks for them in a
     second request so that the views do not wait.
     """
+    if {**DEFAULTS, **{k: v for k, v in params.items() if v is not None}}["mode"] == "roller":
+        return compute_roller(params)
     c, nu, mu, changed = _contact(params)
     b, p0 = float(c.b), float(c.p_max)
     sx, sy = float(c.semi_axis_x), float(c.semi_axis_y)
@@ -451,3 +465,211 @@ def export_params(alpha: float, load: float, nu: float, mu: float) -> dict:
             "rx2": "inf", "ry2": "inf", "E": _EXPORT_E, "load": f"{load:.12g} N",
             "nu": f"{nu:.12g}", "traction": f"{mu:.12g}"}
 
+
+
+# ------------------------------------------------------------------ roller mode
+#: The roller mode's profiles (the page's choices): name -> label.  "crowned" takes the
+#: inputs ``flat`` (flat length) and ``crown`` (crown radius).
+ROLLER_PROFILES = {"straight": "straight", "iso": "ISO/TS 16281 logarithmic",
+                   "lundberg": "Lundberg (for this load)",
+                   "johns-gohar": "Johns–Gohar (for this load)",
+                   "crowned": "circular crown (flat length, crown radius)"}
+
+#: Slices of the roller mode's line contact, and depths of its stress map (the library's
+#: defaults: 41 slices; 24 depths from 0.2 to 2.5 times the largest half-width).
+ROLLER_SLICES = 41
+ROLLER_DEPTHS = 24
+
+#: Largest |tilt| the roller mode takes [rad].  The library takes any tilt below pi/2 and
+#: warns beyond 0.1 rad; a roller's misalignment is some milliradians, and beyond 10 mrad
+#: a 12 mm roller of the default size touches on a few slices only.
+TILT_MAX = 0.01
+
+#: Largest load of the roller mode [N] (1 MN: far beyond any roller's load; it keeps the
+#: inputs finite, the computing time does not grow with the load).
+ROLLER_LOAD_MAX = 1.0e6
+
+#: Largest slice width over the contact's largest half-width [-].  The stress below the
+#: contact is integrated with nodes some tenths of the half-width apart along the roller
+#: (:func:`ballrace.analytic.roller.subsurface_stress`), so its time grows with this
+#: ratio.  CPU time of the stress map: 30-70 ms up to a ratio of 4, 0.2 s at 7.6, 0.5 s at
+#: 11, 4 s at 27 and 6.6 s at 38 (wall time some 4 times that on a 2-core machine shared
+#: with other jobs, load average 7-10).  The bound keeps a request well below 0.5 s of
+#: CPU; a lightly loaded long roller is refused, with the load that would do.
+SLICE_OVER_WIDTH_MAX = 4.0
+
+
+def roller_inputs(params: dict) -> dict:
+    """The roller mode's inputs parsed to SI (raises :class:`InputError` naming the input).
+
+    Returns ``{"Q", "R1", "R2", "length", "E", "nu", "tilt", "profile"}`` [N, m, m, m, Pa,
+    -, rad, -] with ``profile`` a name of :data:`ROLLER_PROFILES` or ``("crowned",
+    flat_length, crown_radius)`` [m].
+    """
+    from ballrace.analytic._checks import check_positive, check_range
+    from ballrace.units import parse_quantity
+
+    p = {**DEFAULTS, **{k: v for k, v in params.items() if v is not None}}
+    Q = _guard("load", parse_quantity, str(p["load"]), "[force]", "load")
+    _guard("load", check_range, Q, "load", 0.0, ROLLER_LOAD_MAX, low_inclusive=False,
+           high_inclusive=True, unit="N")
+    nu = _number(p["nu"], "nu")
+    _guard("nu", check_range, nu, "nu", -1.0, 0.5, unit="-")
+    E = _guard("E", parse_quantity, str(p["E"]), "[pressure]", "E")
+    _guard("E", check_positive, E, "E", "Pa", bounded=True)
+    R1 = _guard("r_roller", parse_quantity, str(p["r_roller"]), "[length]", "roller radius")
+    _guard("r_roller", check_positive, R1, "roller radius", "m", bounded=True)
+    L = _guard("length", parse_quantity, str(p["length"]), "[length]", "roller length")
+    _guard("length", check_positive, L, "roller length", "m", bounded=True)
+    R2 = _guard("r_race", parse_quantity, str(p["r_race"]), "[length]", "raceway radius",
+                allow_inf=True)
+    if R2 == 0 or not 1.0 / R1 + 1.0 / R2 > 0:
+        raise InputError("r_race", f"raceway radius must be nonzero (inf for a flat, < 0 "
+                         f"for a concave outer raceway) and, when concave, larger than the "
+                         f"roller's: |R2| > R1 = {R1 * 1e3:.4g} mm; got {p['r_race']!r}")
+    tilt = _guard("tilt", parse_quantity, str(p["tilt"]), "[angle]", "tilt")
+    if not abs(tilt) <= TILT_MAX:
+        raise InputError("tilt", f"tilt must be within ±{TILT_MAX * 1e3:g} mrad "
+                         f"(±{math.degrees(TILT_MAX):.3g} deg; a roller's misalignment is some "
+                         f"milliradians, e.g. 1 mrad); got {p['tilt']!r} = "
+                         f"{tilt * 1e3:.4g} mrad")
+    name = str(p["profile"]).strip().lower()
+    if name not in ROLLER_PROFILES:
+        raise InputError("profile", f"profile must be one of {', '.join(ROLLER_PROFILES)}; "
+                         f"got {p['profile']!r}")
+    prof = name
+    if name == "crowned":
+        flat = _guard("flat", parse_quantity, str(p["flat"]), "[length]", "flat length")
+        if not 0.0 <= flat < L:
+            raise InputError("flat", f"flat length must be in [0, L) = [0, {L * 1e3:.4g} mm) "
+                             f"(the roller length); got {p['flat']!r}")
+        crown = _guard("crown", parse_quantity, str(p["crown"]), "[length]", "crown radius")
+        reach = 0.5 * (L - flat)
+        _guard("crown", check_positive, crown, "crown radius", "m", bounded=True)
+        if crown <= reach:
+            raise InputError("crown", f"crown radius must exceed the crowned length at each "
+                             f"end, (L - flat)/2 = {reach * 1e3:.4g} mm; got {p['crown']!r} "
+                             "(crown radii are some metres, e.g. 2 m)")
+        prof = ("crowned", flat, crown)
+    return {"Q": Q, "R1": R1, "R2": R2, "length": L, "E": E, "nu": nu, "tilt": tilt,
+            "profile": prof}
+
+
+def _roller_profile(prof):
+    """The library's profile of :func:`roller_inputs`' ``profile``."""
+    from ballrace.analytic import roller
+
+    if isinstance(prof, tuple):
+        return roller.Crowned(flat_length=prof[1], crown_radius=prof[2])
+    return prof
+
+
+def _light_load(c, inp: dict, mat) -> float:
+    """The smallest load of two significant digits (within some 25 %) whose contact meets
+    :data:`SLICE_OVER_WIDTH_MAX` [N]: a few more line contacts of some ms each."""
+    from ballrace.analytic import roller
+
+    w = float(c.slice_width)
+    need = inp["Q"] * (w / (SLICE_OVER_WIDTH_MAX * float(c.half_width.max()))) ** 2
+    for _ in range(30):
+        need = float(f"{need:.2g}")
+        if need >= ROLLER_LOAD_MAX:
+            return ROLLER_LOAD_MAX
+        t = roller.line_contact(need, inp["R1"], inp["R2"], inp["length"], mat, mat,
+                                profile=_roller_profile(inp["profile"]), tilt=inp["tilt"],
+                                n_slices=ROLLER_SLICES)
+        if w <= SLICE_OVER_WIDTH_MAX * float(t.half_width.max()):
+            return need
+        need *= 1.25
+    return need
+
+
+def _roller_sample(inp: dict) -> dict:
+    """One roller state (uncached): the line contact, its stresses, packed for the page."""
+    import warnings
+
+    from ballrace import Material
+    from ballrace.analytic import roller
+
+    notes = []
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        mat = Material(E=inp["E"], nu=inp["nu"])
+        c = _guard("load", roller.line_contact, inp["Q"], inp["R1"], inp["R2"],
+                   inp["length"], mat, mat, profile=_roller_profile(inp["profile"]),
+                   tilt=inp["tilt"], n_slices=ROLLER_SLICES)
+        w, bmax = float(c.slice_width), float(c.half_width.max())
+        if not w <= SLICE_OVER_WIDTH_MAX * bmax:
+            need = _light_load(c, inp, mat)
+            raise InputError("load", f"load: {inp['Q']:.4g} N is too light for the "
+                             "stresses below this roller to be computed quickly: the slice "
+                             f"width L/{ROLLER_SLICES} = {w * 1e3:.3g} mm is more than "
+                             f"{SLICE_OVER_WIDTH_MAX:g} times the contact half-width b = "
+                             f"{bmax * 1e6:.3g} µm (they would take seconds to minutes); "
+                             f"raise the load to about {need:g} N or more, or shorten the "
+                             "roller")
+        s = _guard("load", roller.subsurface_stress, c, inp["nu"], n_depth=ROLLER_DEPTHS)
+        edge_load = float(c.edge_load)
+    for wm in caught:
+        if issubclass(wm.category, UserWarning):
+            notes.append(one_line(wm.message))
+    n = c.n_slices
+    on = np.flatnonzero(c.in_contact)
+    ends = (int(on[0]), int(on[-1])) if on.size else (0, n - 1)
+    e = ends[0] if c.pressure[ends[0]] >= c.pressure[ends[1]] else ends[1]
+    table = {"load": float(c.load), "length": float(c.length), "R": float(c.R),
+             "E_prime": float(c.E_prime), "p_hertz": float(c.hertz_pressure),
+             "p_max": float(c.max_pressure), "p_centre": float(c.pressure[n // 2]),
+             "p_edge": float(c.pressure[e]), "x_edge": float(c.x[e]),
+             "b_centre": float(c.half_width[n // 2]), "approach": float(c.approach),
+             "contact_length": float(c.contact_length), "edge_load": edge_load,
+             "tilt": float(c.tilt), "nu": float(inp["nu"])}
+    marks = {}
+    for crit, key in (("von_mises", "vm"), ("tresca", "tr")):
+        for where in ("centre", "edge", "maximum"):
+            v, x, z = getattr(s, where)(crit)
+            marks[f"{key}_{where}"] = [float(v), float(x), float(z)]
+            table[f"{key}_{where}"] = float(v)
+            table[f"{key}_{where}_x"] = float(x)
+            table[f"{key}_{where}_depth"] = float(z)
+    line = {"x": [float(v) for v in c.x], "pressure": [float(v) for v in c.pressure],
+            "half_width": [float(v) for v in c.half_width],
+            "slice_loads": [float(v) for v in c.slice_loads],
+            "drop": [float(v) for v in c.drop]}
+    vmap = {"x": [float(v) for v in s.x], "z": [float(v) for v in s.depth],
+            "vm": _pack(np.asarray(s.von_mises).T),          # rows: depth, columns: x
+            "vm_depth": [float(v) for v in s.von_mises_depth],
+            "loaded": [bool(v) for v in s.loaded]}
+    return {"ok": True, "kind": "roller", "table": table, "line": line, "map": vmap,
+            "marks": marks, "note": "; ".join(dict.fromkeys(notes))}
+
+
+def compute_roller(params: dict) -> dict:
+    """One state of the roller mode as a JSON-ready dict (raises :class:`InputError`).
+
+    :func:`ballrace.analytic.roller.line_contact` of the roller on the raceway (both of
+    the material E, nu; :data:`ROLLER_SLICES` slices) and
+    :func:`ballrace.analytic.roller.subsurface_stress` below it (the slice centres,
+    :data:`ROLLER_DEPTHS` depths).  The result has ``table`` (SI: the 2-D Hertz p0 at the
+    mean load per length, the pressures at the centre, the contact's end and their
+    largest, the approach, the load at which the contact reaches the roller ends, and the
+    von Mises / Tresca maxima over depth at the centre, at the end and overall with their
+    positions), ``line`` (the pressure, half-width, slice load and drop of every slice),
+    ``map`` (the von Mises stress at every slice centre and depth, packed, rows = depth)
+    and ``marks`` ([value, x, depth] of the maxima).  Cached on the SI inputs: a state
+    seen before costs nothing.
+    """
+    inp = roller_inputs(params)
+    key = ("roller",) + tuple(inp[k] for k in ("Q", "R1", "R2", "length", "E", "nu", "tilt",
+                                               "profile"))
+    with _CACHE_LOCK:
+        hit = _CACHE.get(key)
+    if hit is None:
+        hit = json.dumps(_roller_sample(inp))
+        with _CACHE_LOCK:
+            if len(_CACHE) >= _CACHE_MAX:
+                _CACHE.pop(next(iter(_CACHE)))
+            _CACHE[key] = hit
+    out = json.loads(hit)
+    out["inputs"] = {}
+    return out

@@ -1,7 +1,8 @@
 """The explorer's page: one HTML file with its CSS and JavaScript inline (a canvas front
 end, no external asset), served live by :mod:`ballrace.teach.server` or written as a
 self-contained handout with a precomputed parameter grid embedded (:func:`export_html`,
-``ballrace teach export``).  The page's sources are in ``teach/static/``.
+``ballrace teach export``).  The page's sources are in ``teach/static/``.  The handout's
+grid is the ball modes'; its roller mode needs the live server (the handout says so).
 """
 from __future__ import annotations
 

@@ -26,7 +26,8 @@ log = logging.getLogger(__name__)
 
 # Bounds of the work one request may ask for (the server refuses more with a 400).  The
 # grids are fixed (ballrace.teach.compute), so a request chooses only the inputs; these
-# bound their size (and TRACTION_MAX there the slowest search).
+# bound their size (and TRACTION_MAX there the slowest search; in roller mode TILT_MAX,
+# ROLLER_LOAD_MAX and SLICE_OVER_WIDTH_MAX, checked by compute_roller before any work).
 MAX_BODY = 16_384        # bytes of a POST /api/compute body
 MAX_QUERY = 2_048        # characters of a GET query string
 MAX_TEXT = 100           # characters of one input

@@ -329,7 +329,7 @@
     const cv = $("#c-3d"); let last = null;
     cv.addEventListener("pointerdown", (e) => { last = [e.clientX, e.clientY]; cv.setPointerCapture(e.pointerId); });
     cv.addEventListener("pointermove", (e) => {
-      if (!last || !cur) return;
+      if (!last || !cur || cur.kind === "roller") return;
       view.yaw += (e.clientX - last[0]) * 0.01; view.pitch = Math.max(-1.5, Math.min(1.5, view.pitch + (e.clientY - last[1]) * 0.01));
       last = [e.clientX, e.clientY]; draw3d();
     });
@@ -352,9 +352,120 @@
     }
   }
 
+  // ------------------------------------------------------------------ roller mode
+  // text on a box of its own (legible over curves and colour maps)
+  function boxedText(ctx, text, x, y, fg, bg) {
+    const w = ctx.measureText(text).width, h = 13;
+    const left = ctx.textAlign === "right" ? x - w : ctx.textAlign === "center" ? x - w / 2 : x;
+    const top = ctx.textBaseline === "top" ? y : ctx.textBaseline === "bottom" ? y - h : y - h / 2;
+    ctx.save(); ctx.fillStyle = bg; ctx.fillRect(left - 2, top - 1, w + 4, h + 1); ctx.restore();
+    ctx.fillStyle = fg; ctx.fillText(text, x, y);
+  }
+  function drawRollerPressure() {
+    const cv = $("#c-rpress"), ctx = prep(cv);
+    const ln = cur.line, t = cur.table;
+    const x = ln.x.map((v) => v * 1e3), p = ln.pressure.map((v) => v * 1e-9);
+    const half = t.length * 1e3 / 2;
+    const top = Math.max(t.p_max, t.p_hertz) * 1e-9 * 1.18;
+    const box = [55, 12, cv.width - 125, cv.height - 52];
+    const f = frame(ctx, box, -half, half, 0, top, "x along the roller [mm] (from its centre)", "pressure p [GPa]", false);
+    // the profile's drop (seen once) on the right-hand axis, in µm (none for a straight roller)
+    const drop = ln.drop.map((v) => v * 1e6);
+    const dmax = Math.max(0, ...drop.filter((v) => isFinite(v)));
+    if (dmax > 1e-6) {
+      const dy = (v) => box[1] + (v / (dmax * 1.1)) * box[3];
+      ctx.strokeStyle = "#999"; ctx.lineWidth = 1; ctx.setLineDash([2, 3]); ctx.beginPath();
+      drop.forEach((v, i) => { if (isFinite(v)) { const X = f.px(x[i]), Y = dy(v); i ? ctx.lineTo(X, Y) : ctx.moveTo(X, Y); } });
+      ctx.stroke(); ctx.setLineDash([]);
+      ctx.fillStyle = "#888"; ctx.textAlign = "left"; ctx.textBaseline = "middle";
+      for (const v of niceTicks(0, dmax * 1.1, 4)) ctx.fillText(+v.toPrecision(3), box[0] + box[2] + 4, dy(v));
+      ctx.save(); ctx.translate(cv.width - 14, box[1] + box[3] / 2); ctx.rotate(Math.PI / 2); ctx.textAlign = "center";
+      ctx.fillText("profile drop [µm] (dotted, downwards)", 0, 0); ctx.restore();
+    }
+    // the 2-D Hertz p0 at the mean load per length
+    const ph = t.p_hertz * 1e-9;
+    ctx.strokeStyle = "#c00"; ctx.setLineDash([6, 4]); ctx.beginPath(); ctx.moveTo(f.px(-half), f.py(ph)); ctx.lineTo(f.px(half), f.py(ph)); ctx.stroke(); ctx.setLineDash([]);
+    ctx.textAlign = "right"; ctx.textBaseline = "top";
+    boxedText(ctx, `2-D Hertz p0 at Q/L = ${fmt(t.p_hertz, 1e-9)} GPa`, box[0] + box[2] - 6, f.py(ph) + 3, "#c00", "rgba(255,255,255,0.85)");
+    // the pressure of every slice
+    ctx.strokeStyle = "#1f4e9c"; ctx.lineWidth = 2; ctx.beginPath();
+    x.forEach((v, i) => { const X = f.px(v), Y = f.py(p[i]); i ? ctx.lineTo(X, Y) : ctx.moveTo(X, Y); });
+    ctx.stroke(); ctx.lineWidth = 1;
+    ctx.fillStyle = "#1f4e9c";
+    x.forEach((v, i) => { ctx.beginPath(); ctx.arc(f.px(v), f.py(p[i]), 2.2, 0, 2 * Math.PI); ctx.fill(); });
+    ctx.textAlign = "left"; ctx.textBaseline = "top";
+    boxedText(ctx, `centre ${fmt(t.p_centre, 1e-9)} GPa, end of the contact ${fmt(t.p_edge, 1e-9)} GPa at x = ${fmt(t.x_edge, 1e3)} mm, ` +
+      `max ${fmt(t.p_max, 1e-9)} GPa`, box[0] + 6, box[1] + 4, "#000", "rgba(255,255,255,0.85)");
+    cv.dataset.points = String(x.length);
+  }
+  function drawRollerMap() {
+    const cv = $("#c-rmap"), ctx = prep(cv);
+    const m = cur.map, t = cur.table, vm = unpack(m.vm);
+    const nx = m.x.length, nz = m.z.length;
+    const w = (m.x[1] - m.x[0]) * 1e3, dz = (m.z[1] - m.z[0]) * 1e3;
+    const x0 = m.x[0] * 1e3 - w / 2, x1 = m.x[nx - 1] * 1e3 + w / 2;
+    const z0 = m.z[0] * 1e3 - dz / 2, z1 = m.z[nz - 1] * 1e3 + dz / 2;
+    const box = [55, 12, cv.width - 135, cv.height - 52];
+    const lo = 0, hi = m.vm.hi;
+    for (let j = 0; j < nz; j++) for (let i = 0; i < nx; i++) {
+      const c = cmap(VIR, (vm[j * nx + i] - lo) / (hi - lo || 1));
+      ctx.fillStyle = `rgb(${c[0]},${c[1]},${c[2]})`;
+      const X = box[0] + (i / nx) * box[2], Y = box[1] + (j / nz) * box[3];
+      ctx.fillRect(Math.floor(X), Math.floor(Y), Math.ceil(box[2] / nx) + 1, Math.ceil(box[3] / nz) + 1);
+    }
+    const f = frame(ctx, box, x0, x1, z0, z1, "x along the roller [mm]", "depth z [mm]", true);
+    // the depth of the maximum at every position (dotted)
+    ctx.strokeStyle = "#fff"; ctx.setLineDash([2, 3]); ctx.beginPath();
+    m.x.forEach((v, i) => { const X = f.px(v * 1e3), Y = f.py(m.vm_depth[i] * 1e3); i ? ctx.lineTo(X, Y) : ctx.moveTo(X, Y); });
+    ctx.stroke(); ctx.setLineDash([]);
+    // colour bar
+    const cb = [box[0] + box[2] + 12, box[1], 14, box[3]];
+    for (let k = 0; k < cb[3]; k++) { const c = cmap(VIR, 1 - k / cb[3]); ctx.fillStyle = `rgb(${c[0]},${c[1]},${c[2]})`; ctx.fillRect(cb[0], cb[1] + k, cb[2], 1); }
+    ctx.strokeStyle = "#888"; ctx.strokeRect(...cb);
+    ctx.fillStyle = "#333"; ctx.textAlign = "left"; ctx.textBaseline = "middle";
+    for (const v of niceTicks(lo * 1e-6, hi * 1e-6, 5)) ctx.fillText(+v.toPrecision(3), cb[0] + cb[2] + 3, cb[1] + cb[3] - (v * 1e6 - lo) / (hi - lo || 1) * cb[3]);
+    ctx.save(); ctx.translate(cv.width - 8, box[1] + box[3] / 2); ctx.rotate(Math.PI / 2); ctx.textAlign = "center"; ctx.fillText("σ_vm [MPa]", 0, 0); ctx.restore();
+    // the maxima: centre and edge (and the largest, when elsewhere)
+    const mark = (k, lab, col, dx) => {
+      const [v, x, z] = cur.marks[k], X = f.px(x * 1e3), Y = f.py(z * 1e3);
+      ctx.strokeStyle = col; ctx.lineWidth = 2; ctx.beginPath(); ctx.arc(X, Y, 6, 0, 2 * Math.PI); ctx.stroke(); ctx.lineWidth = 1;
+      ctx.textBaseline = "middle"; ctx.textAlign = dx < 0 ? "right" : "left";
+      boxedText(ctx, `${lab} ${fmt(v, 1e-6)} MPa at z = ${fmt(z, 1e3)} mm`, X + dx, Y + (k === "vm_edge" ? 16 : 0), col, "rgba(0,0,0,0.6)");
+    };
+    mark("vm_centre", "centre", "#fff", 10);
+    const ex = cur.marks.vm_edge[1];
+    mark("vm_edge", "edge", "#ff6", ex > 0 ? -10 : 10);
+    const mx = cur.marks.vm_maximum;
+    if (Math.abs(mx[1] - cur.marks.vm_centre[1]) > 1e-12 && Math.abs(mx[1] - ex) > 1e-12) mark("vm_maximum", "max", "#f80", 10);
+    ctx.textAlign = "left"; ctx.textBaseline = "top";
+    boxedText(ctx, `depths ${fmt(m.z[0], 1e3)}–${fmt(m.z[nz - 1], 1e3)} mm (0.2–2.5 b); dotted: depth of the maximum`, box[0] + 4, box[1] + box[3] - 16, "#fff", "rgba(0,0,0,0.6)");
+    cv.dataset.cells = String(nx * nz);
+  }
+  const RROWS = [["load", "load Q [N]", 1], ["length", "roller length L [mm]", 1e3], ["R", "reduced radius R [mm]", 1e3],
+    ["p_hertz", "2-D Hertz p0 at Q/L [GPa]", 1e-9], ["p_centre", "p at the centre [GPa]", 1e-9], ["p_edge", "p at the contact's end [GPa]", 1e-9],
+    ["x_edge", "its x [mm]", 1e3], ["p_max", "p max [GPa]", 1e-9], ["b_centre", "half-width b at the centre [mm]", 1e3],
+    ["approach", "approach δ [µm]", 1e6], ["contact_length", "length in contact [mm]", 1e3], ["edge_load", "load to reach the ends [N]", 1],
+    ["vm_centre", "σ_vm max, centre [MPa]", 1e-6], ["vm_centre_depth", "its depth [mm]", 1e3],
+    ["vm_edge", "σ_vm max, end [MPa]", 1e-6], ["vm_edge_x", "its x [mm]", 1e3], ["vm_edge_depth", "its depth [mm]", 1e3],
+    ["vm_maximum", "σ_vm max, overall [MPa]", 1e-6], ["vm_maximum_x", "its x [mm]", 1e3], ["vm_maximum_depth", "its depth [mm]", 1e3],
+    ["tr_centre", "τ_max (Tresca), centre [MPa]", 1e-6], ["tr_edge", "τ_max (Tresca), end [MPa]", 1e-6],
+    ["tr_maximum", "τ_max (Tresca), overall [MPa]", 1e-6], ["tr_maximum_depth", "its depth [mm]", 1e3]];
+  function drawRollerTable() {
+    const tb = $("#rtable tbody"); tb.innerHTML = "";
+    for (const [k, lab, sc] of RROWS) {
+      const tr = document.createElement("tr");
+      tr.innerHTML = `<td>${lab}</td><td data-rkey="${k}">${fmt(cur.table[k], sc)}</td>`;
+      tb.appendChild(tr);
+    }
+  }
+  function renderRoller() {
+    drawRollerPressure(); drawRollerMap(); drawRollerTable();
+  }
+
   function render(pending) {
     if (!cur) return;
     const t0 = performance.now();
+    if (cur.kind === "roller") { renderRoller(); return performance.now() - t0; }
     drawEllipse(); drawSection("sec_y0", "#c-secy", "x"); drawSection("sec_x0", "#c-secx", "y");
     drawProfiles(); draw3d(); drawTable(pending);
     return performance.now() - t0;
@@ -415,14 +526,26 @@
     const syncSliders = () => {           // slider positions from the typed values
       const m = /^\s*([0-9.eE+-]+)\s*(k?N)\s*$/.exec($('[data-param="load"]').value);
       if (m) $("#load-slider").value = Math.log10(parseFloat(m[1]) * (m[2] === "kN" ? 1e3 : 1));
+      const tm = /^\s*([0-9.eE+-]+)\s*mrad\s*$/.exec($('[data-param="tilt"]').value);
+      if (tm) $("#tilt-slider").value = parseFloat(tm[1]);
       const t = parseFloat($('[data-param="traction"]').value);
       if (isFinite(t)) $("#traction-slider").value = t;
     };
     syncSliders();
-    for (const k of ["load", "traction"]) $(`[data-param="${k}"]`).addEventListener("change", syncSliders);
-    const modeView = () => { const b = $("#mode").value === "bearing"; $("#bearing").hidden = !b; $("#bodies").hidden = b; };
+    for (const k of ["load", "traction", "tilt"]) $(`[data-param="${k}"]`).addEventListener("change", syncSliders);
+    const modeView = () => {
+      const mode = $("#mode").value, r = mode === "roller";
+      $("#bearing").hidden = mode !== "bearing"; $("#bodies").hidden = mode !== "bodies"; $("#roller").hidden = !r;
+      $("#crown-inputs").hidden = $('[data-param="profile"]').value !== "crowned";
+      for (const el of $$(".ball-only, .ball-view")) el.hidden = r;
+      for (const el of $$(".roller-view")) el.hidden = !r;
+      document.body.dataset.mode = mode;
+      if (r && pinned) { pinned = null; $("#compare").checked = false; document.body.classList.remove("comparing"); }
+    };
     modeView();
     $("#mode").addEventListener("change", () => { modeView(); update(); });
+    $('[data-param="profile"]').addEventListener("change", modeView);
+    $("#tilt-slider").addEventListener("input", (e) => { $('[data-param="tilt"]').value = `${(+e.target.value).toFixed(2)} mrad`; soon(() => update()); });
     for (const el of $$("[data-param]")) if (el.id !== "mode") el.addEventListener("change", () => update());
     let timer = null;
     const soon = (fn) => { clearTimeout(timer); timer = setTimeout(fn, 40); };
@@ -482,7 +605,7 @@
     sel.value = FIELDS[q.get("field")] ? q.get("field") : "tau_xz";
     if (q.get("iso")) { $("#iso").value = q.get("iso"); $("#iso-out").textContent = (+$("#iso").value).toFixed(2); }
     sel.addEventListener("change", () => render(false));
-    $("#iso").addEventListener("input", (e) => { $("#iso-out").textContent = (+e.target.value).toFixed(2); if (cur) draw3d(); });
+    $("#iso").addEventListener("input", (e) => { $("#iso-out").textContent = (+e.target.value).toFixed(2); if (cur && cur.kind !== "roller") draw3d(); });
     $("#compare").addEventListener("change", (e) => {
       pinned = e.target.checked && cur ? cur : null;
       document.body.classList.toggle("comparing", !!pinned); render(false);
