@@ -138,19 +138,7 @@ class ReferenceLifeMethods:
 
     def a_iso(self, *, kappa, contamination, fatigue_limit, ep_additives=False):
         """a_ISO(κ, e_C C_u / P_ref) of the bearing type (ISO/TS 16281 §5.3; ISO 281:2007
-        §9.3.3) [-].
-
-        Parameters
-        ----------
-        kappa : float
-            Viscosity ratio [-], >= 0.1.
-        contamination : float
-            e_C [-], in [0, 1].
-        fatigue_limit : float
-            C_u [N].
-        ep_additives : bool
-            Lubricant with effective EP additives.
-        """
+        §9.3.3) [-]; the parameters as in :meth:`modified`."""
         return _s(self.life_modification_factor()(kappa, contamination, fatigue_limit,
                                                   self.P_ref, ep_additives=ep_additives))
 

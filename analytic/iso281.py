@@ -557,33 +557,20 @@ def a_iso_equation(kappa, contamination, fatigue_limit, load, *, x1, x2, exponen
 
     Parameters
     ----------
-    kappa : float or array_like
-        Viscosity ratio κ = ν/ν1 [-], >= 0.1.
-    contamination : float or array_like
-        e_C [-], in [0, 1].
-    fatigue_limit : float or array_like
-        C_u [N], > 0.
-    load : float or array_like
-        Dynamic equivalent load P [N], > 0.
+    kappa, contamination, fatigue_limit, load, cap, ep_additives
+        κ [-], e_C [-], C_u [N], P [N], the upper limit of a_ISO [-] and the EP flag, as in
+        :func:`life_modification_factor`.
     x1 : float
         x_1 [-].
     x2 : (float, float)
         x_2 for κ < 0.4 and for κ >= 0.4 [-].
     exponents : (float, float, float)
         m, n, q [-].
-    cap : float
-        Upper limit of a_ISO [-].
-    ep_additives : bool
-        Lubricant with proven effective EP additives.
 
     Returns
     -------
     float or ndarray
-        a_ISO [-], in (0, cap].
-
-    References
-    ----------
-    ISO 281:2007 §9.3.3.
+        a_ISO [-], in (0, cap], with the constants given.
 
     Examples
     --------
