@@ -79,15 +79,13 @@ def clearance_figure(load: float = 2000.0) -> Figure:
         L = np.array([life.reference_rating_life(brg, brg.radial(Fr, clearance=p),
                                                  nominal_contact_angle=0.0).L10r for p in pd])
         series.append({"x": pd * 1e6, "y": L / (C / Fr) ** 3, "label": f"F_r = {Fr:g} N"})
-    return Figure("life-clearance", "life", "Reference rating life against operating clearance",
-                  caption="6305 (Z = 7, D = 11.5 mm, D_pw = 43.5 mm, f = 0.52 / 0.53) under "
-                          "radial load: ISO/TS 16281 L10r over the catalogue L10 = (C/F_r)^3 "
-                          "against the diametral operating clearance (negative: preload).  The "
-                          "optimum lies at a slight preload, a few micrometres for these "
-                          "loads; heavy preload and large clearance both shorten the life.",
-                  panels=({"kind": "lines", "title": "L10r / L10",
-                           "xlabel": "operating clearance [um]", "ylabel": "L10r / L10 [-]",
-                           "series": series},))
+    caption = ("6305 (Z = 7, D = 11.5 mm, D_pw = 43.5 mm, f = 0.52 / 0.53) under "
+               "radial load: ISO/TS 16281 L10r over the catalogue L10 = (C/F_r)^3 "
+               "against the diametral operating clearance (negative: preload).  The "
+               "optimum lies at a slight preload, a few micrometres for these "
+               "loads; heavy preload and large clearance both shorten the life.")
+    return _ratio_figure("life-clearance", "Reference rating life against operating clearance",
+                         "operating clearance [um]", series, caption)
 
 
 def misalignment_figure(load: float = 2000.0) -> Figure:
@@ -109,16 +107,14 @@ def misalignment_figure(load: float = 2000.0) -> Figure:
             L.append(life.reference_rating_life(brg, res, nominal_contact_angle=0.0).L10r)
         series.append({"x": arcmin, "y": np.array(L) / (C / load) ** 3,
                        "label": f"clearance {pd * 1e6:g} um"})
-    return Figure("life-misalignment", "life", "Reference rating life against misalignment",
-                  caption=f"6305 under F_r = {load:g} N with the inner ring tilted about the "
-                          "axis across the load.  The balls first ride up the groove (their "
-                          "deflection changes only to second order in the tilt) and L10r stays "
-                          "flat; past a knee, 15 arcmin at zero clearance and later with "
-                          "clearance, the opposite side of the ball set is squeezed and L10r "
-                          "falls steeply.",
-                  panels=({"kind": "lines", "title": "L10r / L10",
-                           "xlabel": "misalignment [arcmin]", "ylabel": "L10r / L10 [-]",
-                           "series": series},))
+    caption = (f"6305 under F_r = {load:g} N with the inner ring tilted about the "
+               "axis across the load.  The balls first ride up the groove (their "
+               "deflection changes only to second order in the tilt) and L10r stays "
+               "flat; past a knee, 15 arcmin at zero clearance and later with "
+               "clearance, the opposite side of the ball set is squeezed and L10r "
+               "falls steeply.")
+    return _ratio_figure("life-misalignment", "Reference rating life against misalignment",
+                         "misalignment [arcmin]", series, caption)
 
 
 def ratio_figure(load: float = 2000.0) -> Figure:
@@ -138,17 +134,23 @@ def ratio_figure(load: float = 2000.0) -> Figure:
             r = life.reference_rating_life(brg, brg.radial(load, azimuth_offset=off_),
                                            nominal_contact_angle=0.0)
             store.append(r.L10r / (C / load) ** 3)
-    return Figure("life-ratio", "life", "L10r / L10 for a pure radial load at zero clearance",
-                  caption="ISO/TS 16281 ties its raceway capacities to the catalogue C, so for "
-                          "the zero-clearance (Stribeck) distribution L10r equals (C/F_r)^3 up "
-                          "to the discreteness of the ball set: above 1 with a ball on the "
-                          "load line, below with the load between two balls; the mean tends to "
-                          "1 as Z grows.",
-                  panels=({"kind": "lines", "title": "L10r / L10", "xlabel": "balls Z",
-                           "ylabel": "L10r / L10 [-]",
-                           "series": [{"x": Zs, "y": np.array(on), "label": "ball on load line"},
-                                      {"x": Zs, "y": np.array(off),
-                                       "label": "load between two balls"}]},))
+    series = [{"x": Zs, "y": np.array(on), "label": "ball on load line"},
+              {"x": Zs, "y": np.array(off), "label": "load between two balls"}]
+    caption = ("ISO/TS 16281 ties its raceway capacities to the catalogue C, so for "
+               "the zero-clearance (Stribeck) distribution L10r equals (C/F_r)^3 up "
+               "to the discreteness of the ball set: above 1 with a ball on the "
+               "load line, below with the load between two balls; the mean tends to "
+               "1 as Z grows.")
+    return _ratio_figure("life-ratio", "L10r / L10 for a pure radial load at zero clearance",
+                         "balls Z", series, caption)
+
+
+def _ratio_figure(fid: str, title: str, xlabel: str, series: list, caption: str) -> Figure:
+    """A figure of curves of L10r / L10 (the ISO/TS 16281 reference life over the
+    catalogue life)."""
+    return Figure(fid, "life", title, caption=caption,
+                  panels=({"kind": "lines", "title": "L10r / L10", "xlabel": xlabel,
+                           "ylabel": "L10r / L10 [-]", "series": series},))
 
 
 def life_figures(run=None) -> list[Figure]:
