@@ -229,8 +229,18 @@ class OrthogonalShear:
         return 2.0 * self.tau0
 
 
+class _LocatedMaximum:
+    """``at_surface`` of a maximum found at ``depth`` (:class:`MaxShear`,
+    :class:`VonMisesMax`)."""
+
+    @property
+    def at_surface(self):
+        """True where the maximum lies on the surface (depth 0) [-]."""
+        return np.asarray(self.depth == 0)[()]
+
+
 @dataclass(frozen=True)
-class MaxShear:
+class MaxShear(_LocatedMaximum):
     """Maximum Tresca shear stress and where it occurs (frozen).
 
     Without traction the maximum lies on the contact axis x = y = 0; with traction it
@@ -242,6 +252,7 @@ class MaxShear:
     depth : Depth z where it occurs [m]; 0 when the maximum is at the surface.
     x : Position along the rolling direction [m]; 0 on the axis.
     y : Transverse position [m], >= 0 (the field is symmetric in y); 0 on the axis.
+    at_surface : (property) True where the maximum lies on the surface [-].
     """
 
     tau_max: np.ndarray
@@ -249,14 +260,9 @@ class MaxShear:
     x: np.ndarray = 0.0
     y: np.ndarray = 0.0
 
-    @property
-    def at_surface(self):
-        """True where the maximum lies on the surface (depth 0) [-]."""
-        return np.asarray(self.depth == 0)[()]
-
 
 @dataclass(frozen=True)
-class VonMisesMax:
+class VonMisesMax(_LocatedMaximum):
     """Maximum von Mises equivalent stress and where it occurs (frozen).
 
     Without traction the maximum lies on the contact axis x = y = 0; with traction it
@@ -268,17 +274,13 @@ class VonMisesMax:
     depth : Depth z where it occurs [m]; 0 when the maximum is at the surface.
     x : Position along the rolling direction [m]; 0 on the axis.
     y : Transverse position [m], >= 0 (the field is symmetric in y); 0 on the axis.
+    at_surface : (property) True where the maximum lies on the surface [-].
     """
 
     sigma_vm: np.ndarray
     depth: np.ndarray
     x: np.ndarray = 0.0
     y: np.ndarray = 0.0
-
-    @property
-    def at_surface(self):
-        """True where the maximum lies on the surface (depth 0) [-]."""
-        return np.asarray(self.depth == 0)[()]
 
 
 @dataclass(frozen=True)
