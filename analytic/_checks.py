@@ -22,6 +22,8 @@ arguments whose shapes do not fit together.
 """
 from __future__ import annotations
 
+import numbers
+
 import numpy as np
 
 __all__ = [
@@ -36,6 +38,9 @@ __all__ = [
     "check_choice",
     "check_instance",
     "check_integer",
+    "scalar_positive",
+    "scalar_count",
+    "store_checked",
 ]
 
 #: Largest magnitude of a dimensional input accepted with ``bounded=True`` (SI units).
@@ -281,3 +286,52 @@ def check_integer(value, name: str, low: int | None = None) -> np.ndarray:
         raise ValueError(f"{name} must be a whole number{lo}; "
                          f"got {_first(arr, bad)!r}{_where(bad)}")
     return arr
+
+
+def scalar_positive(value, name: str, unit: str) -> float:
+    """One positive, bounded number as a float (a geometry field of a bearing), else
+    ``ValueError`` as :func:`check_positive`; an array is a ``TypeError``.
+
+    Examples
+    --------
+    >>> scalar_positive([1.0, 2.0], "ball_diameter", "m")
+    Traceback (most recent call last):
+    ...
+    TypeError: ball_diameter must be a scalar [m]; got an array of shape (2,)
+    """
+    arr = check_positive(value, name, unit, bounded=True)
+    if arr.ndim:
+        raise TypeError(f"{name} must be a scalar [{unit}]; got an array of shape {arr.shape}")
+    return float(arr)
+
+
+def scalar_count(value, name: str, low: int) -> int:
+    """One whole number >= ``low`` as an int (a count of balls, rollers or rows), else
+    ``ValueError``; whole-valued floats (``9.0``) are accepted, booleans, text and arrays
+    are a ``TypeError``.
+
+    Examples
+    --------
+    >>> scalar_count(9.0, "n_balls", 3)
+    9
+    >>> scalar_count(2, "n_balls", 3)
+    Traceback (most recent call last):
+    ...
+    ValueError: n_balls must be an integer >= 3; got 2
+    """
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise TypeError(f"{name} must be an integer; got {type(value).__name__} {value!r}")
+    if not isinstance(value, numbers.Integral):
+        if not float(value).is_integer():
+            raise ValueError(f"{name} must be a whole number >= {low}; got {value!r}")
+    value = int(value)
+    if value < low:
+        raise ValueError(f"{name} must be an integer >= {low}; got {value}")
+    return value
+
+
+def store_checked(instance, **values) -> None:
+    """Write checked, normalised values onto the fields of a frozen dataclass (from its
+    ``__post_init__``), field name = keyword."""
+    for name, value in values.items():
+        object.__setattr__(instance, name, value)

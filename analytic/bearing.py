@@ -21,14 +21,13 @@ Mz = -e Fa and one applied at z = e gives My = +e Fa.
 from __future__ import annotations
 
 import logging
-import numbers
 from dataclasses import dataclass
 
 import numpy as np
 
 from . import hertz
-from ._checks import (as_array, broadcast, check_choice, check_nonnegative, check_positive,
-                      check_range)
+from ._checks import (as_array, broadcast, check_choice, check_nonnegative, check_range,
+                      scalar_count, scalar_positive, store_checked)
 from .materials import BEARING_STEEL, Material, effective_modulus
 
 __all__ = ["BallBearing", "RACES"]
@@ -61,23 +60,6 @@ def _conformity(value, name: str) -> float:
     return f
 
 
-def _positive_float(value, name: str, unit: str) -> float:
-    arr = check_positive(value, name, unit, bounded=True)
-    if arr.ndim:
-        raise TypeError(f"{name} must be a scalar [{unit}]; got an array of shape {arr.shape}")
-    return float(arr)
-
-
-def _integer(value, name: str, low: int) -> int:
-    if isinstance(value, bool) or not isinstance(value, numbers.Real):
-        raise TypeError(f"{name} must be an integer; got {type(value).__name__} {value!r}")
-    if not isinstance(value, numbers.Integral):
-        if not float(value).is_integer():
-            raise ValueError(f"{name} must be a whole number >= {low}; got {value!r}")
-    value = int(value)
-    if value < low:
-        raise ValueError(f"{name} must be an integer >= {low}; got {value}")
-    return value
 
 
 def _nominal_angle(value, free_angle: float, angle_given: bool) -> float:
@@ -230,8 +212,8 @@ class BallBearing:
     def __post_init__(self) -> None:
         set_ = object.__setattr__
         angle_given = self.free_contact_angle is not None
-        D = _positive_float(self.ball_diameter, "ball_diameter", "m")
-        dm = _positive_float(self.pitch_diameter, "pitch_diameter", "m")
+        D = scalar_positive(self.ball_diameter, "ball_diameter", "m")
+        dm = scalar_positive(self.pitch_diameter, "pitch_diameter", "m")
         if not D < dm:
             raise ValueError(f"ball_diameter must be in (0, pitch_diameter) = (0, {dm:g}) [m]; "
                              f"got {D:g}")
@@ -241,7 +223,7 @@ class BallBearing:
             warnings.warn(f"ball_diameter = {D:g} m, pitch_diameter = {dm:g} m: larger than any "
                           "rolling bearing (balls up to ~0.2 m); lengths are in metres [m] - "
                           "were millimetres given?", UserWarning, stacklevel=3)
-        Z = _integer(self.n_balls, "n_balls", 3)
+        Z = scalar_count(self.n_balls, "n_balls", 3)
         z_max = int(np.floor(np.pi / np.arcsin(D / dm) * (1 + 1e-12)))
         if Z > z_max:
             raise ValueError(f"n_balls must be in [3, {z_max}] for D = {D:g} m on a pitch "
@@ -277,15 +259,10 @@ class BallBearing:
             pd = float(check_range(pd, "diametral_clearance", 0.0, 2.0 * A, low_inclusive=True,
                                    unit="m"))
             bf = float(np.arccos(1.0 - pd / (2.0 * A)))               # Ricci (2009) eq. 5
-        set_(self, "ball_diameter", D)
-        set_(self, "pitch_diameter", dm)
-        set_(self, "n_balls", Z)
-        set_(self, "f_inner", fi)
-        set_(self, "f_outer", fo)
-        set_(self, "free_contact_angle", bf)
-        set_(self, "diametral_clearance", pd)
-        set_(self, "nominal_contact_angle", _nominal_angle(self.nominal_contact_angle, bf,
-                                                          angle_given))
+        store_checked(self, ball_diameter=D, pitch_diameter=dm, n_balls=Z, f_inner=fi,
+                      f_outer=fo, free_contact_angle=bf, diametral_clearance=pd,
+                      nominal_contact_angle=_nominal_angle(self.nominal_contact_angle, bf,
+                                                           angle_given))
         if self.ball_material is None:
             set_(self, "ball_material", self.material)
         if self.ring_material is None:
@@ -296,7 +273,7 @@ class BallBearing:
             if h is not None:
                 h = float(check_range(h, name, 0.0, f * D, high_inclusive=True, unit="m"))
                 set_(self, name, h)
-        set_(self, "n_rows", _integer(self.n_rows, "n_rows", 1))
+        set_(self, "n_rows", scalar_count(self.n_rows, "n_rows", 1))
 
     # ------------------------------------------------------------------ derived geometry
     @property

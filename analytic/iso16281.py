@@ -67,7 +67,8 @@ import numpy as np
 from ._checks import (check_choice, check_instance, check_integer, check_nonnegative,
                       check_positive, check_range)
 
-__all__ = ["ReferenceRatingLife", "raceway_capacities", "reference_rating_life"]
+__all__ = ["ReferenceRatingLife", "ReferenceLifeMethods", "raceway_capacities",
+           "reference_rating_life"]
 
 log = logging.getLogger(__name__)
 
@@ -123,8 +124,51 @@ def raceway_capacities(C, n_balls, ball_diameter, pitch_diameter, f_inner, f_out
     return float(Qci), float(Qce)
 
 
+class ReferenceLifeMethods:
+    """Hours, a_ISO and modified life of an ISO/TS 16281 reference rating life: the methods
+    shared by the ball (:class:`ReferenceRatingLife`) and the roller
+    (:class:`ballrace.analytic.roller.life.ReferenceRatingLife`) results, which give
+    ``L10r``, ``P_ref`` and the a_ISO function of their bearing type
+    (``life_modification_factor()``)."""
+
+    def hours(self, speed_rpm: float):
+        """L10r in hours at ``speed_rpm`` [rev/min] [h]."""
+        n = check_positive(speed_rpm, "speed_rpm", "rev/min")
+        return _s(self.L10r * 1e6 / (60.0 * n))
+
+    def a_iso(self, *, kappa, contamination, fatigue_limit, ep_additives=False):
+        """a_ISO(κ, e_C C_u / P_ref) of the bearing type (ISO/TS 16281 §5.3; ISO 281:2007
+        §9.3.3) [-]; the parameters as in :meth:`modified`."""
+        return _s(self.life_modification_factor()(kappa, contamination, fatigue_limit,
+                                                  self.P_ref, ep_additives=ep_additives))
+
+    def modified(self, *, kappa, contamination, fatigue_limit, reliability=0.9,
+                 ep_additives=False):
+        """Modified reference rating life L_nmr = a1 a_ISO L10r [1e6 rev].
+
+        Parameters
+        ----------
+        kappa : float
+            Viscosity ratio [-], >= 0.1.
+        contamination : float
+            e_C [-], in [0, 1].
+        fatigue_limit : float
+            C_u [N] (e.g. :func:`ballrace.analytic.iso281.fatigue_load_limit_hertz`).
+        reliability : float
+            0.90 … 0.9995 [-].
+        ep_additives : bool
+            Lubricant with effective EP additives.
+        """
+        from .iso281 import reliability_factor
+
+        a1 = reliability_factor(reliability)
+        return _s(a1 * self.a_iso(kappa=kappa, contamination=contamination,
+                                   fatigue_limit=fatigue_limit,
+                                   ep_additives=ep_additives) * self.L10r)
+
+
 @dataclass(frozen=True)
-class ReferenceRatingLife:
+class ReferenceRatingLife(ReferenceLifeMethods):
     """ISO/TS 16281 reference rating life (frozen; arrays over the load cases of a
     vectorized result, floats for one load case).
 
@@ -150,53 +194,12 @@ class ReferenceRatingLife:
     C: float
     rotating: str
 
-    def hours(self, speed_rpm: float):
-        """L10r in hours at ``speed_rpm`` [rev/min] [h]."""
-        n = check_positive(speed_rpm, "speed_rpm", "rev/min")
-        return _s(self.L10r * 1e6 / (60.0 * n))
-
-    def a_iso(self, *, kappa, contamination, fatigue_limit, ep_additives=False):
-        """a_ISO(κ, e_C C_u / P_ref) (ISO/TS 16281 §5.3; ISO 281:2007 §9.3.3) [-].
-
-        Parameters
-        ----------
-        kappa : float
-            Viscosity ratio [-], >= 0.1.
-        contamination : float
-            e_C [-].
-        fatigue_limit : float
-            C_u [N].
-        ep_additives : bool
-            Lubricant with effective EP additives.
-        """
+    def life_modification_factor(self):
+        """a_ISO function of radial ball bearings
+        (:func:`ballrace.analytic.iso281.life_modification_factor`)."""
         from .iso281 import life_modification_factor
 
-        return _s(life_modification_factor(kappa, contamination, fatigue_limit, self.P_ref,
-                                           ep_additives=ep_additives))
-
-    def modified(self, *, kappa, contamination, fatigue_limit, reliability=0.9,
-                 ep_additives=False):
-        """Modified reference rating life L_nmr = a1 a_ISO L10r [1e6 rev].
-
-        Parameters
-        ----------
-        kappa : float
-            Viscosity ratio [-], >= 0.1.
-        contamination : float
-            e_C [-], in [0, 1].
-        fatigue_limit : float
-            C_u [N] (e.g. :func:`ballrace.analytic.iso281.fatigue_load_limit_hertz`).
-        reliability : float
-            0.90 … 0.9995 [-].
-        ep_additives : bool
-            Lubricant with effective EP additives.
-        """
-        from .iso281 import reliability_factor
-
-        a1 = reliability_factor(reliability)
-        return _s(a1 * self.a_iso(kappa=kappa, contamination=contamination,
-                                   fatigue_limit=fatigue_limit,
-                                   ep_additives=ep_additives) * self.L10r)
+        return life_modification_factor
 
 
 def reference_rating_life(bearing, result, *, dynamic_rating=None, rotating: str = "inner",

@@ -61,6 +61,7 @@ __all__ = [
     "fatigue_load_limit_hertz",
     "contamination_factor",
     "life_modification_factor",
+    "a_iso_equation",
     "modified_rating_life",
     "modified_rating_life_hours",
 ]
@@ -96,9 +97,7 @@ FATIGUE_STRESS_LIMIT = 1500e6
 
 # a_ISO of radial ball bearings, ISO 281:2007 eqs. in §9.3.3 / Figure 14:
 # a_ISO = 0.1 [1 - (x1 - x2 / kappa^e)^0.83 (e_C C_u / P)^(1/3)]^-9.3
-_AISO_BALL = ((0.4, 2.5671, 2.2649, 0.054381),      # 0.1 <= kappa < 0.4
-              (1.0, 2.5671, 1.9987, 0.19087),       # 0.4 <= kappa < 1
-              (np.inf, 2.5671, 1.9987, 0.071739))   # 1 <= kappa <= 4
+_AISO_BALL = dict(x1=2.5671, x2=(2.2649, 1.9987), exponents=(0.83, 1.0 / 3.0, 9.3))
 _TYPES = ("radial ball",)
 
 
@@ -536,6 +535,49 @@ def life_modification_factor(kappa, contamination, fatigue_limit, load, *,
         raise ValueError(f"bearing_type must be 'radial ball' (the thrust-bearing constants of "
                          f"ISO 281:2007 are not implemented: no second source); got "
                          f"{bearing_type!r}")
+    return a_iso_equation(kappa, contamination, fatigue_limit, load, **_AISO_BALL, cap=cap,
+                          ep_additives=ep_additives)
+
+
+def a_iso_equation(kappa, contamination, fatigue_limit, load, *, x1, x2, exponents,
+                   cap: float = A_ISO_MAX, ep_additives: bool = False):
+    r"""Life modification factor a_ISO in the common form of ISO 281:2007 §9.3.3 [-].
+
+    .. math::
+        a_{ISO} = 0.1\left[1 - \left(x_1 - \frac{x_2}{\kappa^{e}}\right)^{m}
+                  \left(\frac{e_C C_u}{P}\right)^{n}\right]^{-q}
+
+    with e = 0.054381 for 0.1 <= κ < 0.4, 0.19087 for 0.4 <= κ < 1 and 0.071739 for
+    1 <= κ <= 4, and x2 taking its first value below κ = 0.4 and its second above.  The
+    rules shared by the bearing types: κ above 4 is taken as 4; κ below 0.1 raises
+    ``ValueError``; a_ISO is limited to ``cap``, also where the bracket reaches zero;
+    ``ep_additives``: where κ < 1 and e_C >= 0.2, κ = 1 is used and a_ISO is limited to 3.
+    The constants of a bearing type: :func:`life_modification_factor` (radial ball),
+    :func:`ballrace.analytic.roller.ratings.life_modification_factor` (radial roller).
+
+    Parameters
+    ----------
+    kappa, contamination, fatigue_limit, load, cap, ep_additives
+        κ [-], e_C [-], C_u [N], P [N], the upper limit of a_ISO [-] and the EP flag, as in
+        :func:`life_modification_factor`.
+    x1 : float
+        x_1 [-].
+    x2 : (float, float)
+        x_2 for κ < 0.4 and for κ >= 0.4 [-].
+    exponents : (float, float, float)
+        m, n, q [-].
+
+    Returns
+    -------
+    float or ndarray
+        a_ISO [-], in (0, cap], with the constants given.
+
+    Examples
+    --------
+    >>> round(float(a_iso_equation(1.0, 0.5, 500.0, 2500.0, x1=2.5671,
+    ...                            x2=(2.2649, 1.9987), exponents=(0.83, 1 / 3, 9.3))), 4)
+    2.4305
+    """
     k = check_positive(kappa, "kappa", "-")
     if np.any(k < KAPPA_MIN):
         raise ValueError(f"kappa must be >= {KAPPA_MIN} [-]: ISO 281:2007 gives no a_ISO below "
@@ -552,12 +594,15 @@ def life_modification_factor(kappa, contamination, fatigue_limit, load, *,
     if ep_additives:
         ep = (k < 1.0) & (eC >= 0.2)
         k = np.where(ep, 1.0, k)
-    x2 = np.where(k < 0.4, 2.2649, 1.9987)
+    m, n, q = exponents
+    x2 = np.where(k < 0.4, x2[0], x2[1])
     e = np.where(k < 0.4, 0.054381, np.where(k < 1.0, 0.19087, 0.071739))
-    base = 2.5671 - x2 / k ** e
-    bracket = 1.0 - base ** 0.83 * (eC * Cu / P) ** (1.0 / 3.0)
+    base = x1 - x2 / k ** e
+    if m != 1.0:
+        base = base ** m
+    bracket = 1.0 - base * (eC * Cu / P) ** n
     with np.errstate(divide="ignore", invalid="ignore"):
-        a = np.where(bracket > 0.0, 0.1 * np.abs(bracket) ** -9.3, np.inf)
+        a = np.where(bracket > 0.0, 0.1 * np.abs(bracket) ** -q, np.inf)
     return _s(np.minimum(a, np.where(ep, min(cap, 3.0), cap)))
 
 

@@ -229,8 +229,18 @@ class OrthogonalShear:
         return 2.0 * self.tau0
 
 
+class _LocatedMaximum:
+    """``at_surface`` of a maximum found at ``depth`` (:class:`MaxShear`,
+    :class:`VonMisesMax`)."""
+
+    @property
+    def at_surface(self):
+        """True where the maximum lies on the surface (depth 0) [-]."""
+        return np.asarray(self.depth == 0)[()]
+
+
 @dataclass(frozen=True)
-class MaxShear:
+class MaxShear(_LocatedMaximum):
     """Maximum Tresca shear stress and where it occurs (frozen).
 
     Without traction the maximum lies on the contact axis x = y = 0; with traction it
@@ -242,6 +252,7 @@ class MaxShear:
     depth : Depth z where it occurs [m]; 0 when the maximum is at the surface.
     x : Position along the rolling direction [m]; 0 on the axis.
     y : Transverse position [m], >= 0 (the field is symmetric in y); 0 on the axis.
+    at_surface : (property) True where the maximum lies on the surface [-].
     """
 
     tau_max: np.ndarray
@@ -249,14 +260,9 @@ class MaxShear:
     x: np.ndarray = 0.0
     y: np.ndarray = 0.0
 
-    @property
-    def at_surface(self):
-        """True where the maximum lies on the surface (depth 0) [-]."""
-        return np.asarray(self.depth == 0)[()]
-
 
 @dataclass(frozen=True)
-class VonMisesMax:
+class VonMisesMax(_LocatedMaximum):
     """Maximum von Mises equivalent stress and where it occurs (frozen).
 
     Without traction the maximum lies on the contact axis x = y = 0; with traction it
@@ -268,17 +274,13 @@ class VonMisesMax:
     depth : Depth z where it occurs [m]; 0 when the maximum is at the surface.
     x : Position along the rolling direction [m]; 0 on the axis.
     y : Transverse position [m], >= 0 (the field is symmetric in y); 0 on the axis.
+    at_surface : (property) True where the maximum lies on the surface [-].
     """
 
     sigma_vm: np.ndarray
     depth: np.ndarray
     x: np.ndarray = 0.0
     y: np.ndarray = 0.0
-
-    @property
-    def at_surface(self):
-        """True where the maximum lies on the surface (depth 0) [-]."""
-        return np.asarray(self.depth == 0)[()]
 
 
 @dataclass(frozen=True)
@@ -747,23 +749,34 @@ def max_shear(c: HertzContact, nu=0.3, traction=0.0) -> MaxShear:
     >>> [round(float(v), 4) for v in (m.tau_max / c.p_max, m.x / c.a, m.depth / c.a)]
     [0.3124, 0.1224, 0.4739]
     """
+    tau, depth, x, y = _located_maximum(c, nu, traction, _tresca_axis, "tresca")
+    return MaxShear(tau_max=tau, depth=depth, x=x, y=y)
+
+
+def _traction_inputs(c: HertzContact, nu, traction):
+    """Checked and broadcast (a_x/b, a_y/b, b, p_max, nu, traction) of a contact."""
     _check_contact(c)
     nu = _check_nu(nu)
     mu = _check_traction(traction)
     broadcast(nu=nu, traction=mu, c=np.asarray(c.b))
     axn, ayn, b, p, nu = _axis_inputs(c, nu)
-    axn, ayn, b, p, nu, mu = np.broadcast_arrays(axn, ayn, b, p, nu, mu)
+    return np.broadcast_arrays(axn, ayn, b, p, nu, mu)
+
+
+def _located_maximum(c: HertzContact, nu, traction, axis_criterion, criterion: str):
+    """(maximum [Pa], depth [m], x [m], y [m]) of a stress criterion: on the contact axis
+    without traction, over the section y = 0 and the surface with one."""
+    axn, ayn, b, p, nu, mu = _traction_inputs(c, nu, traction)
 
     def fun(zeta):
-        return _tresca_axis(*_axis_kernel(axn, ayn, zeta, nu, deriv=True))
+        return axis_criterion(*_axis_kernel(axn, ayn, zeta, nu, deriv=True))
 
     v, zeta = _maximize_depth(fun, axn.shape)
     if not np.any(mu != 0):
         zero = _scalar(np.zeros(np.shape(v)))
-        return MaxShear(tau_max=_scalar(v * p), depth=_scalar(zeta * b), x=zero, y=zero)
-    v, x, y, zeta = _traction_maxima(axn, ayn, nu, mu, v, zeta, "tresca")
-    return MaxShear(tau_max=_scalar(v * p), depth=_scalar(zeta * b), x=_scalar(x * b),
-                    y=_scalar(y * b))
+        return _scalar(v * p), _scalar(zeta * b), zero, zero
+    v, x, y, zeta = _traction_maxima(axn, ayn, nu, mu, v, zeta, criterion)
+    return _scalar(v * p), _scalar(zeta * b), _scalar(x * b), _scalar(y * b)
 
 
 def von_mises(c: HertzContact, nu=0.3, traction=0.0) -> VonMisesMax:
@@ -807,23 +820,8 @@ def von_mises(c: HertzContact, nu=0.3, traction=0.0) -> VonMisesMax:
     >>> round(float(v.sigma_vm / c.p_max), 4), round(float(v.depth / c.a), 4)
     (0.62, 0.4809)
     """
-    _check_contact(c)
-    nu = _check_nu(nu)
-    mu = _check_traction(traction)
-    broadcast(nu=nu, traction=mu, c=np.asarray(c.b))
-    axn, ayn, b, p, nu = _axis_inputs(c, nu)
-    axn, ayn, b, p, nu, mu = np.broadcast_arrays(axn, ayn, b, p, nu, mu)
-
-    def fun(zeta):
-        return _vm_axis(*_axis_kernel(axn, ayn, zeta, nu, deriv=True))
-
-    v, zeta = _maximize_depth(fun, axn.shape)
-    if not np.any(mu != 0):
-        zero = _scalar(np.zeros(np.shape(v)))
-        return VonMisesMax(sigma_vm=_scalar(v * p), depth=_scalar(zeta * b), x=zero, y=zero)
-    v, x, y, zeta = _traction_maxima(axn, ayn, nu, mu, v, zeta, "von_mises")
-    return VonMisesMax(sigma_vm=_scalar(v * p), depth=_scalar(zeta * b), x=_scalar(x * b),
-                       y=_scalar(y * b))
+    svm, depth, x, y = _located_maximum(c, nu, traction, _vm_axis, "von_mises")
+    return VonMisesMax(sigma_vm=svm, depth=depth, x=x, y=y)
 
 
 # ------------------------------------------------------------------------- maxima with traction
@@ -977,12 +975,7 @@ def surface_tension(c: HertzContact, nu=0.3, traction=0.0) -> SurfaceTension:
     >>> round(0.4 / 3 + 4.3 * np.pi * 0.2 / 8, 6)
     0.471055
     """
-    _check_contact(c)
-    nu = _check_nu(nu)
-    mu = _check_traction(traction)
-    broadcast(nu=nu, traction=mu, c=np.asarray(c.b))
-    axn, ayn, b, p, nu = _axis_inputs(c, nu)
-    axn, ayn, b, p, nu, mu = np.broadcast_arrays(axn, ayn, b, p, nu, mu)
+    axn, ayn, b, p, nu, mu = _traction_inputs(c, nu, traction)
     shape = axn.shape
     out = np.zeros((3, axn.size))
     for i, (ax, ay, n, m) in enumerate(zip(*(a.reshape(-1) for a in (axn, ayn, nu, mu)))):

@@ -17,6 +17,7 @@ from __future__ import annotations
 import time
 
 import numpy as np
+import pytest
 
 import ballrace
 from ballrace.analytic import hertz, subsurface
@@ -82,28 +83,13 @@ def test_bench_section_100x100(benchmark):
     assert s.sxx.shape == (100, 100)
 
 
-def test_bench_ellipse_section_frictionless(benchmark):
-    assert benchmark(ellipse_section_frictionless).sxx.shape == (100, 100)
+SECTIONS = [f"{shape}_section_{kind}" for shape in ("ellipse", "circle", "line")
+            for kind in ("frictionless", "traction")]
 
 
-def test_bench_ellipse_section_traction(benchmark):
-    assert benchmark(ellipse_section_traction).sxx.shape == (100, 100)
-
-
-def test_bench_circle_section_frictionless(benchmark):
-    assert benchmark(circle_section_frictionless).sxx.shape == (100, 100)
-
-
-def test_bench_circle_section_traction(benchmark):
-    assert benchmark(circle_section_traction).sxx.shape == (100, 100)
-
-
-def test_bench_line_section_frictionless(benchmark):
-    assert benchmark(line_section_frictionless).sxx.shape == (100, 100)
-
-
-def test_bench_line_section_traction(benchmark):
-    assert benchmark(line_section_traction).sxx.shape == (100, 100)
+@pytest.mark.parametrize("name", SECTIONS)
+def test_bench_section(benchmark, name):
+    assert benchmark(globals()[name]).sxx.shape == (100, 100)
 
 
 def _best(fn, n=7):

@@ -559,8 +559,9 @@ VERSIONED = ("gmsh", "scikit-fem", "meshio", "numpy", "scipy", "pypardiso", "mkl
              "scikit-sparse", "pyamg")
 
 
-def versions() -> dict:
-    """Installed versions of :data:`VERSIONED` (None when not installed).
+def versions(packages=VERSIONED) -> dict:
+    """Installed versions of ``packages`` (default :data:`VERSIONED`; None when not
+    installed).
 
     Examples
     --------
@@ -570,7 +571,7 @@ def versions() -> dict:
     from importlib import metadata
 
     out = {}
-    for p in VERSIONED:
+    for p in packages:
         try:
             out[p] = metadata.version(p)
         except metadata.PackageNotFoundError:

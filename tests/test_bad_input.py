@@ -84,7 +84,7 @@ NOT_INPUTS = {"Curvature", "HertzContact", "LineContact", "OrthogonalShear", "Ma
               "LundbergPalmgrenLife", "LoadDistribution", "ConvergenceError",
               "DuplexResult", "HighSpeedResult", "FatigueLoadLimit",
               "ReferenceRatingLife", "OperatingClearance", "SurfaceTension",
-              "ShaftResult", "ShaftLife", "DutyCycleLife",
+              "ShaftResult", "ShaftLife", "DutyCycleLife", "ReferenceLifeMethods",
               "Row", "SeatBearing", "RowMount", "missing"}   # the seat contract: interfaces
 
 BAD = {
@@ -399,6 +399,10 @@ TABLE.update({
                                         {**_ISO_ROLES, "load": "scale",
                                          "bearing_type": "choice", "cap": "pos"},
                                         ("kappa", "contamination", "fatigue_limit", "load")),
+    "iso281.a_iso_equation": ({**_ISO, "load": 3e3, "x1": 2.5671, "x2": (2.2649, 1.9987),
+                               "exponents": (0.83, 1.0 / 3.0, 9.3), "cap": 50.0},
+                              {**_ISO_ROLES, "load": "scale", "cap": "pos"},
+                              ("kappa", "contamination", "fatigue_limit", "load")),
     "iso281.modified_rating_life": ({**_ISO, "C": 30e3, "P": 3e3, "reliability": 0.9},
                                     {**_ISO_ROLES, "C": "scale", "P": "scale",
                                      "reliability": "unit"},

@@ -198,15 +198,25 @@ def test_killing_one_of_two_workers_mid_run(tmp_path):
     assert dist["fault-sweep-highspeed-218"]["status"] in ("pass", "error")
 
 
-@pytest.mark.slow
-def test_killing_the_only_worker_reports_lost_cases_as_errors(tmp_path):
-    """With no worker left the outstanding cases become errors after the timeout."""
+def _one_worker_run(tmp_path):
+    """A one-worker cluster and a ``validate`` run of SLOW_SWEEP on it (workers time out
+    after 5 s); the caller closes the cluster."""
     cases = tmp_path / "one.toml"
     cases.write_text(SLOW_SWEEP)
     cluster = Cluster(tmp_path, 1)
     try:
-        run = _validate(cases, tmp_path / "dist", "--scheduler", cluster.address,
-                        env={"BALLRACE_DASK_TIMEOUT": "5"})
+        return cluster, _validate(cases, tmp_path / "dist", "--scheduler", cluster.address,
+                                  env={"BALLRACE_DASK_TIMEOUT": "5"})
+    except BaseException:
+        cluster.close()
+        raise
+
+
+@pytest.mark.slow
+def test_killing_the_only_worker_reports_lost_cases_as_errors(tmp_path):
+    """With no worker left the outstanding cases become errors after the timeout."""
+    cluster, run = _one_worker_run(tmp_path)
+    try:
         killed = cluster.kill_when_busy("w0", run)
         code, out = _finish(run, timeout=120)
         waited = time.monotonic() - killed
@@ -222,12 +232,8 @@ def test_killing_the_only_worker_reports_lost_cases_as_errors(tmp_path):
 @pytest.mark.slow
 def test_killing_the_scheduler_reports_cases_as_errors(tmp_path):
     """A scheduler that dies mid-run: the outstanding cases are errors; the run ends."""
-    cases = tmp_path / "one.toml"
-    cases.write_text(SLOW_SWEEP)
-    cluster = Cluster(tmp_path, 1)
+    cluster, run = _one_worker_run(tmp_path)
     try:
-        run = _validate(cases, tmp_path / "dist", "--scheduler", cluster.address,
-                        env={"BALLRACE_DASK_TIMEOUT": "5"})
         addr = cluster.worker_address("w0")
         deadline = time.monotonic() + 120
         while not cluster.client.processing(workers=[addr]).get(addr):

@@ -411,25 +411,29 @@ def test_issue14_item5_overload_reported_like_the_static_solver():
 from hsref import rederive_highspeed  # noqa: E402
 
 STEEL208 = ballrace.Material(E=208e9, nu=0.3, density=7850.0)
-R40, R25 = np.radians(40.0), np.radians(25.0)
+R40 = np.radians(40.0)
+
+
+def _reproducer(D, Z, dm, fi, fo, angle_deg, **run):
+    """(bearing of STEEL208 with free contact angle ``angle_deg``, loads and speed)."""
+    return (ballrace.BallBearing(D, Z, dm, fi, fo, free_contact_angle=np.radians(angle_deg),
+                                 material=STEEL208), run)
+
+
 # the four reproducers of issue 21: (bearing, loads and speed)
 ISSUE21 = {
-    "40deg-light-combined-inner": (
-        ballrace.BallBearing(0.011472, 11, 0.05729, 0.5068, 0.5133, free_contact_angle=R40,
-                             material=STEEL208),
-        dict(Fa=39.445, Fr=28.333, speed_inner=738.5108, control="inner")),
-    "40deg-pure-radial-inner": (
-        ballrace.BallBearing(0.010351, 7, 0.04465, 0.5076, 0.5387, free_contact_angle=R40,
-                             material=STEEL208),
-        dict(Fa=0.0, Fr=190.046, speed_inner=547.086, control="inner")),
-    "25deg-light-combined-inner": (
-        ballrace.BallBearing(0.006654, 10, 0.02771, 0.5101, 0.5333, free_contact_angle=R25,
-                             material=STEEL208),
-        dict(Fa=27.0, Fr=49.843, speed_inner=3729.6389, control="inner")),
-    "40deg-thrust-outer": (
-        ballrace.BallBearing(0.020265, 10, 0.13107, 0.5109, 0.54, free_contact_angle=R40,
-                             material=STEEL208),
-        dict(Fa=3230.782, Fr=0.0, speed_inner=798.9605, control="outer")),
+    "40deg-light-combined-inner": _reproducer(
+        0.011472, 11, 0.05729, 0.5068, 0.5133, 40.0,
+        Fa=39.445, Fr=28.333, speed_inner=738.5108, control="inner"),
+    "40deg-pure-radial-inner": _reproducer(
+        0.010351, 7, 0.04465, 0.5076, 0.5387, 40.0,
+        Fa=0.0, Fr=190.046, speed_inner=547.086, control="inner"),
+    "25deg-light-combined-inner": _reproducer(
+        0.006654, 10, 0.02771, 0.5101, 0.5333, 25.0,
+        Fa=27.0, Fr=49.843, speed_inner=3729.6389, control="inner"),
+    "40deg-thrust-outer": _reproducer(
+        0.020265, 10, 0.13107, 0.5109, 0.54, 40.0,
+        Fa=3230.782, Fr=0.0, speed_inner=798.9605, control="outer"),
 }
 
 

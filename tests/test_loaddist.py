@@ -20,6 +20,7 @@ import ballrace
 from ballrace.analytic import loaddist, newton
 from ballrace.analytic.bearing import BallBearing
 from ballrace.analytic.loaddist import ConvergenceError
+from fdref import central_jacobian, in_force_units
 
 LBF = 4.4482216152605
 STEEL = ballrace.Material(E=200e9, nu=0.3)
@@ -330,19 +331,9 @@ def test_rotational_symmetry():
 def test_stiffness_matches_finite_differences(case, arm):
     brg = ricci218()
     r = brg.solve(**case, moment_arm=arm)
-    u = r.displacements
-    h = np.array([1e-8, 1e-8, 1e-8, 1e-7, 1e-7])
-    fd = np.empty((5, 5))
-    for j in range(5):
-        up, um = u.copy(), u.copy()
-        up[j] += h[j]
-        um[j] -= h[j]
-        Fp = brg.solve(displacements=up, moment_arm=arm).loads
-        Fm = brg.solve(displacements=um, moment_arm=arm).loads
-        fd[:, j] = (Fp - Fm) / (2 * h[j])
-    sc = np.array([1, 1, 1, brg.inner_groove_center_radius, brg.inner_groove_center_radius])
-    K = r.stiffness / sc[:, None] / sc[None, :]
-    Kfd = fd / sc[:, None] / sc[None, :]
+    fd = central_jacobian(lambda u: brg.solve(displacements=u, moment_arm=arm).loads,
+                          r.displacements, np.array([1e-8, 1e-8, 1e-8, 1e-7, 1e-7]))
+    K, Kfd = in_force_units(r.stiffness, brg), in_force_units(fd, brg)
     assert np.max(np.abs(K - Kfd)) < 1e-5 * np.max(np.abs(K))
 
 

@@ -16,6 +16,7 @@ from hypothesis import strategies as st
 
 import ballrace
 from ballrace.analytic import hertz
+from fdref import central_jacobian, in_force_units
 from mpref import k_exact
 
 STEEL = ballrace.Material(E=200e9, nu=0.3)
@@ -116,17 +117,9 @@ def test_ring_forces_stiffness_is_the_derivative(arm):
     r = loaddist.solve(brg, Fa=17800.0, Fy=8900.0, Mz=-200.0, moment_arm=arm)
     F, K = loaddist.ring_forces(brg, r.displacements, moment_arm=arm)
     assert np.array_equal(F, r.loads) and np.array_equal(K, r.stiffness)
-    u = r.displacements
-    h = np.array([1e-9, 1e-9, 1e-9, 1e-8, 1e-8])
-    fd = np.empty((5, 5))
-    for j in range(5):
-        up, um = u.copy(), u.copy()
-        up[j] += h[j]
-        um[j] -= h[j]
-        fd[:, j] = (loaddist.ring_forces(brg, up, moment_arm=arm)[0]
-                    - loaddist.ring_forces(brg, um, moment_arm=arm)[0]) / (2 * h[j])
-    sc = np.array([1, 1, 1, brg.inner_groove_center_radius, brg.inner_groove_center_radius])
-    Ks, fds = K / sc[:, None] / sc[None, :], fd / sc[:, None] / sc[None, :]
+    fd = central_jacobian(lambda u: loaddist.ring_forces(brg, u, moment_arm=arm)[0],
+                          r.displacements, np.array([1e-9, 1e-9, 1e-9, 1e-8, 1e-8]))
+    Ks, fds = in_force_units(K, brg), in_force_units(fd, brg)
     assert np.max(np.abs(Ks - fds)) < 1e-8 * np.max(np.abs(Ks))
 
 

@@ -21,6 +21,7 @@ from scipy import optimize
 import ballrace
 from ballrace.analytic import subsurface
 from ballrace.analytic.hertz import elliptical_contact, line_contact
+from fieldref import alpha_for_k, divergence
 
 E_PRIME = 219.78e9
 GOLDEN = (1.0 + 5.0**0.5) / 2.0
@@ -180,7 +181,7 @@ class TestLundbergPalmgren:
     def test_lp_is_the_maximum_of_the_stress_field(self, k):
         """The numerical max of |tau_xz(x, 0, z)| is LP's tau0 at (x0, z0): validates both
         the closed form (incl. the derived x0) and the field."""
-        c = elliptical_contact(1000.0, 0.005, 0.005 * _alpha_for_k(k), E_PRIME)
+        c = elliptical_contact(1000.0, 0.005, 0.005 * alpha_for_k(k), E_PRIME)
         assert float(c.k) == pytest.approx(k, rel=1e-10)
         o = subsurface.orthogonal_shear(c)
         b, p = float(c.b), float(c.p_max)
@@ -222,7 +223,7 @@ class TestLundbergPalmgren:
     def test_approximate_method_documented_error(self):
         # H&D (1981) eq. 3.33: t ~ 1 + 0.16 csch(k/2); documented max errors are tight
         ratio = np.logspace(-2, 0, 20001)
-        c = elliptical_contact(1000.0, 0.005, 0.005 * _alpha_for_k(1.0 / ratio), E_PRIME)
+        c = elliptical_contact(1000.0, 0.005, 0.005 * alpha_for_k(1.0 / ratio), E_PRIME)
         ex = subsurface.orthogonal_shear(c, method="exact")
         ap = subsurface.orthogonal_shear(c, method="approximate")
         for q, bound in subsurface.LP_APPROXIMATION_ERROR.items():
@@ -250,16 +251,6 @@ class TestLundbergPalmgren:
     def test_bad_method(self):
         with pytest.raises(ValueError, match="method must be one of"):
             subsurface.orthogonal_shear(circle(), method="csch")
-
-
-def _alpha_for_k(k):
-    """Radius ratio Ry/Rx giving ellipticity k (inverse of Hertz's relation)."""
-    from scipy.special import ellipe, ellipk
-    k = np.asarray(k, float)
-    m = 1 - 1 / k**2
-    with np.errstate(divide="ignore", invalid="ignore"):
-        a = (k**2 * ellipe(m) - ellipk(m)) / (ellipk(m) - ellipe(m))
-    return np.where(k == 1, 1.0, a)
 
 
 # ----------------------------------------------------------------- on-axis closed form
@@ -372,7 +363,7 @@ class TestField:
         z = np.concatenate([np.zeros(41), rng.uniform(0, 3, 200)])
         errs = {}
         for k in (1e3, 1e4):
-            c = elliptical_contact(1000.0, 0.005, 0.005 * _alpha_for_k(k), E_PRIME)
+            c = elliptical_contact(1000.0, 0.005, 0.005 * alpha_for_k(k), E_PRIME)
             b = float(c.b)
             lc = line_contact(1.0, 1.0, np.inf, ballrace.BEARING_STEEL)
             ref = nd(subsurface.line_stress(lc, x * lc.b, z * lc.b, nu=0.3), lc)
@@ -505,18 +496,7 @@ def test_symmetry(alpha, xi, eta, zeta, nu):
 def test_equilibrium(alpha, xi, eta, zeta, nu):
     """div(sigma) = 0 by 4th-order central differences (h = 1e-3 z, so the truncation
     error stays small near the surface where the field varies on the scale z)."""
-    c = contact(alpha)
-    b = float(c.b)
-    x0, y0, z0 = xi * float(c.semi_axis_x), eta * float(c.semi_axis_y), zeta * b
-    h = 1e-3 * z0
-    off = np.array([-2, -1, 1, 2]) * h
-    w = np.array([1, -8, 8, -1]) / (12 * h)
-    sx = subsurface.stress(c, x0 + off, y0, z0, nu)
-    sy = subsurface.stress(c, x0, y0 + off, z0, nu)
-    sz = subsurface.stress(c, x0, y0, z0 + off, nu)
-    div = np.array([w @ sx.sxx + w @ sy.sxy + w @ sz.sxz,
-                    w @ sx.sxy + w @ sy.syy + w @ sz.syz,
-                    w @ sx.sxz + w @ sy.syz + w @ sz.szz]) * b / c.p_max
+    div = divergence(contact(alpha), xi, eta, zeta, nu)
     assert np.max(np.abs(div)) < 1e-7
 
 

@@ -122,12 +122,16 @@ def test_bare_number_example_follows_the_dimension(dim, name, example):
         parse_quantity(5000, dim, name)
 
 
-def _shaft(tmp_path, old, new):
-    text = (EXAMPLES / "shaft_gearbox.toml").read_text(encoding="utf-8")
+def _edited_example(example, path, old, new):
+    """The example case file with its first ``old`` replaced by ``new``, written to path."""
+    text = (EXAMPLES / example).read_text(encoding="utf-8")
     assert old in text
-    p = tmp_path / "s.toml"
-    p.write_text(text.replace(old, new, 1), encoding="utf-8")
-    return p
+    path.write_text(text.replace(old, new, 1), encoding="utf-8")
+    return path
+
+
+def _shaft(tmp_path, old, new):
+    return _edited_example("shaft_gearbox.toml", tmp_path / "s.toml", old, new)
 
 
 def _one_error(args):
@@ -184,11 +188,7 @@ def test_a_bearing_file_given_to_shaft_points_at_bearing():
 
 
 def _bearing(tmp_path, old, new):
-    text = (EXAMPLES / "bearing_209.toml").read_text(encoding="utf-8")
-    assert old in text
-    p = tmp_path / "b.toml"
-    p.write_text(text.replace(old, new, 1), encoding="utf-8")
-    return p
+    return _edited_example("bearing_209.toml", tmp_path / "b.toml", old, new)
 
 
 @pytest.mark.parametrize("old, new, expected", [

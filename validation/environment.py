@@ -10,7 +10,6 @@ import os
 import platform
 import subprocess
 import sys
-from importlib import metadata
 from pathlib import Path
 
 __all__ = ["environment", "PACKAGES"]
@@ -49,12 +48,9 @@ def environment() -> dict:
     ``git_commit`` is None when ballrace is not run from its git checkout (installed
     from a wheel); the report then names the package version (``packages["ballrace"]``).
     """
-    versions = {}
-    for p in PACKAGES:
-        try:
-            versions[p] = metadata.version(p)
-        except metadata.PackageNotFoundError:
-            versions[p] = None
+    from ballrace.fem.api import versions as installed
+
+    versions = installed(PACKAGES)
     git = _in_checkout()
     status = _git("status", "--porcelain") if git else ""
     return {

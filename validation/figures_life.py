@@ -21,6 +21,9 @@ import logging
 
 import numpy as np
 
+import ballrace
+from ballrace.analytic import iso281, life, loaddist, ratings
+
 from .figures import Figure
 
 __all__ = ["life_figures", "aiso_figure", "clearance_figure", "misalignment_figure",
@@ -35,16 +38,8 @@ _B6305 = dict(ball_diameter=0.0115, n_balls=7, pitch_diameter=0.0435, f_inner=0.
               f_outer=0.53)
 
 
-def _missing(fid, title, exc) -> Figure:
-    return Figure(fid, "life", title, note=f"omitted: {exc}")
-
-
 def aiso_figure() -> Figure:
     """a_ISO(κ, e_C C_u / P) of radial ball bearings (ISO 281:2007 §9.3.3, Figure 14)."""
-    try:
-        from ballrace.analytic import iso281
-    except ImportError as exc:  # pragma: no cover
-        return _missing("life-aiso", "Life modification factor a_ISO", exc)
     x = np.logspace(np.log10(0.005), np.log10(5.0), 241)
     series = [{"x": x, "y": np.asarray(iso281.life_modification_factor(k, 1.0, x, 1.0)),
                "label": f"kappa = {k:g}"} for k in AISO_KAPPAS]
@@ -60,17 +55,11 @@ def aiso_figure() -> Figure:
 
 
 def _bearing(clearance=0.0):
-    import ballrace
-
     return ballrace.BallBearing(**_B6305, diametral_clearance=clearance)
 
 
 def clearance_figure(load: float = 2000.0) -> Figure:
     """ISO/TS 16281 L10r / (C/F_r)³ of a 6305 against the operating clearance."""
-    try:
-        from ballrace.analytic import life, ratings
-    except ImportError as exc:  # pragma: no cover
-        return _missing("life-clearance", "Reference life against clearance", exc)
     brg = _bearing()
     C = float(ratings.dynamic_rating(brg, contact_angle=0.0))
     series = []
@@ -79,23 +68,17 @@ def clearance_figure(load: float = 2000.0) -> Figure:
         L = np.array([life.reference_rating_life(brg, brg.radial(Fr, clearance=p),
                                                  nominal_contact_angle=0.0).L10r for p in pd])
         series.append({"x": pd * 1e6, "y": L / (C / Fr) ** 3, "label": f"F_r = {Fr:g} N"})
-    return Figure("life-clearance", "life", "Reference rating life against operating clearance",
-                  caption="6305 (Z = 7, D = 11.5 mm, D_pw = 43.5 mm, f = 0.52 / 0.53) under "
-                          "radial load: ISO/TS 16281 L10r over the catalogue L10 = (C/F_r)^3 "
-                          "against the diametral operating clearance (negative: preload).  The "
-                          "optimum lies at a slight preload, a few micrometres for these "
-                          "loads; heavy preload and large clearance both shorten the life.",
-                  panels=({"kind": "lines", "title": "L10r / L10",
-                           "xlabel": "operating clearance [um]", "ylabel": "L10r / L10 [-]",
-                           "series": series},))
+    return _ratio_figure("life-clearance", "Reference rating life against operating clearance",
+                         "operating clearance [um]", series,
+                         "6305 (Z = 7, D = 11.5 mm, D_pw = 43.5 mm, f = 0.52 / 0.53) under "
+                         "radial load: ISO/TS 16281 L10r over the catalogue L10 = (C/F_r)^3 "
+                         "against the diametral operating clearance (negative: preload).  The "
+                         "optimum lies at a slight preload, a few micrometres for these "
+                         "loads; heavy preload and large clearance both shorten the life.")
 
 
 def misalignment_figure(load: float = 2000.0) -> Figure:
     """ISO/TS 16281 L10r / L10 of a 6305 against inner-ring tilt."""
-    try:
-        from ballrace.analytic import life, loaddist, ratings
-    except ImportError as exc:  # pragma: no cover
-        return _missing("life-misalignment", "Reference life against misalignment", exc)
     series = []
     arcmin = np.linspace(0.0, 30.0, 31)
     for pd in (0.0, 10e-6, 20e-6):
@@ -109,25 +92,18 @@ def misalignment_figure(load: float = 2000.0) -> Figure:
             L.append(life.reference_rating_life(brg, res, nominal_contact_angle=0.0).L10r)
         series.append({"x": arcmin, "y": np.array(L) / (C / load) ** 3,
                        "label": f"clearance {pd * 1e6:g} um"})
-    return Figure("life-misalignment", "life", "Reference rating life against misalignment",
-                  caption=f"6305 under F_r = {load:g} N with the inner ring tilted about the "
-                          "axis across the load.  The balls first ride up the groove (their "
-                          "deflection changes only to second order in the tilt) and L10r stays "
-                          "flat; past a knee, 15 arcmin at zero clearance and later with "
-                          "clearance, the opposite side of the ball set is squeezed and L10r "
-                          "falls steeply.",
-                  panels=({"kind": "lines", "title": "L10r / L10",
-                           "xlabel": "misalignment [arcmin]", "ylabel": "L10r / L10 [-]",
-                           "series": series},))
+    return _ratio_figure("life-misalignment", "Reference rating life against misalignment",
+                         "misalignment [arcmin]", series,
+                         f"6305 under F_r = {load:g} N with the inner ring tilted about the "
+                         "axis across the load.  The balls first ride up the groove (their "
+                         "deflection changes only to second order in the tilt) and L10r stays "
+                         "flat; past a knee, 15 arcmin at zero clearance and later with "
+                         "clearance, the opposite side of the ball set is squeezed and L10r "
+                         "falls steeply.")
 
 
 def ratio_figure(load: float = 2000.0) -> Figure:
     """L10r / L10 at zero clearance against Z, ball on / between the load line."""
-    try:
-        import ballrace
-        from ballrace.analytic import life, ratings
-    except ImportError as exc:  # pragma: no cover
-        return _missing("life-ratio", "L10r / L10 at zero clearance", exc)
     Zs = np.arange(6, 15)
     on, off = [], []
     for Z in Zs:
@@ -138,17 +114,23 @@ def ratio_figure(load: float = 2000.0) -> Figure:
             r = life.reference_rating_life(brg, brg.radial(load, azimuth_offset=off_),
                                            nominal_contact_angle=0.0)
             store.append(r.L10r / (C / load) ** 3)
-    return Figure("life-ratio", "life", "L10r / L10 for a pure radial load at zero clearance",
-                  caption="ISO/TS 16281 ties its raceway capacities to the catalogue C, so for "
-                          "the zero-clearance (Stribeck) distribution L10r equals (C/F_r)^3 up "
-                          "to the discreteness of the ball set: above 1 with a ball on the "
-                          "load line, below with the load between two balls; the mean tends to "
-                          "1 as Z grows.",
-                  panels=({"kind": "lines", "title": "L10r / L10", "xlabel": "balls Z",
-                           "ylabel": "L10r / L10 [-]",
-                           "series": [{"x": Zs, "y": np.array(on), "label": "ball on load line"},
-                                      {"x": Zs, "y": np.array(off),
-                                       "label": "load between two balls"}]},))
+    series = [{"x": Zs, "y": np.array(on), "label": "ball on load line"},
+              {"x": Zs, "y": np.array(off), "label": "load between two balls"}]
+    return _ratio_figure("life-ratio", "L10r / L10 for a pure radial load at zero clearance",
+                         "balls Z", series,
+                         "ISO/TS 16281 ties its raceway capacities to the catalogue C, so for "
+                         "the zero-clearance (Stribeck) distribution L10r equals (C/F_r)^3 up "
+                         "to the discreteness of the ball set: above 1 with a ball on the "
+                         "load line, below with the load between two balls; the mean tends to "
+                         "1 as Z grows.")
+
+
+def _ratio_figure(fid: str, title: str, xlabel: str, series: list, caption: str) -> Figure:
+    """A figure of curves of L10r / L10 (the ISO/TS 16281 reference life over the
+    catalogue life)."""
+    return Figure(fid, "life", title, caption=caption,
+                  panels=({"kind": "lines", "title": "L10r / L10", "xlabel": xlabel,
+                           "ylabel": "L10r / L10 [-]", "series": series},))
 
 
 def life_figures(run=None) -> list[Figure]:

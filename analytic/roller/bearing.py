@@ -54,13 +54,13 @@ from __future__ import annotations
 
 import functools
 import math
-import numbers
 from dataclasses import dataclass
 
 import numpy as np
 
 from .. import plausible
-from .._checks import as_array, check_choice, check_positive, check_range
+from .._checks import (as_array, check_choice, check_range, scalar_count, scalar_positive,
+                       store_checked)
 from ..materials import BEARING_STEEL, Material, effective_modulus
 from . import lamina
 from .profile import ProfileContext, as_profile
@@ -78,22 +78,6 @@ STATIC_PRESSURE = 4000e6
 LARGEST_ROLLER = 0.3
 
 
-def _positive(value, name: str, unit: str = "m") -> float:
-    arr = check_positive(value, name, unit, bounded=True)
-    if arr.ndim:
-        raise TypeError(f"{name} must be a scalar [{unit}]; got an array of shape {arr.shape}")
-    return float(arr)
-
-
-def _integer(value, name: str, low: int) -> int:
-    if isinstance(value, bool) or not isinstance(value, numbers.Real):
-        raise TypeError(f"{name} must be an integer; got {type(value).__name__} {value!r}")
-    if not (math.isfinite(float(value)) and float(value).is_integer()):
-        raise ValueError(f"{name} must be a whole number >= {low}; got {value!r}")
-    value = int(value)
-    if value < low:
-        raise ValueError(f"{name} must be an integer >= {low}; got {value}")
-    return value
 
 
 def _half_angle(k: float, alpha_o: float) -> float:
@@ -201,16 +185,16 @@ class RollerBearing:
 
     def __post_init__(self) -> None:
         set_ = object.__setattr__
-        D = _positive(self.roller_diameter, "roller_diameter")
-        L = _positive(self.roller_length, "roller_length")
-        dm = _positive(self.pitch_diameter, "pitch_diameter")
+        D = scalar_positive(self.roller_diameter, "roller_diameter", "m")
+        L = scalar_positive(self.roller_length, "roller_length", "m")
+        dm = scalar_positive(self.pitch_diameter, "pitch_diameter", "m")
         plausible.length(D, "roller_diameter", LARGEST_ROLLER, "roller", stacklevel=4)
         plausible.length(L, "roller_length", LARGEST_ROLLER, "roller", stacklevel=4)
         plausible.length(dm, "pitch_diameter", 10.0, "rolling bearing", stacklevel=4)
         if not D < dm:
             raise ValueError(f"roller_diameter must be in (0, pitch_diameter) = (0, {dm:g}) "
                              f"[m]; got {D:g}")
-        Z = _integer(self.n_rollers, "n_rollers", 3)
+        Z = scalar_count(self.n_rollers, "n_rollers", 3)
         z_max = int(np.floor(np.pi / np.arcsin(D / dm) * (1 + 1e-12)))
         if Z > z_max:
             raise ValueError(f"n_rollers must be in [3, {z_max}] for D_we = {D:g} m on a pitch "
@@ -255,15 +239,9 @@ class RollerBearing:
             rib = float(check_range(rib, "rib_angle", 0.0, 0.5 * np.pi, unit="rad"))
             set_(self, "rib_angle", rib)
         prof = as_profile(self.profile)
-        set_(self, "roller_diameter", D)
-        set_(self, "roller_length", L)
-        set_(self, "pitch_diameter", dm)
-        set_(self, "n_rollers", Z)
-        set_(self, "contact_angle", a)
-        set_(self, "diametral_clearance", pd)
-        set_(self, "n_slices", n_s)
-        set_(self, "profile", prof)
-        set_(self, "n_rows", _integer(self.n_rows, "n_rows", 1))
+        store_checked(self, roller_diameter=D, roller_length=L, pitch_diameter=dm, n_rollers=Z,
+                      contact_angle=a, diametral_clearance=pd, n_slices=n_s, profile=prof,
+                      n_rows=scalar_count(self.n_rows, "n_rows", 1))
         drops = prof.drop(self.slice_positions, self.profile_context)   # checks the fit
         if not np.all(np.isfinite(drops)):
             raise ValueError("the profile's drop is not finite at every slice centre")

@@ -88,7 +88,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .._checks import check_choice, check_integer, check_nonnegative, check_positive, check_range
-from ..iso281 import reliability_factor
+from ..iso16281 import ReferenceLifeMethods
 from .ratings import LAMBDA_NU, life_modification_factor
 
 __all__ = [
@@ -230,9 +230,10 @@ def equivalent_lamina_loads(slice_loads, rotating: bool):
 
 
 @dataclass(frozen=True)
-class ReferenceRatingLife:
+class ReferenceRatingLife(ReferenceLifeMethods):
     """ISO/TS 16281 reference rating life of a roller bearing (frozen; arrays over leading
-    load-case axes, floats for one load case).
+    load-case axes, floats for one load case).  ``hours``, ``a_iso`` (with the roller a_ISO)
+    and ``modified``: :class:`ballrace.analytic.iso16281.ReferenceLifeMethods`.
 
     Attributes
     ----------
@@ -281,50 +282,10 @@ class ReferenceRatingLife:
         """Equivalent roller load of the outer raceway, Q_ce L_outer^(-1/4) [N]."""
         return _s(self.Q_ce * np.asarray(self.L_outer, float) ** -0.25)
 
-    def hours(self, speed_rpm):
-        """L10r in hours at ``speed_rpm`` [rev/min] [h]."""
-        n = check_positive(speed_rpm, "speed_rpm", "rev/min")
-        return _s(self.L10r * 1e6 / (60.0 * n))
-
-    def a_iso(self, *, kappa, contamination, fatigue_limit, ep_additives=False):
-        """a_ISO(κ, e_C C_u / P_ref) of a radial roller bearing [-]
-        (:func:`ballrace.analytic.roller.ratings.life_modification_factor`).
-
-        Parameters
-        ----------
-        kappa : float
-            Viscosity ratio [-], >= 0.1.
-        contamination : float
-            e_C [-], in [0, 1].
-        fatigue_limit : float
-            C_u [N].
-        ep_additives : bool
-            Lubricant with effective EP additives.
-        """
-        return _s(life_modification_factor(kappa, contamination, fatigue_limit, self.P_ref,
-                                           ep_additives=ep_additives))
-
-    def modified(self, *, kappa, contamination, fatigue_limit, reliability=0.9,
-                 ep_additives=False):
-        """Modified reference rating life L_nmr = a1 a_ISO L10r [1e6 rev].
-
-        Parameters
-        ----------
-        kappa : float
-            Viscosity ratio [-], >= 0.1.
-        contamination : float
-            e_C [-], in [0, 1].
-        fatigue_limit : float
-            C_u [N].
-        reliability : float
-            0.90 … 0.9995 [-].
-        ep_additives : bool
-            Lubricant with effective EP additives.
-        """
-        a1 = reliability_factor(reliability)
-        return _s(a1 * self.a_iso(kappa=kappa, contamination=contamination,
-                                   fatigue_limit=fatigue_limit,
-                                   ep_additives=ep_additives) * self.L10r)
+    def life_modification_factor(self):
+        """a_ISO function of radial roller bearings
+        (:func:`ballrace.analytic.roller.ratings.life_modification_factor`)."""
+        return life_modification_factor
 
 
 def lamina_reference_life(slice_loads, C, roller_diameter, pitch_diameter, contact_angle=0.0,

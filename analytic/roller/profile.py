@@ -289,7 +289,22 @@ def _design_load(own, ctx, profile, *more):
 
 
 @dataclass(frozen=True, repr=False)
-class Lundberg(Profile):
+class _DesignLoadProfile(Profile):
+    """A logarithmic profile for a design load Q_d [N] (its own, else the context's)."""
+
+    design_load: float | None = None
+
+    def __post_init__(self) -> None:
+        if self.design_load is not None:
+            object.__setattr__(self, "design_load", float(check_positive(
+                self.design_load, "design_load", "N", bounded=True)))
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}(design_load={self.design_load!r})"
+
+
+@dataclass(frozen=True, repr=False)
+class Lundberg(_DesignLoadProfile):
     r"""Lundberg's logarithmic profile (1939) for a design load Q_d.
 
     .. math:: P(x) = \frac{2 Q_d}{\pi L E'} \ln\frac{1}{1 - (2x/L)^2}
@@ -305,24 +320,15 @@ class Lundberg(Profile):
         the load of the same call).
     """
 
-    design_load: float | None = None
     name = "lundberg"
-
-    def __post_init__(self) -> None:
-        if self.design_load is not None:
-            object.__setattr__(self, "design_load", float(check_positive(
-                self.design_load, "design_load", "N", bounded=True)))
 
     def _drop(self, ax, u, x, ctx):
         Q = _design_load(self.design_load, ctx, self.name, "E_prime")
         return 2.0 * Q / (math.pi * ctx.length * ctx.E_prime) * _log_crown(u)
 
-    def __repr__(self) -> str:
-        return f"Lundberg(design_load={self.design_load!r})"
-
 
 @dataclass(frozen=True, repr=False)
-class JohnsGohar(Profile):
+class JohnsGohar(_DesignLoadProfile):
     r"""The Johns–Gohar logarithmic profile (1981) for a design load Q_d.
 
     .. math:: P(x) = \frac{2 Q_d}{\pi L E'}
@@ -337,13 +343,7 @@ class JohnsGohar(Profile):
         Q_d [N]; default the context's load.
     """
 
-    design_load: float | None = None
     name = "johns-gohar"
-
-    def __post_init__(self) -> None:
-        if self.design_load is not None:
-            object.__setattr__(self, "design_load", float(check_positive(
-                self.design_load, "design_load", "N", bounded=True)))
 
     def _drop(self, ax, u, x, ctx):
         Q = _design_load(self.design_load, ctx, self.name, "E_prime", "R")
@@ -351,9 +351,6 @@ class JohnsGohar(Profile):
         b = math.sqrt(8.0 * Q * ctx.R / (math.pi * L * ctx.E_prime))
         k = max(1.0 - (2.0 * b / L) ** 2, 0.0)
         return 2.0 * Q / (math.pi * L * ctx.E_prime) * -np.log1p(-k * u * u)
-
-    def __repr__(self) -> str:
-        return f"JohnsGohar(design_load={self.design_load!r})"
 
 
 class Table(Profile):

@@ -90,7 +90,8 @@ import numpy as np
 
 from .._checks import (as_array, broadcast, check_integer, check_nonnegative,
                        check_positive, check_range)
-from ..iso281 import A_ISO_MAX, KAPPA_MAX, KAPPA_MIN, reliability_factor
+from ..iso281 import A_ISO_MAX, a_iso_equation, reliability_factor
+from ..life import l10
 from ..materials import Material
 from ..ratings import ISO76_STEEL
 
@@ -128,7 +129,7 @@ LIFE_EXPONENT = 10.0 / 3.0
 
 # a_ISO of radial roller bearings, ISO 281:2007 §9.3.3:
 # a_ISO = 0.1 [1 - (1.5859 - x2 / kappa^e) (e_C C_u / P)^0.4]^-9.185
-_AISO_X1 = 1.5859
+_AISO_ROLLER = dict(x1=1.5859, x2=(1.3993, 1.2348), exponents=(1.0, 0.4, 9.185))
 
 
 def _s(x):
@@ -635,12 +636,13 @@ def static_equivalent_load(radial_load, axial_load=0.0, contact_angle=0.0, n_row
 def rating_life(C, P):
     r"""Basic rating life L10 = (C/P)^(10/3) of a roller bearing [1e6 rev].
 
+    :func:`ballrace.analytic.life.l10` with the roller-bearing exponent
+    :data:`LIFE_EXPONENT`.
+
     Parameters
     ----------
-    C : float or array_like
-        Basic dynamic load rating [N], > 0.
-    P : float or array_like
-        Dynamic equivalent load [N], > 0.
+    C, P : float or array_like
+        Basic dynamic load rating and dynamic equivalent load [N], > 0.
 
     Returns
     -------
@@ -656,10 +658,7 @@ def rating_life(C, P):
     >>> round(float(rating_life(32500.0, 15138.2)), 3)
     12.765
     """
-    C = check_positive(C, "C", "N", bounded=True)
-    P = check_positive(P, "P", "N", bounded=True)
-    C, P = broadcast(C=C, P=P)
-    return _s((C / P) ** LIFE_EXPONENT)
+    return l10(C, P, LIFE_EXPONENT)
 
 
 def fatigue_load_limit(static_rating, pitch_diameter):
@@ -746,28 +745,8 @@ def life_modification_factor(kappa, contamination, fatigue_limit, load, *,
     >>> round(float(life_modification_factor(0.56941, 0.36808, 3400.0, 15138.2)), 5)
     0.21049
     """
-    k = check_positive(kappa, "kappa", "-")
-    if np.any(k < KAPPA_MIN):
-        raise ValueError(f"kappa must be >= {KAPPA_MIN} [-]: ISO 281:2007 gives no a_ISO below "
-                         f"kappa = 0.1 and ballrace does not extrapolate; got "
-                         f"{float(np.min(k))!r}")
-    eC = check_range(contamination, "contamination", 0.0, 1.0, low_inclusive=True,
-                     high_inclusive=True, unit="-")
-    Cu = check_positive(fatigue_limit, "fatigue_limit", "N", bounded=True)
-    P = check_positive(load, "load", "N", bounded=True)
-    cap = float(check_positive(cap, "cap", "-"))
-    k, eC, Cu, P = broadcast(kappa=k, contamination=eC, fatigue_limit=Cu, load=P)
-    k = np.minimum(k, KAPPA_MAX)
-    ep = np.zeros(k.shape, dtype=bool)
-    if ep_additives:
-        ep = (k < 1.0) & (eC >= 0.2)
-        k = np.where(ep, 1.0, k)
-    x2 = np.where(k < 0.4, 1.3993, 1.2348)
-    e = np.where(k < 0.4, 0.054381, np.where(k < 1.0, 0.19087, 0.071739))
-    bracket = 1.0 - (_AISO_X1 - x2 / k ** e) * (eC * Cu / P) ** 0.4
-    with np.errstate(divide="ignore", invalid="ignore"):
-        a = np.where(bracket > 0.0, 0.1 * np.abs(bracket) ** -9.185, np.inf)
-    return _s(np.minimum(a, np.where(ep, min(cap, 3.0), cap)))
+    return a_iso_equation(kappa, contamination, fatigue_limit, load, **_AISO_ROLLER, cap=cap,
+                          ep_additives=ep_additives)
 
 
 def modified_rating_life(C, P, *, kappa, contamination, fatigue_limit, reliability=0.9,
