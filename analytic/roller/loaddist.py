@@ -207,14 +207,15 @@ def _step(case: _Case, v, st, err, scale):
     if err < POLICY.quadratic_region:                 # quadratic convergence: full steps
         return v + dv, new
     slope = float(R @ dv)
+    if newton.armijo_ok(new[6], phi0, 1.0, slope):    # Armijo on the potential: full step
+        return v + dv, new
 
-    def armijo(t):                                    # Armijo on the potential
+    def armijo(t):                                    # backtracking from t = 1/2
         nonlocal new
-        if t != 1.0:
-            new = case.state(v + t * dv)
+        new = case.state(v + t * dv)
         return newton.armijo_ok(new[6], phi0, t, slope)
 
-    t, _ = newton.backtrack_one(armijo, POLICY.potential_halvings)
+    t, _ = newton.backtrack_one(armijo, POLICY.potential_halvings - 1, 0.5)
     return v + t * dv, new
 
 
