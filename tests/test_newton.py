@@ -212,9 +212,10 @@ def test_solvers_define_no_step_control_of_their_own(module, imports):
 
 
 def test_roller_load_distribution_takes_its_trust_radius_from_the_policy(monkeypatch):
-    """A trust radius of 1e-4 D_we instead of POLICY.roller_step = 0.01 D_we needs more
-    steps across the 45 um clearance (the first step closes the gap; from there the ring
-    moves some 10 um, 7.7 radii of 1.3 um) and reaches the same equilibrium."""
+    """A trust radius of 1e-4 D_we (1.3 um) instead of POLICY.roller_step = 0.01 D_we
+    (130 um) needs more steps to the equilibrium (a radial deflection of 41.8 um at 45 um
+    clearance; the first step, which closes the gap, is not limited by it) and reaches the
+    same equilibrium: the driver reads its trust radius from the policy."""
     r0 = NU.solve(Fy=6940.0)
     monkeypatch.setattr(RL, "POLICY", dataclasses.replace(POLICY, roller_step=1e-4))
     r1 = NU.solve(Fy=6940.0)
