@@ -4,8 +4,10 @@ Every equilibrium solver of the package is a damped Newton iteration: the load
 distribution of one bearing (:mod:`~ballrace.analytic.loaddist`, vectorised over load
 cases, on one case, and in the optional compiled kernel ``analytic/_ldkernel.c``), the
 shaft system (:mod:`~ballrace.analytic.shaft`), the quasi-static high-speed bearing
-(:mod:`~ballrace.analytic.highspeed`) and the duplex pair
-(:mod:`~ballrace.analytic.duplex`).  They share one policy: a trust radius on the step, a
+(:mod:`~ballrace.analytic.highspeed`), the duplex pair (:mod:`~ballrace.analytic.duplex`),
+the lamina load distribution of a roller bearing
+(:mod:`~ballrace.analytic.roller.loaddist`) and the finite line contact of a roller
+(:mod:`~ballrace.analytic.roller.contact`, Newton on an active set of slices).  They share one policy: a trust radius on the step, a
 Levenberg shift for unloaded directions, a backtracking line search with the Armijo
 constant, a round-off floor below which the residual is not resolved, the best iterate
 kept for when the iteration limit is reached, and one shape of the
@@ -105,6 +107,15 @@ class NewtonPolicy:
         the largest deflection [-] (0.05).
     duplex_step_growth : float
         See ``duplex_step`` [-] (0.5: the limit grows with the deflection).
+    roller_step : float
+        Trust radius of a roller bearing's Newton step as a fraction of the roller diameter
+        D_we [-] (0.01), applied to the largest scaled component (translations [m], tilts
+        times d_m/2).  The lamina model holds up to a slice approach of 0.02 D_we (about
+        three times the approach at the static capacity, ~0.007 D_we), so a step may cross
+        half that range: the whole load range of a bearing in a few steps, while the
+        approach's 10/9 power is still well described by the tangent it is taken from.  The
+        roller's Levenberg shift is ``levenberg_trace`` / ``levenberg_geometric`` with the
+        roller diameter D_we for the length (F / D_we the geometric stiffness).
     """
 
     trust_fraction: float = 0.25
@@ -126,6 +137,7 @@ class NewtonPolicy:
     highspeed_step: float = 0.05
     duplex_step: float = 0.05
     duplex_step_growth: float = 0.5
+    roller_step: float = 0.01
 
     @property
     def roundoff_eps(self) -> float:

@@ -1,6 +1,7 @@
 """The Newton policy (ballrace.analytic.newton): its pieces on small problems with known
 answers, the shape of the ConvergenceError every solver raises, and that the solvers take
 their step control from it (no copies of its constants elsewhere)."""
+import dataclasses
 import pathlib
 import re
 
@@ -11,12 +12,16 @@ import ballrace
 from ballrace.analytic import duplex, highspeed, loaddist, newton
 from ballrace.analytic import shaft as S
 from ballrace.analytic.newton import POLICY
+from ballrace.analytic.roller import RollerBearing, contact as RC, loaddist as RL
 from ballrace.errors import ConvergenceError
 
 ANALYTIC = pathlib.Path(loaddist.__file__).parent
 EPS = np.finfo(float).eps
 AC = ballrace.BallBearing(20.638e-3, 13, 87.5e-3, 0.52, 0.52, free_contact_angle=np.radians(40))
 DG = ballrace.BallBearing(7.938e-3, 9, 38.5e-3, 0.52, 0.53, diametral_clearance=10e-6)
+#: The cylindrical roller bearing of the public example (45 um clearance).
+NU = RollerBearing(13e-3, 11.8e-3, 14, 70.65e-3, diametral_clearance=45e-6)
+ST = ballrace.BEARING_STEEL
 
 
 def _damped_newton(f, jac, x, radius, rtol=1e-14, max_iter=50):
@@ -161,6 +166,20 @@ def test_every_solver_raises_the_same_shape():
         highspeed.solve(AC, Fa=1000.0, Fr=500.0, rtol=1e-300)
     assert re.match(SHAPE.format(r"high-speed equilibrium \(zero speed\)", "Newton ", "",
                                  "scaled residual"), str(e.value))
+    with pytest.raises(ConvergenceError) as e:
+        NU.solve(Fy=6940.0, max_iter=1)
+    assert re.match(SHAPE.format("roller load distribution", "", "",
+                                 "relative equilibrium residual"), str(e.value))
+
+
+def test_line_contact_raises_the_same_shape(monkeypatch):
+    """The finite line contact's Newton (iterations a module constant) after one step."""
+    monkeypatch.setattr(RC, "MAX_ITERATIONS", 1)
+    with pytest.raises(ConvergenceError) as e:
+        RC.line_contact(5000.0, 0.006, 0.03, 0.012, ST, ST, profile="iso", tilt=5e-4)
+    assert re.match(SHAPE.format("finite line contact", "Newton ", "",
+                                 "contact residual relative to the approach"), str(e.value))
+    assert "at Q = 5000 N on 41 slices" in str(e.value)
 
 
 #: What the solvers had as their own copies of the policy (names and formulas).
@@ -169,12 +188,72 @@ OLD = [r"\b_FLOOR_CAP\b", r"\b_EPS20\b", r"def _floor\b", r"0\.25 \* (model\.A|p
        r"1e-12 \* (tr|abs)", r"0\.05 \* (sysm\.m\.D|A \+)", r"err\[a\] < 1e-6|err < 1e-6"]
 
 
-@pytest.mark.parametrize("module", ["loaddist", "shaft", "highspeed", "duplex"])
-def test_solvers_define_no_step_control_of_their_own(module):
+#: What the roller solvers had as their own copies (the lamina load distribution's trust
+#: radius, Levenberg floor, Armijo constant and halvings, quadratic region, stall ratio,
+#: round-off cap and message; the line contact's penetration cap, returned-residual limit
+#: and message).
+OLD_ROLLER = [r"max\([^)]*100\.?0? \* rtol", r"1e-6 \* scale", r"0\.01\) \* case",
+              r"0\.01 \* (case\.)?model\.D", r"1e-4 \* float", r"err >= 1e-6",
+              r"\bt \*= 0\.5", r"0\.5 \* prev", r"PENETRATION = 1e-9", r"10 \* TOLERANCE",
+              r"ConvergenceError\(\s*f?\"(roller load distribution|the finite line contact) "
+              r"did not converge"]
+
+
+@pytest.mark.parametrize("module, imports", [
+    ("loaddist", "from .newton import POLICY"), ("shaft", "from .newton import POLICY"),
+    ("highspeed", "from .newton import POLICY"), ("duplex", "from .newton import POLICY"),
+    ("roller/loaddist", "from ..newton import POLICY"),
+    ("roller/contact", "from .. import newton")])
+def test_solvers_define_no_step_control_of_their_own(module, imports):
     src = (ANALYTIC / f"{module}.py").read_text()
-    for pat in OLD:
+    for pat in OLD + (OLD_ROLLER if module.startswith("roller/") else []):
         assert not re.search(pat, src), f"{module}.py: {pat}"
-    assert "from .newton import POLICY" in src
+    assert imports in src
+
+
+def test_roller_load_distribution_takes_its_trust_radius_from_the_policy(monkeypatch):
+    """A trust radius of 1e-4 D_we (1.3 um) instead of POLICY.roller_step = 0.01 D_we
+    (130 um) needs more steps to the equilibrium (a radial deflection of 41.8 um at 45 um
+    clearance; the first step, which closes the gap, is not limited by it) and reaches the
+    same equilibrium: the driver reads its trust radius from the policy."""
+    r0 = NU.solve(Fy=6940.0)
+    monkeypatch.setattr(RL, "POLICY", dataclasses.replace(POLICY, roller_step=1e-4))
+    r1 = NU.solve(Fy=6940.0)
+    assert r1.iterations > r0.iterations
+    assert r1.displacements == pytest.approx(r0.displacements, rel=1e-9, abs=1e-15)
+
+
+def test_roller_solvers_accept_the_best_iterate_at_round_off():
+    """rtol = 1e-300 cannot be reached: the lamina load distribution stops at the policy's
+    round-off floor, and, limited to the 5 iterations the default rtol needs, accepts its
+    best iterate (within the round-off cap 1e-9) at the limit; both agree with the default
+    solve to 1e-9."""
+    r0 = NU.solve(Fy=6940.0)
+    assert r0.iterations == 5
+    floor = NU.solve(Fy=6940.0, rtol=1e-300)
+    limit = NU.solve(Fy=6940.0, rtol=1e-300, max_iter=5)
+    assert limit.iterations == 5 and floor.iterations < 100
+    for r in (floor, limit):
+        assert r.relative_residual <= newton.roundoff_cap(1e-300) == 1e-9
+        assert r.displacements == pytest.approx(r0.displacements, rel=1e-9, abs=1e-15)
+    with pytest.raises(ConvergenceError, match="best"):
+        NU.solve(Fy=6940.0, rtol=1e-300, max_iter=4)
+
+
+def test_line_contact_accepts_the_best_iterate_at_round_off(monkeypatch):
+    """With a tolerance of 1e-300 (unreachable) the line contact's Newton runs to its
+    iteration limit and returns its best iterate (residual within PENETRATION, the
+    policy's round-off cap at TOLERANCE): the default solution to 1e-12, its load to
+    rounding."""
+    assert RC.PENETRATION == newton.roundoff_cap(RC.TOLERANCE) == 1e-9
+    args = (5000.0, 0.006, 0.03, 0.012, ST, ST)
+    c0 = RC.line_contact(*args, profile="iso", tilt=5e-4)
+    monkeypatch.setattr(RC, "TOLERANCE", 1e-300)
+    monkeypatch.setattr(RC, "MAX_ITERATIONS", 8)
+    c = RC.line_contact(*args, profile="iso", tilt=5e-4)
+    assert c.iterations == 8 and c0.iterations < 8
+    assert c.pressure == pytest.approx(c0.pressure, rel=1e-12, abs=1e-12 * c0.max_pressure)
+    assert c.slice_loads.sum() == pytest.approx(5000.0, rel=1e-14)
 
 
 def test_compiled_kernel_constants_are_the_policys():

@@ -64,7 +64,10 @@ The nonlinear system (``b_k`` depends on ``q_k``) is solved by Newton's method w
 exact Jacobian on an active set (slices out of contact carry zero load, none carries a
 negative one) to ``1e-12`` of the approach, started from the linear problem with every
 half-width frozen at the 2-D Hertz value of the mean load (an active-set solution of the
-linear complementarity problem); the load balance holds to rounding.
+linear complementarity problem); the load balance holds to rounding.  The active-set rule
+for the non-negative loads is this solver's own; its round-off cap, best iterate at the
+iteration limit and ConvergenceError are the package's Newton policy
+(:mod:`~ballrace.analytic.newton`).
 
 Why strips and not a 2-D grid: the quasi-2-D strip method (Reusner 1977; Teutsch & Sauer
 2004) has one unknown per slice, so 41 slices solve in about 3 ms of CPU time (four
@@ -165,7 +168,7 @@ import numpy as np
 from scipy import special
 
 from ... import errors
-from .. import plausible
+from .. import newton, plausible
 from .._checks import as_array, check_instance, check_nonnegative, check_positive
 from ..materials import Material, effective_modulus
 from .profile import JohnsGohar, Lundberg, Profile, ProfileContext, as_profile
@@ -183,10 +186,28 @@ MAX_SLICES = 1001
 FEW_SLICES = 5
 #: Newton's tolerance on the contact condition, relative to the approach [-].
 TOLERANCE = 1e-12
-#: Penetration let be at a slice at the brink of contact, relative to the approach [-].
-PENETRATION = 1e-9
+#: Penetration let be at a slice at the brink of contact, relative to the approach, and the
+#: largest contact residual returned: the Newton policy's round-off cap at TOLERANCE,
+#: max(1e-9, 100 TOLERANCE) [-] (:func:`ballrace.analytic.newton.roundoff_cap`).
+PENETRATION = newton.roundoff_cap(TOLERANCE)
 #: Newton iterations before ConvergenceError.
 MAX_ITERATIONS = 200
+
+# The active-set rule of the slice loads (q >= 0), this solver's own (the Newton policy has
+# no constraints): a step that takes a slice's load below zero drops the slice from the
+# contact, except a slice that came back into contact and still carries more than
+# _SOFT_LOAD of the mean load per length, whose step is cut to go at most _TO_ZERO of the
+# way to zero (a fraction-to-the-boundary rule: Newton's step on its q ln q term
+# undershoots a small load); a slice that joins the contact starts at _JOIN_LOAD of the
+# mean load per length; after _SETTLE changes of the active set, a slice at the brink of
+# contact may penetrate by PENETRATION (it can go in and out on its load's log term).  The
+# edge-load iteration, on a fixed active set, cuts a step to go at most _EDGE_TO_ZERO of
+# the way to zero.
+_SOFT_LOAD = 1e-9                   # [-] of Q / L
+_TO_ZERO = 0.9                      # [-]
+_JOIN_LOAD = 1e-3                   # [-] of Q / L
+_SETTLE = 10                        # active-set changes
+_EDGE_TO_ZERO = 0.5                 # [-]
 
 # tabulated G: cubic Hermite in z = ln s on [ln S_LO, ln S_HI]
 _S_LO, _S_HI = 1e-8, 1e5
@@ -469,7 +490,14 @@ def _linear_start(strips, h, Q):
 
 
 def _solve_load(strips, h, Q):
-    """Slice loads per length q >= 0, the approach and the iterations for the load Q [N]."""
+    """Slice loads per length q >= 0, the approach and the iterations for the load Q [N].
+
+    Newton's method with the exact Jacobian on the active set (the rule for q >= 0 in the
+    module's constants), converged when the contact residual is below TOLERANCE of the
+    approach and no slice out of contact penetrates.  At MAX_ITERATIONS the best iterate
+    is taken if its residual is within the Newton policy's round-off cap and nothing
+    penetrates by more, else ConvergenceError (:func:`ballrace.analytic.newton.
+    convergence_error`)."""
     n, w = strips.n, strips.w
     L = n * w
     if Q == 0.0:
@@ -477,6 +505,7 @@ def _solve_load(strips, h, Q):
     q, delta = _linear_start(strips, h, Q)
     active = q > 0
     res = math.inf
+    best = (math.inf, None, None)
     changes = 0
     rejoined = np.zeros(n, bool)
     for it in range(1, MAX_ITERATIONS + 1):
@@ -496,50 +525,72 @@ def _solve_load(strips, h, Q):
         qa = q[cols]
         neg = qa + dq <= 0.0
         if np.any(neg) and m > 1:
-            # a slice that came back into contact may need a small load, which Newton's
-            # step on its q ln q term undershoots: it is stepped towards zero (a tenth of
-            # its load kept); any other slice the step takes below zero leaves the contact
-            soft = neg & rejoined[cols] & (qa > 1e-9 * Q / L)
+            # the active-set rule (module constants): a rejoined slice is stepped towards
+            # zero, any other slice the step takes below zero leaves the contact
+            soft = neg & rejoined[cols] & (qa > _SOFT_LOAD * Q / L)
             hard = neg & ~soft
             if hard.any():
                 q[cols[hard]] = 0.0
                 active[cols[hard]] = False
                 changes += 1
                 if not active.any():                   # keep the slice that carries most
-                    best = int(cols[np.argmax(qa)])
-                    active[best] = True
-                    q[best] = Q / w
+                    most = int(cols[np.argmax(qa)])
+                    active[most] = True
+                    q[most] = Q / w
                 continue
-            alpha = min(1.0, float(np.min(0.9 * qa[soft] / -dq[soft])))
+            alpha = min(1.0, float(np.min(_TO_ZERO * qa[soft] / -dq[soft])))
             q[cols] = qa + alpha * dq
             delta += alpha * dd
             continue
-        q[cols] = qa + dq
-        delta += dd
         scale = max(abs(delta), float(np.max(np.abs(u))), 1e-300)
         res = float(np.max(np.abs(r))) / scale
+        if res < best[0] and abs(rl) <= PENETRATION * Q:    # the iterate before the step
+            best = (res, q.copy(), delta)
+        q[cols] = qa + dq
+        delta += dd
         if res < TOLERANCE:
-            cols = np.flatnonzero(active)
-            u, _ = strips.displacement(q, cols)
-            gap = u - delta + h
-            scale = max(abs(delta), float(np.max(np.abs(u))), 1e-300)
-            # a slice at the brink of contact can go in and out (its load's log term): after
-            # some changes of the active set a penetration of 1e-9 of the approach is let be
-            tol = TOLERANCE if changes < 10 else PENETRATION
-            pen = (~active) & (gap < -tol * scale)
-            if np.any(pen):
-                # slices that penetrate join the contact
+            done = _settled(strips, h, Q, q, delta, active, rejoined,
+                            TOLERANCE if changes < _SETTLE else PENETRATION)
+            if done is None:                           # slices that penetrate joined
                 changes += 1
-                active |= pen
-                rejoined |= pen
-                q[pen] = 1e-3 * Q / L
                 continue
-            if float(np.max(np.abs(gap[cols]))) / scale < 10 * TOLERANCE:
-                q *= Q / (w * q.sum())                    # the load balance to rounding
+            if done:
                 return q, delta, it
-    raise errors.ConvergenceError(
-        f"the finite line contact did not converge: contact residual {res:.3g} of the "
-        f"approach after {MAX_ITERATIONS} iterations")
+    if best[0] <= PENETRATION:                          # round-off level: the best iterate
+        q, delta = best[1], best[2]
+        if _settled(strips, h, Q, q, delta, q > 0, np.zeros(n, bool), PENETRATION,
+                    join=False):
+            return q, delta, MAX_ITERATIONS
+    raise newton.convergence_error(
+        "finite line contact", MAX_ITERATIONS, res, TOLERANCE, best=best[0], newton=True,
+        measure="contact residual relative to the approach",
+        context=f"at Q = {Q:g} N on {n} slices ({int(np.count_nonzero(active))} in contact)")
+
+
+def _settled(strips, h, Q, q, delta, active, rejoined, tol, join=True):
+    """Whether the contact (q, delta) holds: no slice out of contact penetrates by more
+    than ``tol`` of the approach (with ``join``, those that do join the contact, with
+    _JOIN_LOAD of the mean load, and None is returned) and the contact residual of the
+    slices in contact is within PENETRATION; if it holds, q is scaled to carry Q (in
+    place: the load balance to rounding)."""
+    w = strips.w
+    L = strips.n * w
+    cols = np.flatnonzero(active)
+    u, _ = strips.displacement(q, cols)
+    gap = u - delta + h
+    scale = max(abs(delta), float(np.max(np.abs(u))), 1e-300)
+    pen = (~active) & (gap < -tol * scale)
+    if np.any(pen):
+        if not join:
+            return False
+        active |= pen
+        rejoined |= pen
+        q[pen] = _JOIN_LOAD * Q / L
+        return None
+    if float(np.max(np.abs(gap[cols]))) / scale <= PENETRATION:
+        q *= Q / (w * q.sum())
+        return True
+    return False
 
 
 def _edge_load(strips, h, q_start):
@@ -573,7 +624,7 @@ def _edge_load(strips, h, q_start):
             neg = qa + dq <= 0.0
             alpha = 1.0
             if np.any(neg):
-                alpha = min(1.0, float(np.min(0.5 * qa[neg] / -dq[neg])))
+                alpha = min(1.0, float(np.min(_EDGE_TO_ZERO * qa[neg] / -dq[neg])))
             q[cols] = qa + alpha * dq
             delta += alpha * dd
             scale = max(abs(delta), float(np.max(np.abs(u))), 1e-300)

@@ -45,10 +45,13 @@ What is not modelled: the locating flanges of cylindrical bearings (an axial loa
 refused; the axial DOF carries nothing and is held at 0 or its imposed value); roller
 skew; centrifugal and gyroscopic roller loads; ring deformation; more than one row.
 
-Solution: damped Newton on the free DOFs with the analytic tangent, a Levenberg floor for
-directions not yet loaded (clearance), a trust radius and an Armijo line search on the
-potential (:func:`_step`), vectorised over rollers and slices.  What is returned balances
-the applied loads to ``max(1e-9, 100 rtol)`` relative (checked before returning).
+Solution: damped Newton on the free DOFs with the analytic tangent, vectorised over
+rollers and slices, on the package's Newton policy (:mod:`~ballrace.analytic.newton`): its
+Levenberg shift for directions not yet loaded (clearance), its trust radius (a fraction
+``roller_step`` of D_we) and Armijo line search on the potential (:func:`_step`), its
+round-off floor, best iterate at the iteration limit and ConvergenceError.  What is
+returned balances the applied loads to ``newton.roundoff_cap(rtol) = max(1e-9, 100 rtol)``
+relative (checked before returning).
 """
 from __future__ import annotations
 
@@ -60,7 +63,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...errors import ConvergenceError
+from .. import newton
 from .._checks import as_array, check_integer, check_range
+from ..newton import POLICY
 from . import lamina
 from .bearing import RollerBearing
 from .profile import Profile
@@ -75,9 +80,6 @@ DOF = ("x", "y", "z", "theta_y", "theta_z")
 #: Load-deflection range of the model: a slice approach up to this fraction of D_we
 #: (about three times the approach at the static capacity, some 0.007 D_we).
 MAX_APPROACH_RATIO = 0.02
-
-#: Largest relative residual any result may have (with rtol above 1e-11: 100 rtol).
-_FLOOR_CAP = 1e-9
 
 _N = lamina.LINE_EXPONENT                     # 10/9
 
@@ -169,14 +171,17 @@ class _Case:
 def _step(case: _Case, v, st, err, scale):
     """One damped Newton step on the free DOFs (scaled): the new values and their state.
 
-    The step control in one place: the Newton direction of the tangent with a Levenberg
-    floor (1e-6 of the load scale over D_we, for directions not yet in contact), a trust
-    radius of 0.01 D_we and, away from the solution (relative residual above 1e-6), an
-    Armijo backtracking line search on the convex potential.  Before any slice is in
-    contact, the tangent is that of every slice at the approach a uniformly loaded roller
-    set would have, halved (about half the rollers carry a radial load), and the step is
-    lengthened by the distance to the first contact along it (a start of the right size
-    across a clearance).
+    The step control is the package's Newton policy (:mod:`~ballrace.analytic.newton`):
+    the Newton direction of the tangent with its Levenberg shift (the geometric term
+    ``levenberg_geometric`` times the load scale over D_we, for directions not yet in
+    contact), the trust radius ``roller_step`` D_we and, away from the solution (relative
+    residual above ``quadratic_region``), an Armijo backtracking line search on the convex
+    potential.  What is this model's own is the start across a clearance: before any slice
+    is in contact, the tangent is that of every slice at the approach a uniformly loaded
+    roller set would have, halved (about half the rollers carry a radial load), and the
+    step is lengthened by the distance to the first contact along it (a start of the right
+    size across a clearance), limited only by the model's domain, D_we (beyond it
+    :func:`_newton` gives up).
     """
     d, on, r, _, Ga, R, phi0 = st
     n = v.size
@@ -186,50 +191,59 @@ def _step(case: _Case, v, st, err, scale):
         Ga = case.Gf
         r = np.full(d.size, 0.5 * (Qm / (case.c * case.model.n_s)) ** 0.1)
     A = case.tangent(r, Ga)
-    mu = max(1e-12 * abs(float(np.trace(A))) / n, 1e-6 * scale / case.model.D)
-    A.flat[:: n + 1] += mu
+    A.flat[:: n + 1] += newton.levenberg_shift_one(float(np.trace(A)), n, scale,
+                                                   POLICY.levenberg_geometric / case.model.D)
     dv = -np.linalg.solve(A, R)
     if first:                                         # first close the gap along dv
         s = case.Gf @ dv
         pos = s > 0
         if pos.any():
             dv *= 1.0 + float(np.min(-d[pos] / s[pos]))
-    size = float(np.abs(dv).max())
-    lim = (1.0 if first else 0.01) * case.model.D
-    if size > lim:
-        dv *= lim / size
-    t = 1.0
+    f = newton.clip_factor(float(np.abs(dv).max()),
+                           case.model.D if first else POLICY.roller_step * case.model.D)
+    if f != 1.0:
+        dv *= f
     new = case.state(v + dv)
-    if err >= 1e-6:                                  # Armijo on the potential
-        g = 1e-4 * float(R @ dv)
-        for _ in range(60):
-            if new[6] <= phi0 + t * g:
-                break
-            t *= 0.5
-            new = case.state(v + t * dv)
+    if err < POLICY.quadratic_region:                 # quadratic convergence: full steps
+        return v + dv, new
+    slope = float(R @ dv)
+    if newton.armijo_ok(new[6], phi0, 1.0, slope):    # Armijo on the potential: full step
+        return v + dv, new
+
+    def armijo(t):                                    # backtracking from t = 1/2
+        nonlocal new
+        new = case.state(v + t * dv)
+        return newton.armijo_ok(new[6], phi0, t, slope)
+
+    t, _ = newton.backtrack_one(armijo, POLICY.potential_halvings - 1, 0.5)
     return v + t * dv, new
 
 
 def _newton(model, F_app, u0, free, rtol, max_iter):
     """Equilibrium of one load case: (u, iterations, (approaches, loaded slices, their
-    delta^(1/9), their loads))."""
+    delta^(1/9), their loads)).
+
+    Converged at ``rtol``, or at the policy's round-off floor when a step makes no
+    progress; at ``max_iter`` the best iterate is taken if it is within the policy's
+    round-off cap (:func:`~ballrace.analytic.newton.roundoff_cap`), else ConvergenceError.
+    """
     case = _Case(model, F_app, u0, free)
     sc = model.sc
     v = (u0 * sc)[case.idx]
     load_scale = float(np.abs(F_app / sc).max())
-    best = (math.inf, v.copy())
+    best = (math.inf, v.copy(), None)
     prev = math.inf
     n_s = model.n_s
-    cap = max(_FLOOR_CAP, 100 * rtol)
     st = case.state(v)
     for it in range(max_iter + 1):
-        on, q, R = st[1], st[3], st[5]
+        d, on, q, R = st[0], st[1], st[3], st[5]
         Qmax = float(np.bincount(on // n_s, weights=q, minlength=1).max()) if on.size else 0.0
         scale = max(load_scale, Qmax, 1e-300)
         err = float(np.abs(R).max(initial=0.0)) / scale
         if err < best[0]:
-            best = (err, v.copy())
-        if err <= rtol or (err <= cap and err > 0.5 * prev):
+            best = (err, v.copy(), st)
+        if err <= rtol or (newton.stalled(err, prev) and err <= newton.roundoff_floor(
+                rtol, float(d.max()), float(np.abs(v).max(initial=0.0)))):
             return _full(u0, case.idx, v, sc), it, st[:4]   # converged, or at round-off level
         if it == max_iter:
             break
@@ -241,18 +255,24 @@ def _newton(model, F_app, u0, free, rtol, max_iter):
                 "(displacements) or give the moment of the load's point of application)")
         prev = err
         v, st = _step(case, v, st, err, scale if Qmax > 0 else load_scale)
-    err, v = best
-    if float(np.abs(v).max(initial=0.0)) > 0.05 * model.D:
+    err_best, vb, stb = best
+    if err_best <= newton.roundoff_cap(rtol):          # round-off level: the best iterate
+        return _full(u0, case.idx, vb, sc), max_iter, stb[:4]
+    if float(np.abs(vb).max(initial=0.0)) > 0.05 * model.D:
         raise ValueError(
             f"the loads {F_app.tolist()} [N, N m] have no equilibrium within the bearing's "
             f"load-deflection range: after {max_iter} iterations the inner ring has moved "
-            f"{float(np.abs(v).max()):.3g} m (more than 0.05 D_we); a single tapered bearing "
+            f"{float(np.abs(vb).max()):.3g} m (more than 0.05 D_we); a single tapered bearing "
             "needs an axial load and carries little moment by itself: impose the tilt "
             "(displacements) or give the moment of the load's point of application")
-    raise ConvergenceError(
-        f"roller load distribution did not converge after {max_iter} iterations: relative "
-        f"equilibrium residual {err:.3e} (> rtol={rtol:g}); loads {F_app.tolist()}, "
-        f"displacements {_full(u0, case.idx, v, sc).tolist()}")
+    raise newton.convergence_error(
+        "roller load distribution", max_iter, err, rtol, best=err_best,
+        measure="relative equilibrium residual",
+        context=f"with loads {F_app.tolist()}, displacements "
+                f"{_full(u0, case.idx, v, sc).tolist()}",
+        roundoff=newton.roundoff_limit(float(np.abs(v).max(initial=0.0)),
+                                       float(st[0].max())),
+        roundoff_hint="the largest slice approach is tiny against the ring displacement")
 
 
 def _full(u0, idx, v, sc):
@@ -803,7 +823,7 @@ def _checked(bearing, model, u, J, q, d, F_app, imposed, shape, Pd, iters, rtol)
     res = np.abs(np.where(imposed, 0.0, Fchk - F_app) / sc).max(-1)
     scale = np.maximum(np.abs(F_app / sc).max(-1), Q.max(-1))
     rel = np.where(scale > 0, res / np.where(scale > 0, scale, 1.0), res)
-    tol = max(_FLOOR_CAP, 100.0 * rtol)
+    tol = newton.roundoff_cap(rtol)
     if not (np.isfinite(u).all() and np.isfinite(Fchk).all() and np.isfinite(J).all()
             and rel.max() <= tol):
         finite = np.isfinite(u).all(-1) & np.isfinite(Fchk).all(-1) & \
