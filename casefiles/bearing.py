@@ -855,26 +855,28 @@ def _roller_models():
     return RollerCaseSpec
 
 
-def _quantities(values, q, dim: str, where: str, example: str) -> list:
+def _quantities(values, q, dim: str, source: str, where: str, example: str) -> list:
     """A list of quantity strings (``["0 mm", "4 mm"]``) in SI; an error names the entry."""
     if not isinstance(values, list) or not values:
-        raise CaseFileError(f"{where} must be a list of quantities with units, e.g. "
+        raise CaseFileError(f"{source}: {where} must be a list of quantities with units, e.g. "
                             f"{example}; got {values!r}")
     out = []
     for k, v in enumerate(values):
         if isinstance(v, bool) or not isinstance(v, str):
-            raise CaseFileError(f"{where}[{k}]: give each value with its unit as a string, "
+            raise CaseFileError(f"{source}: {where}[{k}]: give each value with its unit as a string, "
                                 f"e.g. {example}; got {v!r}")
         out.append(q(v, dim, f"{where}[{k}]"))
     return out
 
 
-def read_profile(spec, q, source: str, where: str, length: float):
+def read_profile(spec, q, source: str, where: str, length: float, diameter: float):
     """The roller profile of a case file's ``profile`` value at ``where``
     (``"[bearing].profile"``) for a roller of effective length ``length`` [m]: a name, a
     circular crown ``{flat_length, crown_radius}`` or a table ``{x, drop}`` (each entry a
-    quantity string; x from the roller centre, mirrored).  ``CaseFileError`` naming the
-    key, with a valid example."""
+    quantity string; x from the roller centre, mirrored); ``diameter`` is the roller's
+    D_we [m].  ``CaseFileError`` naming the key, with a valid example; also for a crown
+    whose drop at the roller end exceeds 1 % of D_we and a table reaching beyond the roller
+    or dropping more than a tenth of its length (units slipped)."""
     from ballrace.analytic.roller import profile as rp
 
     table_example = '{ x = ["0 mm", "4 mm", "5.9 mm"], drop = ["0 um", "1 um", "6 um"] }'
@@ -892,13 +894,21 @@ def read_profile(spec, q, source: str, where: str, length: float):
         radius = q(spec["crown_radius"], "[length]", f"{where}.crown_radius")
         try:
             crown = rp.Crowned(flat, radius)
+            crown.check(rp.ProfileContext(length=length, diameter=diameter))
         except (ValueError, TypeError) as exc:
             raise CaseFileError(f"{source}: {where}: {exc}; e.g. profile = {crown_example}") \
                 from None
+        s = 0.5 * (length - flat)
+        end = s * s / (radius + math.sqrt((radius - s) * (radius + s)))
+        if end > 0.01 * diameter:         # a crown radius in mm typed where m was meant
+            raise CaseFileError(
+                f"{source}: {where}.crown_radius: the crown drops {end * 1e6:.4g} um at the "
+                f"roller end, more than 1 % of D_we = {diameter * 1e3:g} mm; crown radii are "
+                f"some metres (were millimetres typed?), e.g. profile = {crown_example}")
         return crown
     if keys == {"x", "drop"}:
-        x = _quantities(spec["x"], q, "[length]", f"{where}.x", '["0 mm", "4 mm", "5.9 mm"]')
-        d = _quantities(spec["drop"], q, "[length]", f"{where}.drop", '["0 um", "1 um", "6 um"]')
+        x = _quantities(spec["x"], q, "[length]", source, f"{where}.x", '["0 mm", "4 mm", "5.9 mm"]')
+        d = _quantities(spec["drop"], q, "[length]", source, f"{where}.drop", '["0 um", "1 um", "6 um"]')
         h = 0.5 * length
         far = max(abs(v) for v in x)
         if far > h * (1 + 1e-9):
@@ -1009,7 +1019,7 @@ def parse_roller_case(data: dict, source: str = "<case>") -> BearingCase:
         good = b.n_slices + 1 if b.n_slices >= 5 else 31
         raise CaseFileError(f"{source}: {W}.n_slices must be odd and >= 5 (one slice at the "
                             f"roller middle); got {b.n_slices} (e.g. n_slices = {good})")
-    profile = read_profile(b.profile, q, source, f"{W}.profile", L)
+    profile = read_profile(b.profile, q, source, f"{W}.profile", L, D)
     mat = _roller_material(spec.materials, q, source)
     kw = dict(roller_diameter=D, roller_length=L, n_rollers=b.n_rollers, pitch_diameter=dm,
               kind=kind, contact_angle=alpha or 0.0,

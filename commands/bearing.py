@@ -244,7 +244,7 @@ def roller_columns(r: dict, units: str = "eng") -> tuple[list, list]:
         headers.append(f"Q_cone [{F}]")
     if tapered:
         headers.append(f"Q_rib [{F}]")
-    headers += [f"p_max [{ul('stress', units)}]", "tilt [arcmin]", "edge"]
+    headers += [f"p_max [{ul('stress', units)}]", f"tilt [{A}]", "edge"]
 
     def g(x, kind, digits=5):
         return fmt(cv(x, kind, units), digits)
@@ -257,7 +257,7 @@ def roller_columns(r: dict, units: str = "eng") -> tuple[list, list]:
         if tapered:
             row.append(g(d["rib_load"][j], "force"))
         row += [g(d["max_slice_pressure"][j], "stress", 4),
-                fmt(math.degrees(d["roller_tilt"][j]) * 60.0, 3),
+                g(d["roller_tilt"][j], "angle", 3),
                 "yes" if d["edge_loaded"][j] else "-"]
         rows.append(row)
     return headers, rows
