@@ -364,8 +364,9 @@ def analyze_roller(case) -> BearingAnalysis:
                      "bearing carries no axial load here")
     M = np.asarray(res.loads, dtype=float)[3:]
     M = np.where(np.abs(M) < 1e-9 * (Fr + Fa) * b.pitch_diameter, 0.0, M)   # round-off
-    notes.append(f"the inner ring's tilt is held ({'misalignment' if case.misalignment else 'aligned'}"
-                 f"); the moment holding it is My = {M[0]:.4g} N m, Mz = {M[1]:.4g} N m")
+    held = "at the misalignment" if case.misalignment else "aligned"
+    notes.append(f"the inner ring's tilt is held ({held}); the moment holding it is "
+                 f"My = {M[0]:.4g} N m, Mz = {M[1]:.4g} N m")
     notes.append("static safety: s0 = C0/P0 (ISO 76, the catalogue check) and s0 = "
                  "(4000 MPa / p_max)^2 from the most loaded slice of the load distribution "
                  "(ISO 76 bases C0 of roller bearings on 4000 MPa; line contact: load ~ p^2)")

@@ -863,8 +863,8 @@ def _quantities(values, q, dim: str, source: str, where: str, example: str) -> l
     out = []
     for k, v in enumerate(values):
         if isinstance(v, bool) or not isinstance(v, str):
-            raise CaseFileError(f"{source}: {where}[{k}]: give each value with its unit as a string, "
-                                f"e.g. {example}; got {v!r}")
+            raise CaseFileError(f"{source}: {where}[{k}]: give each value with its unit as a "
+                                f"string, e.g. {example}; got {v!r}")
         out.append(q(v, dim, f"{where}[{k}]"))
     return out
 
@@ -907,8 +907,10 @@ def read_profile(spec, q, source: str, where: str, length: float, diameter: floa
                 f"some metres (were millimetres typed?), e.g. profile = {crown_example}")
         return crown
     if keys == {"x", "drop"}:
-        x = _quantities(spec["x"], q, "[length]", source, f"{where}.x", '["0 mm", "4 mm", "5.9 mm"]')
-        d = _quantities(spec["drop"], q, "[length]", source, f"{where}.drop", '["0 um", "1 um", "6 um"]')
+        x = _quantities(spec["x"], q, "[length]", source, f"{where}.x",
+                        '["0 mm", "4 mm", "5.9 mm"]')
+        d = _quantities(spec["drop"], q, "[length]", source, f"{where}.drop",
+                        '["0 um", "1 um", "6 um"]')
         h = 0.5 * length
         far = max(abs(v) for v in x)
         if far > h * (1 + 1e-9):

@@ -68,7 +68,8 @@ from __future__ import annotations
 import functools
 from typing import Literal, Optional
 
-__all__ = ["strict", "subset", "bearing_keys", "roller_bearing_keys", "ROLLER_TYPES", "material_keys", "materials_keys",
+__all__ = ["strict", "subset", "bearing_keys", "roller_bearing_keys", "ROLLER_TYPES",
+           "material_keys", "materials_keys",
            "fits_keys", "oil_keys", "operation_keys", "read_material", "read_materials",
            "read_operating_clearance", "DENSITY", "EXPANSION"]
 
