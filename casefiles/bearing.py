@@ -993,6 +993,10 @@ def parse_roller_case(data: dict, source: str = "<case>") -> BearingCase:
                     f"{source}: [life].{key} belongs to the ball bearings' Lundberg-Palmgren "
                     "life and film; a roller case takes standard, reliability, cleanliness "
                     "or contamination, and fatigue_limit (e.g. fatigue_limit = \"9.4 kN\")")
+    mt = data.get("materials")
+    if isinstance(mt, dict) and "ball" in mt:
+        raise CaseFileError(f"{source}: [materials].ball: a roller bearing's materials are "
+                            "roller and ring, e.g. roller = { E = \"208 GPa\", nu = 0.3 }")
     spec = validate_spec(_roller_models(), data, source)
     q = quantity_reader(source)
     b = spec.bearing

@@ -143,6 +143,8 @@ def _case(tmp_path, text):
     (CYL.format(extra="", axial="0 N", tail='[materials]\nroller = { E = "200 GPa", nu = 0.3 }'
                                            '\nring = { E = "210 GPa", nu = 0.3 }\n'),
      "[materials]", "the same E and nu"),
+    (CYL.format(extra="", axial="0 N", tail='[materials]\nball = { E = "200 GPa", nu = 0.3 }\n'),
+     "[materials].ball", 'roller = { E = "208 GPa", nu = 0.3 }'),
     (CYL.format(extra="", axial="0 N", tail="").replace('"13 mm"', "13"),
      "[bearing].roller_diameter", '"13 mm"'),
     (CYL.format(extra="", axial="0 N", tail="").replace("[loads]",
