@@ -13,7 +13,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["BearingAnalysis", "analyze", "load_distribution", "FIT_MARK", "EHL_K_RANGE"]
+__all__ = ["BearingAnalysis", "analyze", "analyze_roller", "load_distribution",
+           "roller_load_distribution", "FIT_MARK", "EHL_K_RANGE"]
 
 #: Marks a number computed by a formula outside the range it was fitted on (a note says
 #: which formula and which range).
@@ -76,13 +77,15 @@ class BearingAnalysis:
 def analyze(case) -> BearingAnalysis:
     """Run a validated :class:`~ballrace.casefiles.bearing.BearingCase`: its load
     distribution (:func:`load_distribution`), ratings, lives and film, and the notes that
-    apply to them.
+    apply to them.  A roller-bearing case goes to :func:`analyze_roller`.
 
     Returns
     -------
     BearingAnalysis
         The SI values (``to_dict()``: what ``ballrace bearing --json`` prints) and notes.
     """
+    if getattr(case, "is_roller", False):
+        return analyze_roller(case)
     from ballrace.analytic import ehl, life, ratings
 
     brg = case.bearing
@@ -246,6 +249,164 @@ def analyze(case) -> BearingAnalysis:
         "life": out_life,
         "film": film,
         "iso": iso,
+    }
+    return BearingAnalysis(case=case, method=method, distribution=res, values=values,
+                           notes=tuple(notes))
+
+
+# ============================================================================ roller bearings
+def roller_load_distribution(case) -> tuple[str, object]:
+    """The lamina load distribution of a roller-bearing case: ``(method, result)``.
+
+    :meth:`~ballrace.analytic.roller.RollerBearing.solve` with the radial load along +y
+    (``Fy = F_r``, roller 1 on the load line), ``Fa = F_a`` (tapered; a cylindrical
+    bearing's axial DOF is held) and the inner ring's tilt held: theta_y = 0, theta_z =
+    ``[loads].misalignment`` (default 0), so that the reaction moment holding it is part
+    of the result (``result.loads``).
+    """
+    b = case.bearing
+    mis = case.misalignment or 0.0
+    disp = [None, None, None, 0.0, mis]
+    method = ("ISO/TS 16281 lamina model, "
+              + ("combined radial and axial" if b.tapered else "radial")
+              + (", ring tilt held" if mis else ", rings held aligned"))
+    return method, b.solve(Fa=case.axial_load, Fy=case.radial_load, displacements=disp)
+
+
+def analyze_roller(case) -> BearingAnalysis:
+    """The analysis of a roller-bearing case (:func:`analyze` hands it here): the lamina
+    load distribution (:func:`roller_load_distribution`), the ISO 281 / ISO 76 ratings,
+    the ISO 281 life from P (tapered: X, Y) with L10 = (C/P)^(10/3), the ISO/TS 16281
+    reference life L10r from the slice loads, the static safety s0 (ISO 76) from the
+    catalogue P0 and from the most loaded slice's pressure, a_ISO lives when ``[oil]``
+    and the contamination are given, and the notes that apply.
+    """
+    from ballrace.analytic import iso281, life
+    from ballrace.analytic.roller import ratings as rr
+
+    b = case.bearing
+    a = b.contact_angle
+    Fr, Fa = case.radial_load, case.axial_load
+    n = case.speed_rpm
+    notes: list[str] = []
+    C, C0 = b.dynamic_rating(), b.static_rating()
+
+    method, res = roller_load_distribution(case)
+    Q = np.asarray(res.roller_loads, dtype=float)
+    p_in = np.asarray(res.slice_pressures("inner"), dtype=float)
+    p_out = np.asarray(res.slice_pressures("outer"), dtype=float)
+    p_roller = np.maximum(p_in.max(-1), p_out.max(-1))
+    edge = np.asarray(res.edge_loaded, dtype=bool)
+
+    # ---------------------------------------------------------------- ISO 281 / ISO 76
+    out_life: dict = {"standard": case.standard}
+    P = float(rr.dynamic_equivalent_load(Fr, Fa, a))
+    if b.tapered:
+        f = rr.tapered_factors(a)
+        low = Fa <= f.e * Fr
+        out_life.update(X=f.X1 if low else f.X2, Y=f.Y1 if low else f.Y2, e=f.e,
+                        X0=f.X0, Y0=f.Y0)
+    else:
+        out_life.update(X=1.0, Y=0.0, e=None, X0=1.0, Y0=0.0)
+    L10 = float(rr.rating_life(C, P))
+    P0 = float(rr.static_equivalent_load(Fr, Fa, a))
+    out_life.update(P=P, L10=L10, L10h=L10 * 1e6 / (60.0 * n), P0=P0, s0=C0 / P0,
+                    static_safety=float(res.static_safety),
+                    max_pressure=float(res.max_pressure))
+    ref = life.reference_rating_life(b, res, dynamic_rating=C, rotating=case.rotating_ring)
+    out_life.update(L10r=float(ref.L10r), L10r_h=float(ref.hours(n)), P_ref=float(ref.P_ref),
+                    L_inner=float(ref.L_inner), L_outer=float(ref.L_outer),
+                    Q_ci=float(ref.Q_ci), Q_ce=float(ref.Q_ce))
+    a1 = float(iso281.reliability_factor(case.reliability))
+    Cu = case.fatigue_limit if case.fatigue_limit is not None else \
+        float(rr.fatigue_load_limit(C0, b.pitch_diameter))
+    out_life.update(reliability=case.reliability, a1=a1, C_u=Cu,
+                    C_u_source="given" if case.fatigue_limit is not None else
+                    "C0/8.2 (ISO 281 Annex B, simplified)",
+                    contamination=case.contamination, cleanliness=case.cleanliness)
+    nu = case.oil_viscosity
+    if nu is not None:
+        out_life.update(viscosity=nu, nu1=float(iso281.reference_viscosity(n, b.pitch_diameter)),
+                        kappa=float(iso281.viscosity_ratio(nu, n, b.pitch_diameter)))
+    if nu is None or case.contamination is None:
+        notes.append("a_ISO, L_nm and L10mr need [oil] and [life].cleanliness (or "
+                     "contamination): not computed")
+    elif out_life["kappa"] < iso281.KAPPA_MIN:
+        notes.append(f"kappa = {out_life['kappa']:.3g} < 0.1: outside ISO 281:2007, no a_ISO")
+    else:
+        kw = dict(kappa=out_life["kappa"], contamination=case.contamination,
+                  fatigue_limit=Cu, ep_additives=case.ep_additives)
+        aiso = float(rr.life_modification_factor(load=P, **kw))
+        Lnm = a1 * aiso * L10
+        Lmr = float(ref.modified(reliability=case.reliability, **kw))
+        out_life.update(a_ISO=aiso, L_nm=Lnm, L_nm_h=Lnm * 1e6 / (60.0 * n),
+                        a_ISO_ref=float(ref.a_iso(**kw)), L10mr=Lmr,
+                        L10mr_h=Lmr * 1e6 / (60.0 * n))
+        if out_life["kappa"] > iso281.KAPPA_MAX:
+            notes.append(f"kappa = {out_life['kappa']:.3g} > 4 taken as 4 (ISO 281:2007)")
+
+    # ---------------------------------------------------------------- notes
+    notes.append("lamina model (ISO/TS 16281): each roller cut into independent slices; "
+                 "the rings are rigid, the rollers' centrifugal and gyroscopic loads and "
+                 "skew are left out")
+    if edge.any():
+        js = ", ".join(str(j + 1) for j in np.flatnonzero(edge))
+        notes.append(f"edge loading (rollers {js}): an end slice carries load; the lamina "
+                     "model has no pressure peak at the roller end, so the slice pressure, "
+                     "s0 from it and L10r miss the edge stress there (the half-space line "
+                     "contact, RollerLoadDistribution.roller_contact, shows it)")
+    if b.tapered:
+        notes.append("tapered: the cone and rib loads are fixed multiples of the cup load "
+                     "(the roller's own equilibrium, default rib angle); the rib contact's "
+                     "compliance is neglected")
+    else:
+        notes.append("cylindrical: the locating flanges (NJ, NUP, NF) are not modelled; the "
+                     "bearing carries no axial load here")
+    M = np.asarray(res.loads, dtype=float)[3:]
+    M = np.where(np.abs(M) < 1e-9 * (Fr + Fa) * b.pitch_diameter, 0.0, M)   # round-off
+    held = "at the misalignment" if case.misalignment else "aligned"
+    notes.append(f"the inner ring's tilt is held ({held}); the moment holding it is "
+                 f"My = {M[0]:.4g} N m, Mz = {M[1]:.4g} N m")
+    notes.append("static safety: s0 = C0/P0 (ISO 76, the catalogue check) and s0 = "
+                 "(4000 MPa / p_max)^2 from the most loaded slice of the load distribution "
+                 "(ISO 76 bases C0 of roller bearings on 4000 MPa; line contact: load ~ p^2)")
+    if b.profile.name in ("lundberg", "johns-gohar"):
+        notes.append(f"the {b.profile.name} profile is designed for Q_d = "
+                     f"{b.design_load:.4g} N (4000 MPa at the inner contact of a uniformly "
+                     "loaded roller)")
+
+    tilts = np.asarray(res.roller_tilts, dtype=float)
+    values = {
+        "title": case.title,
+        "units": {"length": "m", "force": "N", "pressure": "Pa", "angle": "rad",
+                  "speed": "rad/s (speed_rpm: rev/min)", "life": "1e6 rev (…h: hours)",
+                  "moment": "N m"},
+        "bearing": {"kind": case.kind, "roller_diameter": b.roller_diameter,
+                    "roller_length": b.roller_length, "n_rollers": b.n_rollers,
+                    "pitch_diameter": b.pitch_diameter, "contact_angle": a,
+                    "cone_angle": b.cone_angle if b.tapered else None,
+                    "roller_half_angle": b.roller_half_angle,
+                    "rib_contact_angle": b.rib_contact_angle if b.tapered else None,
+                    "diametral_clearance": b.diametral_clearance,
+                    "profile": b.profile.name, "n_slices": b.n_slices,
+                    "slice_width": b.slice_width, "E_prime": b.E_prime,
+                    "speed": case.speed, "speed_rpm": n, "rotating_ring": case.rotating_ring,
+                    "radial_load": Fr, "axial_load": Fa, "misalignment": case.misalignment},
+        "ratings": {"C": C, "C0": C0, "standard": case.standard},
+        "distribution": {
+            "method": method, "azimuth": _list(res.azimuths), "roller_load": _list(Q),
+            "inner_load": _list(res.inner_loads), "rib_load": _list(res.rib_loads),
+            "max_slice_pressure": _list(p_roller), "roller_tilt": _list(tilts),
+            "edge_loaded": [bool(x) for x in edge],
+            "edge_load_ratio": _list(res.edge_load_ratio),
+            "slice_position": _list(b.slice_positions),
+            "slice_loads": [_list(row) for row in np.asarray(res.slice_loads, float)],
+            "slice_pressure_inner": [_list(row) for row in p_in],
+            "slice_pressure_outer": [_list(row) for row in p_out],
+            "displacements": _list(res.displacements), "loads": _list(res.loads),
+            "max_roller_load": float(np.max(Q)), "max_pressure": float(res.max_pressure),
+        },
+        "life": out_life,
     }
     return BearingAnalysis(case=case, method=method, distribution=res, values=values,
                            notes=tuple(notes))

@@ -66,6 +66,47 @@ lubricant, with unit strings parsed by pint at this boundary only
 With ``[fits]`` the bearing's clearance is the unmounted one and the load distribution
 uses the operating clearance (negative: preload).
 
+Roller bearings
+---------------
+``type = "cylindrical-roller"`` or ``"tapered-roller"`` selects the roller keys of
+``[bearing]`` (a ball key there, or a roller key in a ball bearing's, is an error)::
+
+    title = "NU 210 cylindrical roller bearing"
+
+    [bearing]
+    type = "cylindrical-roller"   # or "tapered-roller"
+    roller_diameter = "13 mm"     # tapered: at the middle of the roller
+    roller_length = "11.8 mm"     # effective length L_we (without the end chamfers)
+    n_rollers = 14
+    pitch_diameter = "70.65 mm"
+    # contact_angle = "15 deg"    # tapered only (required there): the cup angle
+    diametral_clearance = "45 um" # default 0; negative: interference
+    profile = "iso"               # "iso" (ISO/TS 16281's default), "straight", "lundberg",
+                                  # "johns-gohar"; a circular crown:
+    # profile = { flat_length = "8 mm", crown_radius = "2 m" }
+                                  # or a table from the roller centre (mirrored), each
+                                  # entry with its unit:
+    # profile = { x = ["0 mm", "4 mm", "5.9 mm"], drop = ["0 um", "1 um", "6 um"] }
+    n_slices = 31                 # slices of the lamina model: odd, >= 5 (default 31)
+
+    [materials]                   # optional; one material for rollers and rings
+    roller = { E = "208 GPa", nu = 0.3 }
+    ring = { E = "208 GPa", nu = 0.3 }   # if both are given they must be equal
+
+    [loads]
+    radial = "6940 N"
+    axial = "0 N"                 # cylindrical: 0 (the flanges are not modelled);
+                                  # tapered: > 0, pressing the cone into the cup
+    misalignment = "2 arcmin"     # optional: the inner ring's tilt, held (default 0)
+
+``[operation]``, ``[life]`` (``standard``, ``reliability``, ``cleanliness`` or
+``contamination``, ``fatigue_limit``) and ``[oil]`` are read as for a ball bearing.  A
+table profile may equally be written as its own ``[bearing.profile]`` table (TOML makes
+both the same); its points must lie within the roller, |x| <= L_we/2, and reach 95 % of
+it.  ``[lubricant]`` (the ball contacts' film), ``[fits]`` and the ball-only ``[life]``
+keys (``material``, ``processing``, ``hardness_hrc``, ``lubrication_factor``,
+``fatigue_limit_method``) are refused for a roller bearing.
+
 Validation uses pydantic v2 (unknown keys are errors, so typos do not pass silently);
 every error names the file and the ``[table].key`` it is about.
 """
@@ -81,11 +122,12 @@ from typing import Literal, Optional
 
 import numpy as np
 
-__all__ = ["CaseFileError", "BearingCase", "load_case", "parse_case"]
+__all__ = ["CaseFileError", "BearingCase", "load_case", "parse_case", "parse_roller_case"]
 
 
 from ballrace.errors import CaseFileError  # noqa: E402 - one class for every case file
 from ballrace.casefiles.schema import bearing_keys  # noqa: E402,F401 - shared [bearing] keys
+from ballrace.casefiles.schema import ROLLER_TYPES  # noqa: E402
 
 
 def rating_angle(kind: str, nominal, raw, where: str):
@@ -224,6 +266,8 @@ class BearingCase:
     oil : dict(nu40, nu100 [m^2/s], temperature [K]) or None.
     ep_additives : Lubricant with effective EP additives (ISO 281 §9.3.3).
     clearance : :class:`~ballrace.analytic.clearance.OperatingClearance` from ``[fits]`` or None.
+    misalignment : Roller bearings: the inner ring's tilt held in the plane of the radial
+        load [rad] (None: aligned).
     """
 
     title: str
@@ -252,6 +296,13 @@ class BearingCase:
     oil: Optional[dict] = None
     clearance: Optional[object] = None
     ep_additives: bool = False
+    misalignment: Optional[float] = None
+
+    @property
+    def is_roller(self) -> bool:
+        """True for a roller-bearing case (``kind`` "cylindrical-roller" or
+        "tapered-roller"; ``bearing`` a :class:`~ballrace.analytic.roller.RollerBearing`)."""
+        return self.kind in ROLLER_TYPES
 
     @property
     def solver_options(self) -> dict:
@@ -270,6 +321,8 @@ class BearingCase:
     def nominal_contact_angle(self) -> float:
         """Nominal contact angle of the ratings and X/Y tables [rad]
         (the bearing's :attr:`~ballrace.BallBearing.nominal_contact_angle`)."""
+        if self.is_roller:                  # rated at its contact angle (0, the cup angle)
+            return float(self.bearing.contact_angle)
         return float(self.bearing.nominal_contact_angle)
 
 
@@ -649,6 +702,8 @@ def parse_case(data: dict, source: str = "<case>") -> BearingCase:
     hint = _kind_hint(data, source)
     if hint:
         raise CaseFileError(hint)
+    if _bearing_type(data, source) in ROLLER_TYPES:
+        return parse_roller_case(data, source)
     from ballrace.casefiles.schema import read_materials
 
     spec = validate_spec(_models(), data, source)
@@ -714,6 +769,317 @@ def parse_case(data: dict, source: str = "<case>") -> BearingCase:
         roughness_race=rq_r, roughness_ball=rq_b, standard=lf.standard, material=lf.material,
         processing=lf.processing, hardness_hrc=lf.hardness_hrc,
         lubrication_factor=lf.lubrication_factor, **iso)
+
+
+# ============================================================================ roller bearings
+#: [bearing] keys of a ball bearing only, and what a roller bearing takes instead.
+BALL_KEYS = {
+    "ball_diameter": 'roller_diameter = "13 mm"', "n_balls": "n_rollers = 14",
+    "f_inner": 'roller_length = "11.8 mm" and profile = "iso" (no groove conformity)',
+    "f_outer": 'roller_length = "11.8 mm" and profile = "iso" (no groove conformity)',
+    "free_contact_angle": 'contact_angle = "15 deg" (tapered: the cup angle)',
+    "nominal_contact_angle": 'contact_angle = "15 deg" (tapered: the cup angle)',
+    "n_rows": "one row (n_rows is not a roller key)",
+}
+#: [bearing] keys of a roller bearing only.
+ROLLER_KEYS = ("roller_diameter", "roller_length", "n_rollers", "contact_angle", "profile",
+               "n_slices")
+#: Sections and [life] keys of a ball case that a roller case refuses, and why.
+_NOT_FOR_ROLLERS = {
+    "lubricant": "[lubricant]: the film thickness is computed for ball contacts only; remove "
+                 "it from a roller-bearing case (give [oil] for the ISO 281 viscosity ratio)",
+    "fits": "[fits]: the operating clearance from fits is computed for ball bearings only; "
+            "give the mounted clearance as [bearing].diametral_clearance (e.g. "
+            "diametral_clearance = \"30 um\")",
+}
+_BALL_LIFE_KEYS = ("material", "processing", "hardness_hrc", "lubrication_factor",
+                   "fatigue_limit_method")
+
+
+def _bearing_type(data: dict, source: str):
+    """The ``[bearing].type`` of a case dictionary, after refusing the keys of the other
+    family: a ball key in a roller bearing's table and a roller key in a ball bearing's."""
+    b = data.get("bearing")
+    if not isinstance(b, dict):
+        return None
+    typ = b.get("type", "deep-groove")
+    if typ in ROLLER_TYPES:
+        for key, instead in BALL_KEYS.items():
+            if key in b:
+                raise CaseFileError(f"{source}: [bearing].{key} is a ball-bearing key; a "
+                                    f"{typ} bearing takes {instead}")
+    else:
+        for key in ROLLER_KEYS:
+            if key in b:
+                raise CaseFileError(
+                    f"{source}: [bearing].{key} is a roller-bearing key; give type = "
+                    f"\"cylindrical-roller\" or \"tapered-roller\" for a roller bearing (a "
+                    f"{typ!s} ball bearing takes ball_diameter, n_balls, f_inner, f_outer)")
+    return typ
+
+
+def _roller_models():
+    """Pydantic model of a roller-bearing case (built on first use)."""
+    from pydantic import Field
+
+    from ballrace.casefiles import schema
+
+    _Strict = schema.strict()
+    M = schema.material_keys()
+
+    class RollerLoads(_Strict):
+        radial: str = "0 N"
+        axial: str = "0 N"
+        misalignment: Optional[str] = None
+
+    class RollerLife(_Strict):
+        standard: Literal["ISO 281:2007"] = "ISO 281:2007"
+        reliability: float = Field(default=0.9, ge=0.9, le=0.9995)
+        contamination: Optional[float] = Field(default=None, ge=0.0, le=1.0)
+        cleanliness: Optional[str] = None
+        fatigue_limit: Optional[str] = None
+
+    class RollerMaterials(_Strict):
+        roller: Optional[M] = None
+        ring: Optional[M] = None
+
+    class RollerCaseSpec(_Strict):
+        title: str = ""
+        bearing: schema.roller_bearing_keys()
+        materials: RollerMaterials = RollerMaterials()
+        loads: RollerLoads
+        operation: schema.operation_keys()
+        life: RollerLife = RollerLife()
+        oil: Optional[schema.oil_keys()] = None
+
+    return RollerCaseSpec
+
+
+def _quantities(values, q, dim: str, source: str, where: str, example: str) -> list:
+    """A list of quantity strings (``["0 mm", "4 mm"]``) in SI; an error names the entry."""
+    if not isinstance(values, list) or not values:
+        raise CaseFileError(f"{source}: {where} must be a list of quantities with units, e.g. "
+                            f"{example}; got {values!r}")
+    out = []
+    for k, v in enumerate(values):
+        if isinstance(v, bool) or not isinstance(v, str):
+            raise CaseFileError(f"{source}: {where}[{k}]: give each value with its unit as a "
+                                f"string, e.g. {example}; got {v!r}")
+        out.append(q(v, dim, f"{where}[{k}]"))
+    return out
+
+
+def read_profile(spec, q, source: str, where: str, length: float, diameter: float):
+    """The roller profile of a case file's ``profile`` value at ``where``
+    (``"[bearing].profile"``) for a roller of effective length ``length`` [m]: a name, a
+    circular crown ``{flat_length, crown_radius}`` or a table ``{x, drop}`` (each entry a
+    quantity string; x from the roller centre, mirrored); ``diameter`` is the roller's
+    D_we [m].  ``CaseFileError`` naming the key, with a valid example; also for a crown
+    whose drop at the roller end exceeds 1 % of D_we and a table reaching beyond the roller
+    or dropping more than a tenth of its length (units slipped)."""
+    from ballrace.analytic.roller import profile as rp
+
+    table_example = '{ x = ["0 mm", "4 mm", "5.9 mm"], drop = ["0 um", "1 um", "6 um"] }'
+    crown_example = '{ flat_length = "8 mm", crown_radius = "2 m" }'
+    if isinstance(spec, str):
+        key = spec.strip().lower().replace("_", "-")
+        if key not in rp.PROFILE_NAMES:
+            raise CaseFileError(f"{source}: {where} must be one of "
+                                f"{', '.join(rp.PROFILE_NAMES)}, a crown {crown_example} or a "
+                                f"table {table_example}; got {spec!r}")
+        return key
+    keys = set(spec)
+    if keys == {"flat_length", "crown_radius"}:
+        flat = q(spec["flat_length"], "[length]", f"{where}.flat_length")
+        radius = q(spec["crown_radius"], "[length]", f"{where}.crown_radius")
+        try:
+            crown = rp.Crowned(flat, radius)
+            crown.check(rp.ProfileContext(length=length, diameter=diameter))
+        except (ValueError, TypeError) as exc:
+            raise CaseFileError(f"{source}: {where}: {exc}; e.g. profile = {crown_example}") \
+                from None
+        s = 0.5 * (length - flat)
+        end = s * s / (radius + math.sqrt((radius - s) * (radius + s)))
+        if end > 0.01 * diameter:         # a crown radius in mm typed where m was meant
+            raise CaseFileError(
+                f"{source}: {where}.crown_radius: the crown drops {end * 1e6:.4g} um at the "
+                f"roller end, more than 1 % of D_we = {diameter * 1e3:g} mm; crown radii are "
+                f"some metres (were millimetres typed?), e.g. profile = {crown_example}")
+        return crown
+    if keys == {"x", "drop"}:
+        x = _quantities(spec["x"], q, "[length]", source, f"{where}.x",
+                        '["0 mm", "4 mm", "5.9 mm"]')
+        d = _quantities(spec["drop"], q, "[length]", source, f"{where}.drop",
+                        '["0 um", "1 um", "6 um"]')
+        h = 0.5 * length
+        far = max(abs(v) for v in x)
+        if far > h * (1 + 1e-9):
+            raise CaseFileError(
+                f"{source}: {where}.x reaches {far * 1e3:g} mm, beyond the roller's half-"
+                f"length L_we/2 = {h * 1e3:g} mm (x is measured from the roller centre; were "
+                f"millimetres typed as metres?); e.g. profile = {table_example}")
+        if max(d) > 0.1 * length:
+            raise CaseFileError(
+                f"{source}: {where}.drop reaches {max(d) * 1e3:g} mm, more than a tenth of the "
+                f"roller length ({length * 1e3:g} mm; were micrometres meant?); e.g. profile "
+                f"= {table_example}")
+        try:
+            return rp.Table(x, d)
+        except (ValueError, TypeError) as exc:
+            raise CaseFileError(f"{source}: {where}: {exc}") from None
+    raise CaseFileError(f"{source}: {where}: a profile table takes the keys x and drop "
+                        f"({table_example}), a circular crown flat_length and crown_radius "
+                        f"({crown_example}); got {', '.join(sorted(keys)) or 'an empty table'}")
+
+
+def _roller_material(spec, q, source: str):
+    """The one material of rollers and rings (``[materials]`` roller and/or ring)."""
+    from ballrace.casefiles.schema import read_material
+
+    mats = {}
+    for which in ("roller", "ring"):
+        m = getattr(spec, which)
+        if m is not None:
+            kw = read_material(m, q, f"[materials.{which}]", m.name or which)
+            try:
+                mats[which] = material(**kw)
+            except (ValueError, TypeError) as exc:
+                raise CaseFileError(f"{source}: [materials.{which}]: {exc}") from None
+    if len(mats) == 2:
+        a, b = mats["roller"], mats["ring"]
+        if (a.E, a.nu) != (b.E, b.nu):
+            raise CaseFileError(f"{source}: [materials]: the roller model takes one material for "
+                                "rollers and rings; give roller and ring the same E and nu (or "
+                                "only one of them)")
+    return mats.get("roller") or mats.get("ring")
+
+
+def parse_roller_case(data: dict, source: str = "<case>") -> BearingCase:
+    """Validate a roller-bearing case dictionary (``[bearing].type`` "cylindrical-roller" or
+    "tapered-roller"; module notes) and convert it to SI.
+
+    Returns
+    -------
+    BearingCase
+        With ``bearing`` a :class:`~ballrace.analytic.roller.RollerBearing` and ``kind`` the
+        ``type``.
+
+    Raises
+    ------
+    CaseFileError
+        Naming ``source`` and the offending ``[table].key``, with a valid example.
+
+    Examples
+    --------
+    >>> case = parse_roller_case({"bearing": {"type": "cylindrical-roller",
+    ...     "roller_diameter": "13 mm", "roller_length": "11.8 mm", "n_rollers": 14,
+    ...     "pitch_diameter": "70.65 mm"}, "loads": {"radial": "6940 N"},
+    ...     "operation": {"speed": "1500 rpm"}})
+    >>> case.bearing.kind, case.bearing.n_slices, case.radial_load
+    ('cylindrical', 31, 6940.0)
+    """
+    import types
+
+    from ballrace.analytic.roller import RollerBearing
+
+    for section, message in _NOT_FOR_ROLLERS.items():
+        if section in data:
+            raise CaseFileError(f"{source}: {message}")
+    life_table = data.get("life")
+    if isinstance(life_table, dict):
+        for key in _BALL_LIFE_KEYS:
+            if key in life_table:
+                raise CaseFileError(
+                    f"{source}: [life].{key} belongs to the ball bearings' Lundberg-Palmgren "
+                    "life and film; a roller case takes standard, reliability, cleanliness "
+                    "or contamination, and fatigue_limit (e.g. fatigue_limit = \"9.4 kN\")")
+    mt = data.get("materials")
+    if isinstance(mt, dict) and "ball" in mt:
+        raise CaseFileError(f"{source}: [materials].ball: a roller bearing's materials are "
+                            "roller and ring, e.g. roller = { E = \"208 GPa\", nu = 0.3 }")
+    spec = validate_spec(_roller_models(), data, source)
+    q = quantity_reader(source)
+    b = spec.bearing
+    W = "[bearing]"
+    kind = "tapered" if b.type == "tapered-roller" else "cylindrical"
+    D = _positive(q(b.roller_diameter, "[length]", f"{W}.roller_diameter"), b.roller_diameter,
+                  f"{source}: {W}.roller_diameter", "13 mm")
+    L = _positive(q(b.roller_length, "[length]", f"{W}.roller_length"), b.roller_length,
+                  f"{source}: {W}.roller_length", "11.8 mm")
+    dm = _positive(q(b.pitch_diameter, "[length]", f"{W}.pitch_diameter"), b.pitch_diameter,
+                   f"{source}: {W}.pitch_diameter", "70.65 mm")
+    alpha = q(b.contact_angle, "[angle]", f"{W}.contact_angle")
+    if kind == "cylindrical" and alpha not in (None, 0.0):
+        raise CaseFileError(f"{source}: {W}.contact_angle: a cylindrical roller bearing has "
+                            f"contact angle 0; got {b.contact_angle!r} (use type = "
+                            "\"tapered-roller\" for a bearing with a cup angle)")
+    if kind == "tapered":
+        if alpha is None:
+            raise CaseFileError(f"{source}: {W}.contact_angle: a tapered roller bearing needs "
+                                "its cup angle, e.g. contact_angle = \"15 deg\"")
+        if not 0.0 < alpha < math.pi / 3:
+            raise CaseFileError(f"{source}: {W}.contact_angle (the cup angle) must be in "
+                                f"(0, 60) deg, typically 10 ... 30 deg; got {b.contact_angle!r}"
+                                " (e.g. contact_angle = \"15 deg\")")
+    if b.n_slices is not None and (b.n_slices < 5 or b.n_slices % 2 == 0):
+        good = b.n_slices + 1 if b.n_slices >= 5 else 31
+        raise CaseFileError(f"{source}: {W}.n_slices must be odd and >= 5 (one slice at the "
+                            f"roller middle); got {b.n_slices} (e.g. n_slices = {good})")
+    profile = read_profile(b.profile, q, source, f"{W}.profile", L, D)
+    mat = _roller_material(spec.materials, q, source)
+    kw = dict(roller_diameter=D, roller_length=L, n_rollers=b.n_rollers, pitch_diameter=dm,
+              kind=kind, contact_angle=alpha or 0.0,
+              diametral_clearance=q(b.diametral_clearance, "[length]",
+                                    f"{W}.diametral_clearance"),
+              profile=profile, n_slices=b.n_slices, name=b.name or spec.title)
+    if mat is not None:
+        kw["material"] = mat
+    try:
+        brg = RollerBearing(**kw)
+    except (ValueError, TypeError) as exc:
+        raise CaseFileError(f"{source}: {W}: {exc}") from None
+
+    loads = spec.loads
+    Fr = q(loads.radial, "[force]", "[loads].radial")
+    Fa = q(loads.axial, "[force]", "[loads].axial")
+    for name, v in (("radial", Fr), ("axial", Fa)):
+        if v < 0:
+            raise CaseFileError(f"{source}: [loads].{name} must be >= 0 N; got "
+                                f"{getattr(loads, name)!r} (e.g. \"6940 N\")")
+    if Fr == 0 and Fa == 0:
+        raise CaseFileError(f"{source}: [loads]: radial and axial are both zero")
+    if kind == "cylindrical" and Fa != 0:
+        raise CaseFileError(f"{source}: [loads].axial: a cylindrical roller bearing carries "
+                            f"no axial load here (its locating flanges, NJ, NUP, NF, are not "
+                            f"modelled); got {loads.axial!r}: set axial = \"0 N\", or use type "
+                            "= \"tapered-roller\"")
+    if kind == "tapered":
+        t = math.tan(alpha)
+        if Fa == 0 or Fr > Fa / t:
+            need = max(1.26 * Fr * t, 1.0)
+            raise CaseFileError(
+                f"{source}: [loads].axial: a single tapered roller bearing needs an axial load "
+                f"pressing the cone into the cup, more than F_r tan(alpha) = {Fr * t:.4g} N "
+                f"(its rollers carry at most F_a / tan(alpha) radially); got "
+                f"{loads.axial!r} (e.g. axial = \"{need:.0f} N\", the force a radial load "
+                "induces with half the rollers loaded)")
+    mis = q(loads.misalignment, "[angle]", "[loads].misalignment")
+    if mis is not None and not abs(mis) < 0.01:
+        raise CaseFileError(f"{source}: [loads].misalignment must be within +-0.01 rad "
+                            f"(34 arcmin); got {loads.misalignment!r} (e.g. misalignment = "
+                            "\"2 arcmin\")")
+    shim = types.SimpleNamespace(
+        life=types.SimpleNamespace(**spec.life.model_dump(), fatigue_limit_method="simplified"),
+        oil=spec.oil, fits=None)
+    iso = _iso_inputs(shim, brg, source, q)
+    return BearingCase(
+        title=spec.title, bearing=brg, kind=b.type, radial_load=Fr, axial_load=Fa,
+        eccentricity=None,
+        speed=parse_speed(spec.operation.speed, f"{source}: [operation].speed"),
+        rotating_ring=spec.operation.rotating_ring, viscosity=None, pressure_viscosity=None,
+        roughness_race=None, roughness_ball=None, standard=spec.life.standard, material=None,
+        processing=None, hardness_hrc=None, lubrication_factor=None,
+        misalignment=mis, **iso)
 
 
 def load_case(path) -> BearingCase:

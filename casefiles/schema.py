@@ -20,6 +20,19 @@ The keys, their units and an example of each::
     diametral_clearance = "15 um"      # [length]; or free_contact_angle = "40 deg"
     nominal_contact_angle = "0 deg"    # [angle], rating angle (see rating_angle)
 
+    [bearing]                          # roller_bearing_keys(): a roller bearing
+    type = "cylindrical-roller"        # or "tapered-roller"
+    roller_diameter = "13 mm"          # [length]; tapered: at the middle of the roller
+    roller_length = "11.8 mm"          # effective length L_we [length]
+    n_rollers = 14                     # >= 3
+    pitch_diameter = "70.65 mm"        # [length]
+    contact_angle = "15 deg"           # tapered only: the cup angle [angle]
+    diametral_clearance = "45 um"      # [length]; default 0
+    profile = "iso"                    # or "straight", "lundberg", "johns-gohar", a table
+                                       # { x = ["0 mm", ...], drop = ["0 um", ...] } or a
+                                       # crown { flat_length = "8 mm", crown_radius = "2 m" }
+    n_slices = 31                      # odd, >= 5 (lamina model)
+
     [materials]                        # material_keys(): ball, ring
     ball = { E = "200 GPa", nu = 0.3, density = "7800 kg/m^3", name = "52100" }
 
@@ -55,7 +68,8 @@ from __future__ import annotations
 import functools
 from typing import Literal, Optional
 
-__all__ = ["strict", "subset", "bearing_keys", "material_keys", "materials_keys",
+__all__ = ["strict", "subset", "bearing_keys", "roller_bearing_keys", "ROLLER_TYPES",
+           "material_keys", "materials_keys",
            "fits_keys", "oil_keys", "operation_keys", "read_material", "read_materials",
            "read_operating_clearance", "DENSITY", "EXPANSION"]
 
@@ -108,6 +122,34 @@ def bearing_keys():
         nominal_contact_angle: Optional[str] = None
 
     return BearingKeys
+
+
+#: The ``[bearing].type`` values of a roller bearing.
+ROLLER_TYPES = ("cylindrical-roller", "tapered-roller")
+
+
+@functools.cache
+def roller_bearing_keys():
+    """Pydantic model of the ``[bearing]`` table of a roller bearing (``type`` one of
+    :data:`ROLLER_TYPES`).  ``profile`` is a name or a table (a profile table or a circular
+    crown), read by :func:`ballrace.casefiles.bearing.read_profile`."""
+    from typing import Union
+
+    from pydantic import Field
+
+    class RollerBearingKeys(strict()):
+        type: Literal["cylindrical-roller", "tapered-roller"]
+        name: str = ""
+        roller_diameter: str
+        roller_length: str
+        n_rollers: int = Field(ge=3)
+        pitch_diameter: str
+        contact_angle: Optional[str] = None
+        diametral_clearance: str = "0 m"
+        profile: Union[str, dict] = "iso"
+        n_slices: Optional[int] = None
+
+    return RollerBearingKeys
 
 
 @functools.cache

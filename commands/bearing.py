@@ -12,14 +12,16 @@ import json
 import logging
 import math
 from pathlib import Path
-from typing import Annotated
+from typing import Annotated, Optional
 
 import typer
 
 from ballrace.casefiles.analysis import FIT_MARK
+from ballrace.casefiles.schema import ROLLER_TYPES
 from ballrace.console import UNITS_HELP
 
-__all__ = ["register", "analyze", "sections", "ball_columns"]
+__all__ = ["register", "analyze", "sections", "ball_columns", "roller_sections",
+           "roller_columns", "plot_rollers"]
 
 log = logging.getLogger(__name__)
 
@@ -157,6 +159,165 @@ def _render(r: dict, units: str = "eng") -> None:
         con.print(literal(f"note: {n}"), style="dim")
 
 
+# ============================================================================ roller bearings
+def roller_sections(r: dict) -> list:
+    """The summary blocks of a roller-bearing analysis (``--json``'s dict), as
+    ``(title, rows)`` pairs for :func:`ballrace.console.print_sections`."""
+    b, rt, lf, d = r["bearing"], r["ratings"], r["life"], r["distribution"]
+    tapered = b["kind"] == "tapered-roller"
+    profile = b["profile"]
+    geo = [("type", b["kind"], None),
+           ("roller diameter D_we", b["roller_diameter"], "length"),
+           ("effective length L_we", b["roller_length"], "length"),
+           ("rollers Z", b["n_rollers"], None),
+           ("pitch diameter d_m", b["pitch_diameter"], "length")]
+    if tapered:
+        geo += [("cup angle alpha_o", b["contact_angle"], "angle"),
+                ("cone angle alpha_i", b["cone_angle"], "angle")]
+    geo += [("diametral clearance P_d", b["diametral_clearance"], "small"),
+            ("profile / slices", f"{profile} / {b['n_slices']}", None),
+            ("E'", b["E_prime"], "modulus"),
+            ("radial load Fr", b["radial_load"], "force"),
+            ("axial load Fa", b["axial_load"], "force")]
+    if b.get("misalignment"):
+        geo.append(("misalignment (held)", b["misalignment"], "angle"))
+    geo += [(f"speed ({b['rotating_ring']} ring)", b["speed_rpm"], "=rpm"),
+            (f"C_r ({rt['standard']})", rt["C"], "force"),
+            ("C_0r (ISO 76)", rt["C0"], "force")]
+    out = [(r["title"] or "roller bearing", geo)]
+    dist = [("largest roller load Q_max", d["max_roller_load"], "force"),
+            ("largest slice pressure p_max", d["max_pressure"], "stress"),
+            ("rollers edge-loaded", f"{sum(d['edge_loaded'])} of {len(d['edge_loaded'])}",
+             None),
+            ("radial deflection", math.hypot(d["displacements"][1], d["displacements"][2]),
+             "small")]
+    if tapered:
+        dist.append(("axial deflection", d["displacements"][0], "small"))
+    out.append(("Load distribution", dist))
+    rows = []
+    if tapered:
+        rows.append(("X / Y / e", f"{lf['X']:.3g} / {lf['Y']:.3g} / {lf['e']:.3g}", None))
+    rows += [("equivalent load P" + (" = X Fr + Y Fa" if tapered else " = Fr"), lf["P"],
+              "force"),
+             (f"L10 = (C/P)^(10/3) ({lf['standard']})", lf["L10"], "=1e6 rev"),
+             ("L10h", lf["L10h"], "=h"),
+             ("static equivalent load P0", lf["P0"], "force"),
+             ("static safety s0 = C0/P0 (ISO 76)", lf["s0"], None),
+             ("s0 = (4000 MPa / p_max)^2, slices", lf["static_safety"], None),
+             ("reference life L10r (ISO/TS 16281)", lf["L10r"], "=1e6 rev"),
+             ("reference life L10rh", lf["L10r_h"], "=h"),
+             ("equivalent reference load P_ref", lf["P_ref"], "force"),
+             ("fatigue load limit C_u", lf["C_u"], "force")]
+    if "kappa" in lf:
+        rows.append(("viscosity ratio kappa", lf["kappa"], None))
+    if lf.get("contamination") is not None:
+        rows.append(("contamination factor e_C", lf["contamination"], None))
+    rows.append((f"reliability {lf['reliability'] * 100:g} %: a1", lf["a1"], None))
+    if "a_ISO" in lf:
+        rows += [("a_ISO (e_C C_u / P)", lf["a_ISO"], None),
+                 ("modified rating life L_nm", lf["L_nm"], "=1e6 rev"),
+                 ("L_nmh", lf["L_nm_h"], "=h"),
+                 ("a_ISO (e_C C_u / P_ref)", lf["a_ISO_ref"], None),
+                 ("modified reference life L10mr", lf["L10mr"], "=1e6 rev"),
+                 ("L10mrh", lf["L10mr_h"], "=h")]
+    out.append(("Ratings and life", rows))
+    return out
+
+
+def roller_columns(r: dict, units: str = "eng") -> tuple[list, list]:
+    """Headers (each with its unit) and rows of the per-roller table in ``units``: azimuth,
+    cup load Q (tapered: the rib load, and the cone load where it differs from Q), the
+    largest slice pressure of either raceway, the roller's tilt against the raceways and
+    the edge flag (an end slice loaded)."""
+    from ballrace.console import convert as cv
+    from ballrace.console import fmt
+    from ballrace.console import unit_label as ul
+
+    d = r["distribution"]
+    tapered = r["bearing"]["kind"] == "tapered-roller"
+    F, A = ul("force", units), ul("angle", units)
+    # the cone load differs from the cup load only with a rib angle of its own
+    cone = tapered and any(abs(qi - qo) > 1e-12 * max(qo, 1.0)
+                           for qi, qo in zip(d["inner_load"], d["roller_load"]))
+    headers = ["roller", f"psi [{A}]", f"Q [{F}]"]
+    if cone:
+        headers.append(f"Q_cone [{F}]")
+    if tapered:
+        headers.append(f"Q_rib [{F}]")
+    headers += [f"p_max [{ul('stress', units)}]", f"tilt [{A}]", "edge"]
+
+    def g(x, kind, digits=5):
+        return fmt(cv(x, kind, units), digits)
+
+    rows = []
+    for j in range(len(d["roller_load"])):
+        row = [str(j + 1), g(d["azimuth"][j], "angle", 4), g(d["roller_load"][j], "force")]
+        if cone:
+            row.append(g(d["inner_load"][j], "force"))
+        if tapered:
+            row.append(g(d["rib_load"][j], "force"))
+        row += [g(d["max_slice_pressure"][j], "stress", 4),
+                g(d["roller_tilt"][j], "angle", 3),
+                "yes" if d["edge_loaded"][j] else "-"]
+        rows.append(row)
+    return headers, rows
+
+
+def _render_roller(r: dict, units: str = "eng") -> None:
+    from ballrace.console import literal, make_console, print_columns, print_sections
+
+    con = make_console()
+    secs = roller_sections(r)
+    print_sections(con, secs[:1], units)
+    headers, rows = roller_columns(r, units)
+    print_columns(con, f"Rollers: {r['distribution']['method']}", headers, rows)
+    print_sections(con, secs[1:], units)
+    for n in r["notes"]:
+        con.print(literal(f"note: {n}"), style="dim")
+
+
+def plot_rollers(r: dict, path, most: int = 3) -> None:
+    """Picture of a roller-bearing analysis: the slice pressure of every roller (rollers x
+    slices, a heat map; the larger of the two raceways) and, beside it, the pressure along
+    the ``most`` most loaded rollers; written to ``path`` (PNG, SVG, PDF)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+
+    d = r["distribution"]
+    p = np.maximum(np.array(d["slice_pressure_inner"]), np.array(d["slice_pressure_outer"]))
+    x = np.array(d["slice_position"]) * 1e3
+    Z, ns = p.shape
+    half = 0.5 * r["bearing"]["roller_length"] * 1e3
+    fig, (ax0, ax1) = plt.subplots(1, 2, figsize=(10, 4.2),
+                                   gridspec_kw={"width_ratios": [1.1, 1]})
+    im = ax0.imshow(p / 1e6, aspect="auto", origin="lower", cmap="viridis",
+                    extent=(-half, half, 0.5, Z + 0.5), interpolation="nearest")
+    ax0.set_xlabel("x along the roller [mm]")
+    ax0.set_ylabel("roller")
+    ax0.set_title("slice pressure [MPa] (larger raceway)", fontsize=9)
+    fig.colorbar(im, ax=ax0)
+    order = np.argsort(d["roller_load"])[::-1][:most]
+    for j in order:
+        if d["roller_load"][j] <= 0:
+            continue
+        ax1.plot(x, p[j] / 1e6, "o-", ms=3,
+                 label=f"roller {j + 1}, Q = {d['roller_load'][j]:.4g} N"
+                 + (" (edge)" if d["edge_loaded"][j] else ""))
+    ax1.set_xlim(-half, half)
+    ax1.set_xlabel("x along the roller [mm]")
+    ax1.set_ylabel("slice pressure [MPa]")
+    ax1.set_title(f"the {most} most loaded rollers (lamina model, {ns} slices)", fontsize=9)
+    ax1.legend(fontsize=8)
+    ax1.grid(alpha=0.3)
+    fig.suptitle(r["title"] or "roller bearing", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
 def jsonable(obj):
     """JSON-safe copy: NaN / inf become null."""
     if isinstance(obj, dict):
@@ -177,6 +338,9 @@ def register(app) -> None:
             help="Bearing case file (TOML; docs/casefiles.md).")],
         as_json: Annotated[bool, typer.Option("--json", help="Machine-readable JSON (SI units).")] = False,
         units: Annotated[str, typer.Option("--units", help=UNITS_HELP)] = "eng",
+        plot_file: Annotated[Optional[str], typer.Option(
+            "--plot", help="Roller bearings: write a picture of the slice pressures "
+                           "(PNG/SVG/PDF) to this file.")] = None,
     ):
         """Load distribution, Hertz contacts, ratings, life and EHL film of a bearing case."""
         from ballrace.casefiles.bearing import load_case
@@ -184,8 +348,26 @@ def register(app) -> None:
 
         result = run_case_file(case_file, units, "bearing", load_case, analyze,
                                lambda exc: _kind_hint(Path(case_file)) or str(exc))
+        roller = result["bearing"]["kind"] in ROLLER_TYPES
+        if plot_file:
+            from ballrace.cli import fail
+
+            if not roller:
+                fail("--plot draws the slice pressures of a roller bearing; a ball-bearing "
+                     "case has no picture (drop --plot)")
+            try:
+                plot_rollers(result, plot_file)
+            except ImportError:
+                fail("--plot needs matplotlib (pip install matplotlib)")
+            except (OSError, ValueError) as exc:
+                fail(f"--plot {plot_file}: {exc}")
+            if not as_json:
+                typer.echo(f"picture: {plot_file}")
         if as_json:
             typer.echo(json.dumps(jsonable(result), indent=2))
+            return
+        if roller:
+            _render_roller(result, units)
             return
         _render(result, units)
 
