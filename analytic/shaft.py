@@ -394,8 +394,10 @@ class Seat:
     @property
     def ball_bearing(self):
         """The single-row ball bearing of the rows (of each row for a pair); None for a
-        bearing whose rows are not ball rows."""
-        return getattr(self._mounts[0].row, "bearing", None)
+        bearing whose rows are not ball rows (a roller bearing's)."""
+        from .bearing import BallBearing
+        b = getattr(self._mounts[0].row, "bearing", None)
+        return b if isinstance(b, BallBearing) else None
 
     def rows(self):
         """[(direction, axial offset of the row from the seat [m], mounted offset [m])]."""

@@ -147,6 +147,7 @@ def test_roller_seat_loads_are_the_bearings_own_solution(solved):
     assert r.seat_stiffness[1] == pytest.approx(alone.stiffness, rel=1e-10, abs=1e-3)
     assert r.static_safety[1] == pytest.approx(alone.static_safety, rel=1e-12)
     assert seat.roller_loads.max() > 0 and (seat.roller_loads == 0).sum() >= 7
+    assert seats[1].ball_bearing is None and seats[0].ball_bearing is BALL
 
 
 def test_a_shaft_on_cylindrical_roller_bearings_only_is_refused():
