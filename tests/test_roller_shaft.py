@@ -261,3 +261,25 @@ def test_duty_cycle_with_a_roller_seat():
     hand = brentq(f, 1e-9 * seat_h.min(), seat_h.min(), xtol=1e-13 * seat_h.min(), rtol=1e-15)
     assert d.system_hours == pytest.approx(hand, rel=1e-12)
     assert d.seat_weibull_slopes == (10 / 9, 9 / 8)
+
+
+def test_bad_input_names_the_argument():
+    with pytest.raises(ValueError, match="preload"):
+        TaperedPair(TAP, "DB", preload=-1.0)
+    with pytest.raises(ValueError, match=r"end_play.*were micrometres given"):
+        TaperedPair(TAP, "DB", end_play=50.0)
+    with pytest.raises(ValueError, match="preload=1e\\+09 N is beyond the load-deflection"):
+        TaperedPair(TAP, "DB", preload=1e9)
+    with pytest.raises(TypeError, match="bearing must be a RollerBearing; got BallBearing"):
+        TaperedPair(BALL, "DB", preload=100.0)
+    with pytest.raises(TypeError, match="bearing must be a RollerBearing"):
+        RollerRow(BALL)
+    with pytest.raises(ValueError, match="clearance"):
+        RollerRow(CYL, clearance=5e-3)
+    with pytest.raises(ValueError, match="clearance is for a single bearing"):
+        S.Seat(0.0, TaperedPair(TAP, "DB", preload=100.0), clearance=1e-5)
+    two = RollerBearing(13e-3, 11.8e-3, 14, 70.65e-3, n_rows=2)
+    with pytest.raises(ValueError, match="n_rows=1"):
+        S.Seat(0.0, two)
+    with pytest.raises(ValueError, match="nominal_contact_angle is for ball bearings"):
+        RollerRow(CYL).rating_life(np.array([0, 1e-5, 0, 0, 0.0]), nominal_contact_angle=0.1)

@@ -128,11 +128,11 @@ class TaperedPair:
         if P == 0:
             return 0.0
         row = self.row
-        cap = row.approach_limit * math.sin(self.bearing.contact_angle)
+        cap = row.approach_limit / math.sin(self.bearing.contact_angle)
         if not self.axial_load(cap) >= P:
-            raise ValueError(f"preload={P!r} N is beyond the load-deflection range of the "
-                             f"bearing ({self.axial_load(cap):.4g} N at a slice approach of "
-                             f"{row.approach_limit:.3g} m)")
+            raise ValueError(f"preload={P:g} N is beyond the load-deflection range of the "
+                             f"bearing (at most {self.axial_load(cap):.4g} N, at a slice "
+                             f"approach of {row.approach_limit:.3g} m)")
         lo, hi = 0.0, cap
         x = hi
         for _ in range(200):                     # Newton on a monotone law, bracketed
