@@ -283,3 +283,25 @@ def test_bad_input_names_the_argument():
         S.Seat(0.0, two)
     with pytest.raises(ValueError, match="nominal_contact_angle is for ball bearings"):
         RollerRow(CYL).rating_life(np.array([0, 1e-5, 0, 0, 0.0]), nominal_contact_angle=0.1)
+
+
+def test_two_single_tapered_seats_in_o_arrangement():
+    # Seat.offset of a single tapered bearing is beyond its just-touching position (the
+    # seat contract's frame): both seats with an offset preload the O pair; at zero load
+    # the two reactions cancel and each row carries the same thrust, below that of a row
+    # pushed by the whole offset (the shaft's axial compliance takes some of it).
+    s = S.Shaft([(0.2, 0.04, 0.0)], STEEL)
+    off = 5e-6
+    seats = [S.Seat(0.03, TAP, direction=1, offset=off),
+             S.Seat(0.17, TAP, direction=-1, offset=off)]
+    r = S.solve(s, seats, [])
+    Fa0 = TaperedPair(TAP, "DB").axial_load(off)       # one row at the offset, rigid shaft
+    assert r.reactions[0, 0] == pytest.approx(-r.reactions[1, 0], rel=1e-9)
+    b0, b1 = r.bearings
+    assert b0.loads[0] == pytest.approx(b1.loads[0], rel=1e-9)
+    assert 0.5 * Fa0 < b0.loads[0] < Fa0
+    # a radial load: the induced thrust of the loaded seat, 1.26 F_r tan(a)-sized, is held
+    # by the other seat (the reactions' thrusts still cancel: no external thrust)
+    r = S.solve(s, seats, [S.PointLoad(0.05, Fy=-5000.0)])
+    assert r.reactions[0, 0] == pytest.approx(-r.reactions[1, 0], rel=1e-9)
+    assert r.reactions[:, 1].sum() == pytest.approx(-5000.0, rel=1e-9)
