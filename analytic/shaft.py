@@ -394,8 +394,10 @@ class Seat:
     @property
     def ball_bearing(self):
         """The single-row ball bearing of the rows (of each row for a pair); None for a
-        bearing whose rows are not ball rows."""
-        return getattr(self._mounts[0].row, "bearing", None)
+        bearing whose rows are not ball rows (a roller bearing's)."""
+        from .bearing import BallBearing
+        b = getattr(self._mounts[0].row, "bearing", None)
+        return b if isinstance(b, BallBearing) else None
 
     def rows(self):
         """[(direction, axial offset of the row from the seat [m], mounted offset [m])]."""
@@ -680,16 +682,17 @@ class ShaftResult:
 
     @property
     def static_safety(self) -> np.ndarray:
-        r"""Static safety of each seat's most loaded contact, s0 = (4200 MPa / p_max)^3 [-],
-        (n_seats,).
+        r"""Static safety of each seat's most loaded contact [-], (n_seats,): the smallest
+        ``static_safety`` of its rows' results.
 
         From the actual largest contact pressure at the seat -- radial and axial load,
-        moment, tilt, clearance and preload included -- by
-        :func:`~ballrace.analytic.ratings.static_safety_from_pressure` (ISO 76:2006 bases
-        C0 on 4200 MPa); inf for an unloaded seat.  :func:`solve` warns when it is below 1.
+        moment, tilt, clearance and preload included: s0 = (4200 MPa / p_max)^3 for ball
+        rows (:func:`~ballrace.analytic.ratings.static_safety_from_pressure`; ISO 76:2006
+        bases C0 on 4200 MPa), (4000 MPa / p_max)^2 of the most loaded slice for roller
+        rows; inf for an unloaded seat.  :func:`solve` warns when it is below 1.
         """
-        from .ratings import static_safety_from_pressure
-        return np.asarray(static_safety_from_pressure(self.max_pressure), float)
+        return np.array([min(float(np.min(ld.static_safety)) for ld in self._seat_rows(k))
+                         for k in range(len(self.seats))])
 
     @property
     def relative_residual(self) -> float:
@@ -1235,8 +1238,9 @@ def solve(shaft: Shaft, seats, loads=(), *, gravity=None, shaft_temperature_chan
         if d > lim:
             raise ValueError(
                 f"the loads are beyond the load-deflection range of the bearing at seat {k} "
-                f"(x = {seats[k].position:g} m): a ball approach reaches {d:.3g} m > "
-                f"{loaddist.MAX_APPROACH_RATIO:g} D = {lim:.3g} m")
+                f"(x = {seats[k].position:g} m): a rolling-element approach reaches {d:.3g} m "
+                f"> {lim:.3g} m (the row's approach_limit: {loaddist.MAX_APPROACH_RATIO:g} D "
+                "for balls)")
     rel, W = pb.seat_rel(X)
     rows = []
     for k, row, Gm, off, _ in pb.rows:
@@ -1607,16 +1611,21 @@ class ShaftLife:
         Per seat: the :class:`~ballrace.analytic.iso16281.ReferenceRatingLife` of each
         row (one or two).
     system : float
-        System life L_sys = (sum L_i^-e)^(-1/e) over all rows [1e6 rev].
+        System life over all rows [1e6 rev]: L_sys = (sum L_i^-e)^(-1/e) with a common
+        slope, else the L with sum (L/L_i)^e_i = 1 (:func:`system_life`).
     weibull_slope : float
-        e [-] (10/9 for ball bearings; Lundberg & Palmgren 1947).
+        e [-] common to all seats (10/9 for ball bearings, Lundberg & Palmgren 1947; 9/8
+        for roller bearings, Lundberg & Palmgren 1952); ``nan`` when the seats' slopes
+        differ (see ``seat_weibull_slopes``).
     kind : str
         ``"L10r"`` (ISO/TS 16281 basic reference rating life) or ``"Lnmr"`` (modified,
         a1 a_ISO L10r, ISO 281:2007 §9.3 via ISO/TS 16281 §5.3).
+    seat_weibull_slopes : tuple
+        e of each seat [-] (its rows combine with it; the system with all of them).
     catalog_lives : tuple
-        Per seat: the ISO 281:2007 catalogue life from the seat's reaction, (C/P)^3 with
-        P = X F_r + Y F_a (``life.equivalent_load_for``), or L_nm = a1 a_ISO (C/P)^3 with
-        ``modified`` [1e6 rev]; ``None`` for a duplex pair (its rows share the thrust in a
+        Per seat: the ISO 281:2007 catalogue life from the seat's reaction, (C/P)^p with
+        the bearing's equivalent load P = X F_r + Y F_a and life exponent p (3 ball, 10/3
+        roller bearings), or L_nm = a1 a_ISO (C/P)^p with ``modified`` [1e6 rev]; ``None`` for a duplex pair (its rows share the thrust in a
         way the catalogue formula does not know) or where the X/Y tables do not apply.
     """
 
@@ -1627,6 +1636,7 @@ class ShaftLife:
     weibull_slope: float
     kind: str
     catalog_lives: tuple = ()
+    seat_weibull_slopes: tuple = ()
 
     def hours(self, speed_rpm):
         """(seat lives (n_seats,), system life) in hours at ``speed_rpm`` [rev/min] [h]."""
@@ -1641,36 +1651,81 @@ def system_life(lives, weibull_slope=None):
     .. math:: L_{sys} = \Big(\sum_i L_i^{-e}\Big)^{-1/e}
 
     the weakest-link rule of Weibull-distributed lives with a common slope e
-    (Lundberg & Palmgren 1947; e = 10/9 for ball bearings).
+    (Lundberg & Palmgren 1947; e = 10/9 for ball bearings, 9/8 for roller bearings:
+    Lundberg & Palmgren 1952, and ISO 281:2007's reliability factor a1 uses the same two
+    slopes).
+
+    Bearings with different slopes (ball and roller seats on one shaft): each bearing
+    survives to L with probability S_i(L) = 0.9^((L/L_i)^e_i), the system with their
+    product, so the system's L10 is the L with
+
+    .. math:: \sum_i (L/L_i)^{e_i} = 1,
+
+    solved here for L (the sum grows monotonically with L; safeguarded Newton in ln L to
+    round-off).  For a common slope it is the formula above.
 
     Parameters
     ----------
     lives : array_like
         L10 of each bearing [1e6 rev or h], > 0 (``inf`` for an unloaded one).
-    weibull_slope : float, optional
-        e [-]; default :data:`ballrace.analytic.life.BALL_WEIBULL_SLOPE` = 10/9.
+    weibull_slope : float or array_like, optional
+        e [-], one for all or one per bearing; default
+        :data:`ballrace.analytic.life.BALL_WEIBULL_SLOPE` = 10/9.
 
     Examples
     --------
     >>> round(float(system_life([1000.0, 1000.0])), 1)     # 2^(-9/10) L
     535.9
+    >>> round(float(system_life([1000.0, 1000.0], [10 / 9, 9 / 8])), 1)   # a ball, a roller
+    538.0
     """
     from .life import BALL_WEIBULL_SLOPE
-    e = BALL_WEIBULL_SLOPE if weibull_slope is None else float(
-        check_positive(weibull_slope, "weibull_slope", "-"))
     L = check_positive(lives, "lives", "", allow_inf=True)
-    s = float(np.sum(L ** -e))
-    return np.inf if s == 0.0 else s ** (-1.0 / e)
+    e = np.asarray(BALL_WEIBULL_SLOPE if weibull_slope is None else
+                   check_positive(weibull_slope, "weibull_slope", "-"), float)
+    if e.ndim and e.shape != L.shape:
+        raise ValueError(f"weibull_slope must be one number or one per life {L.shape}; got "
+                         f"shape {e.shape}")
+    e = np.broadcast_to(e, L.shape)
+    fin = np.isfinite(L)
+    L, e = L[fin], e[fin]
+    if not L.size:
+        return np.inf
+    if np.all(e == e.flat[0]):
+        e0 = float(e.flat[0])
+        return float(np.sum(L ** -e0)) ** (-1.0 / e0)
+    lnL = np.log(L)
+    hi = float(lnL.min())                        # sum >= 1 there
+    lo = hi - math.log(L.size) / float(e.min()) - 1.0   # every term < 1/n there
+    t = hi
+    for _ in range(200):
+        x = np.exp(e * (t - lnL))
+        f, df = float(x.sum()) - 1.0, float((e * x).sum())
+        if f > 0:
+            hi = t
+        else:
+            lo = t
+        tn = t - f / df
+        if not lo < tn < hi:
+            tn = 0.5 * (lo + hi)
+        if abs(tn - t) <= 4e-16 * max(abs(t), 1.0) or hi - lo <= 4e-16 * max(abs(t), 1.0):
+            t = tn
+            break
+        t = tn
+    return float(math.exp(t))
 
 
 def rating_lives(result: ShaftResult, *, rotating: str = "inner", dynamic_rating=None,
                  nominal_contact_angle=None, modified=None, weibull_slope=None) -> ShaftLife:
     r"""ISO/TS 16281 lives of the seats of a solved shaft and of the bearing system.
 
-    Each row's ball loads (the seat's :class:`LoadDistribution`) give the basic reference
-    rating life L10r (:func:`ballrace.analytic.iso16281.reference_rating_life`), or with
-    ``modified`` the modified reference rating life L_nmr = a1 a_ISO L10r; the rows of
-    all seats combine into the system life (:func:`system_life`).
+    Each row's element loads give the basic reference rating life L10r (a ball row's
+    ball loads: :func:`ballrace.analytic.iso16281.reference_rating_life`; a roller row's
+    slice loads: :func:`ballrace.analytic.roller.life.reference_rating_life`), or with
+    ``modified`` the modified reference rating life L_nmr = a1 a_ISO L10r; the rows of a
+    seat combine with its bearing's Weibull slope, and the rows of all seats into the
+    system life (:func:`system_life`; ball and roller seats with their own slopes, 10/9
+    and 9/8).
 
     Parameters
     ----------
@@ -1687,18 +1742,17 @@ def rating_lives(result: ShaftResult, *, rotating: str = "inner", dynamic_rating
         ``kappa``, ``contamination``, ``fatigue_limit`` [-, -, N] and optionally
         ``reliability`` and ``ep_additives`` for L_nmr (ISO 281:2007 §9.3).
     weibull_slope : float, optional
-        e of the system life [-] (default 10/9).
+        e of the system life [-], for every seat; default each seat bearing's own
+        (``weibull_slope`` of the bearing: 10/9 for ball bearings, 9/8 for roller
+        bearings; :func:`system_life` combines different slopes exactly).
 
     Returns
     -------
     ShaftLife
     """
-    from .life import BALL_WEIBULL_SLOPE
-
     check_instance(result, "result", ShaftResult)
     check_choice(rotating, "rotating", ("inner", "outer"))
-    e = BALL_WEIBULL_SLOPE if weibull_slope is None else float(
-        check_positive(weibull_slope, "weibull_slope", "-"))
+    es = _slopes(result.seats, weibull_slope)
     ns = len(result.seats)
     C = _per_seat(dynamic_rating, "dynamic_rating", ns)
     alpha = _per_seat(nominal_contact_angle, "nominal_contact_angle", ns)
@@ -1712,11 +1766,24 @@ def rating_lives(result: ShaftResult, *, rotating: str = "inner", dynamic_rating
         cat.append(_catalog_life(s, result.reactions[k], rr[0].C, alpha[k], modified))
         ratings.append(tuple(rr))
         rows.append(tuple(Ls))
-        seat.append(system_life(Ls, e))
+        seat.append(system_life(Ls, es[k]))
     allrows = [x for r in rows for x in r]
+    slopes = [es[k] for k, r in enumerate(rows) for _ in r]
+    common = es[0] if all(x == es[0] for x in es) else math.nan
     return ShaftLife(seat_lives=np.array(seat), row_lives=tuple(rows), ratings=tuple(ratings),
-                     system=float(system_life(allrows, e)), weibull_slope=e,
-                     kind="Lnmr" if modified else "L10r", catalog_lives=tuple(cat))
+                     system=float(system_life(allrows, slopes)), weibull_slope=common,
+                     kind="Lnmr" if modified else "L10r", catalog_lives=tuple(cat),
+                     seat_weibull_slopes=tuple(es))
+
+
+def _slopes(seats, weibull_slope) -> list:
+    """The Weibull slope e [-] of each seat: ``weibull_slope`` for all if given, else each
+    seat bearing's ``weibull_slope`` (10/9, that of ball bearings, where it has none)."""
+    from .life import BALL_WEIBULL_SLOPE
+
+    if weibull_slope is not None:
+        return [float(check_positive(weibull_slope, "weibull_slope", "-"))] * len(seats)
+    return [float(getattr(s.bearing, "weibull_slope", BALL_WEIBULL_SLOPE)) for s in seats]
 
 
 def life(result: ShaftResult, **kwargs) -> ShaftLife:
@@ -1775,7 +1842,8 @@ class DutyCycleLife:
     seat_hours : ndarray, shape (n_seats,)
         Palmgren–Miner life of each seat [h].
     system_hours : float
-        System life from the seats' duty-cycle lives, (sum L_k^-e)^(-1/e) [h].
+        System life from the seats' duty-cycle lives, (sum L_k^-e)^(-1/e) [h] (with
+        different slopes: :func:`system_life`).
     case_hours : ndarray, shape (n_cases, n_seats)
         Life of each seat under each case alone [h].
     fractions : ndarray, shape (n_cases,)
@@ -1783,7 +1851,9 @@ class DutyCycleLife:
     results : tuple of ShaftResult
         The solved cases.
     weibull_slope : float
-        e [-].
+        e [-] common to all seats; ``nan`` when they differ (ball and roller seats).
+    seat_weibull_slopes : tuple
+        e of each seat [-] (its rows combine with it).
     """
 
     seat_hours: np.ndarray
@@ -1792,6 +1862,7 @@ class DutyCycleLife:
     fractions: np.ndarray
     results: tuple
     weibull_slope: float
+    seat_weibull_slopes: tuple = ()
 
 
 def duty_cycle(shaft: Shaft, seats, cases, *, rotating: str = "inner", dynamic_rating=None,
@@ -1828,11 +1899,8 @@ def duty_cycle(shaft: Shaft, seats, cases, *, rotating: str = "inner", dynamic_r
     cases = list(_sequence(cases, "cases", "(loads, fraction, speed_rpm)"))
     if not cases:
         raise ValueError("cases must hold at least one (loads, fraction, speed_rpm)")
-    from .life import BALL_WEIBULL_SLOPE
-
     check_choice(rotating, "rotating", ("inner", "outer"))
-    e = BALL_WEIBULL_SLOPE if weibull_slope is None else float(
-        check_positive(weibull_slope, "weibull_slope", "-"))
+    es = _slopes(_sequence(seats, "seats", "Seat"), weibull_slope)
     res, speeds, fr = [], [], []
     prev = None
     for i, c in enumerate(cases):
@@ -1863,14 +1931,17 @@ def duty_cycle(shaft: Shaft, seats, cases, *, rotating: str = "inner", dynamic_r
                              nominal_contact_angle=A[k])
         L = np.asarray(rr.modified(**modified) if modified else rr.L10r, float)
         with np.errstate(divide="ignore"):
-            seat_L[:, k] += np.where(np.isinf(L), 0.0, L ** -e)
+            seat_L[:, k] += np.where(np.isinf(L), 0.0, L ** -es[k])
+    e = np.array(es)
     with np.errstate(divide="ignore"):
         Lk = np.where(seat_L > 0, seat_L ** (-1.0 / e), np.inf)      # per case and seat
     H = Lk * 1e6 / (60.0 * np.array(speeds)[:, None])
     t = np.array(fr)
     seat_h = np.array([miner(H[:, k], t) for k in range(H.shape[1])])
-    return DutyCycleLife(seat_hours=seat_h, system_hours=float(system_life(seat_h, e)),
-                         case_hours=H, fractions=t, results=tuple(res), weibull_slope=e)
+    common = es[0] if all(x == es[0] for x in es) else math.nan
+    return DutyCycleLife(seat_hours=seat_h, system_hours=float(system_life(seat_h, es)),
+                         case_hours=H, fractions=t, results=tuple(res), weibull_slope=common,
+                         seat_weibull_slopes=tuple(es))
 
 
 # =========================================================================== rotordynamics

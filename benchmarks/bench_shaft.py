@@ -13,6 +13,11 @@ gear mesh at x = 90 mm (F_t = 5 kN, d = 120 mm, 20 deg, 15 deg helix).  Goal: on
 solve <= 20 ms.  The peer measured in the same run is one general 5-DOF
 ``loaddist.solve`` of the same bearing at the larger reaction, so the ratio
 shaft solve / single-bearing solve is machine-independent.
+
+Roller seat: the same shaft with the floating seat a cylindrical roller bearing (NU 207
+size: D_we = 13 mm, L_we = 11.8 mm, Z = 14, d_m = 70.65 mm, P_d = 20 um, ISO profile,
+31 slices), 40 elements; goal <= 20 ms, reported as a ratio to the all-ball shaft
+measured in the same run.
 """
 from __future__ import annotations
 
@@ -31,6 +36,24 @@ def case():
     seats = [S.Seat(0.03, brg), S.Seat(0.23, brg, floating=True)]
     loads = [S.gear_mesh(0.09, 5000.0, 0.12, helix_angle=np.radians(15))]
     return brg, s, seats, loads
+
+
+def roller_case():
+    """The case above with a cylindrical roller bearing at the floating seat."""
+    from ballrace.analytic.roller import RollerBearing
+
+    brg, s, seats, loads = case()
+    cyl = RollerBearing(13e-3, 11.8e-3, 14, 70.65e-3, diametral_clearance=20e-6)
+    return cyl, s, [seats[0], S.Seat(0.23, cyl, floating=True)], loads
+
+
+def _best(fn, n=20):
+    ts = []
+    for _ in range(n):
+        t0 = time.perf_counter()
+        fn()
+        ts.append(time.perf_counter() - t0)
+    return min(ts)
 
 
 def duty(n, seed=0):
@@ -71,6 +94,25 @@ def test_shaft_two_seats_40_elements(benchmark):
     assert np.abs(r.equilibrium_residual()).max() < 1e-8 * 5000
 
 
+def test_shaft_ball_and_cylindrical_roller_40_elements(benchmark):
+    """A ball and a cylindrical roller seat; the ratio to the all-ball shaft in this run."""
+    _, s, seats, loads = case()
+    _, sr, rseats, rloads = roller_case()
+
+    def cold(s, seats, loads):
+        S._PROBLEMS.clear()
+        return S.solve(s, seats, loads)
+
+    cold(s, seats, loads)
+    cold(sr, rseats, rloads)
+    t_ball = _best(lambda: cold(s, seats, loads))
+    r = benchmark(cold, sr, rseats, rloads)
+    benchmark.extra_info["iterations"] = r.iterations
+    benchmark.extra_info["ratio_to_all_ball_shaft"] = benchmark.stats.stats.min / t_ball
+    assert np.abs(r.equilibrium_residual()).max() < 1e-8 * 5000
+    assert r.reactions[1, 0] == 0.0
+
+
 if __name__ == "__main__":
     brg, s, seats, loads = case()
     t0 = time.perf_counter()
@@ -104,3 +146,18 @@ if __name__ == "__main__":
                      f"{min(tp) * 1e3:.2f} ms (ratio {min(ts) / min(tp):.1f}); with the "
                      f"mesh and condensation reused (same load positions): best "
                      f"{min(tw) * 1e3:.2f} ms\n")
+    _, sr, rseats, rloads = roller_case()
+    rr = S.solve(sr, rseats, rloads)
+
+    def cold_roller():
+        S._PROBLEMS.clear()
+        return S.solve(sr, rseats, rloads)
+
+    def cold_ball():
+        S._PROBLEMS.clear()
+        return S.solve(s, seats, loads)
+
+    t_r, t_b = _best(cold_roller, 50), _best(cold_ball, 50)
+    sys.stdout.write(f"ball + cylindrical roller shaft ({rr.nodes.size - 1} elements, "
+                     f"{rr.iterations} Newton iterations): best {t_r * 1e3:.2f} ms; all-ball "
+                     f"shaft best {t_b * 1e3:.2f} ms (ratio {t_r / t_b:.2f})\n")

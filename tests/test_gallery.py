@@ -357,3 +357,46 @@ def test_roller_edge_pressure_beside_the_lamina():
     cr = k["crowned (6 mm flat, R = 0.3 m)"]
     assert cr["end_over_lamina"] == 0.0
     assert cr["peak_121"] == pytest.approx(cr["peak_31"], rel=0.01)
+
+
+def test_roller_gearbox_shaft():
+    # Statics of the shaft as for plot_15 (independent of the solver; 1e-9): the seats
+    # carry the gear's forces and its moment about seat A with the seat moments; the
+    # locating ball seat takes F_t tan(15 deg), the cylindrical roller seat no thrust.  The
+    # roller seat's radial reaction rebuilt from its slice loads (contact angle 0:
+    # F_y = sum q_jk cos psi_j, F_z = sum q_jk sin psi_j, re-derived here; 1e-9).
+    k = run(checks("plot_22_roller_gearbox_shaft.py"))
+    R, F = np.asarray(k["reactions"]), np.asarray(k["gear"])
+    assert R[:, :3].sum(0) == pytest.approx(F[:3], abs=1e-9 * 5000)
+    xa, xb = k["x_seats"]
+    lhs = (k["x_gear"] - xa) * F[1] + F[4]
+    rhs = (xb - xa) * R[1, 1] + R[0, 4] + R[1, 4]
+    assert lhs == pytest.approx(rhs, abs=1e-9 * 5000)
+    assert R[0, 0] == pytest.approx(5000 * np.tan(np.radians(15)), rel=1e-9)
+    assert R[1, 0] == 0.0
+    q, psi = np.asarray(k["slice_loads"]), np.asarray(k["azimuths"])
+    Q = q.sum(-1)
+    assert Q == pytest.approx(k["roller_loads"], rel=1e-12, abs=1e-9)
+    assert (Q * np.cos(psi)).sum() == pytest.approx(R[1, 1], rel=1e-9)
+    assert (Q * np.sin(psi)).sum() == pytest.approx(R[1, 2], rel=1e-9)
+    # the system life (ball e = 10/9, roller e = 9/8) lies between the common-slope lives
+    # with either slope, below the weaker seat's (tests/test_roller_shaft.py re-derives it)
+    La, Lb = k["seat_lives"]
+    lo, hi = sorted((La ** -e + Lb ** -e) ** (-1 / e) for e in (10 / 9, 9 / 8))
+    assert lo <= k["system"] <= hi < min(La, Lb)
+
+
+def test_tapered_pair_preload():
+    # Straight rollers: every slice alike, F = Z n_s c (x sin a)^(10/9) sin a, so the
+    # pair's axial stiffness at zero external load is K = (20/9) P / x_0(P) (derived in the
+    # script's notes): the shaft solve meets it to 1e-9, and K grows as P^(1/10) exactly.
+    k = run(checks("plot_23_tapered_pair_preload.py"))
+    P, Ks = np.asarray(k["preloads"]), np.asarray(k["K_straight"])
+    assert Ks == pytest.approx(k["K_formula"], rel=1e-9)
+    assert Ks[1:] / Ks[:-1] == pytest.approx((P[1:] / P[:-1]) ** 0.1, rel=1e-9)
+    # the crowned (ISO) rollers are softer at every preload, more so at light preload
+    Ki = np.asarray(k["K_iso"])
+    assert np.all(Ki < Ks) and np.all(np.diff(Ki / Ks) > 0)
+    # preload stiffens: under every external thrust the preloaded pair deflects less
+    d = k["deflection"]
+    assert np.all(d[4000.0][1:] < d[1000.0][1:]) and np.all(d[1000.0][1:] < d[0.0][1:])

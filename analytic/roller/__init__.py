@@ -12,6 +12,8 @@
   rating life of roller bearings.
 * :mod:`~ballrace.analytic.roller.life` — ISO/TS 16281 reference rating life from slice
   loads.
+* :mod:`~ballrace.analytic.roller.pair` — :class:`TaperedPair`, two tapered bearings at
+  one shaft seat with preload or end play.
 """
 from . import profile
 from .profile import (ISO, Crowned, JohnsGohar, Lundberg, Profile, ProfileContext, Straight,
@@ -22,9 +24,12 @@ from . import bearing, lamina, loaddist
 from .bearing import RollerBearing
 from .loaddist import RollerLoadDistribution
 from . import life, ratings
+from . import pair
+from .loaddist import RollerRow
+from .pair import TaperedPair
 
 __all__ = ["profile", "Profile", "ProfileContext", "Straight", "ISO", "Crowned", "Lundberg",
            "JohnsGohar", "Table", "as_profile",
            "contact", "LineContactResult", "line_contact", "RollerStress", "subsurface_stress",
            "bearing", "lamina", "loaddist", "RollerBearing", "RollerLoadDistribution",
-           "ratings", "life"]
+           "ratings", "life", "pair", "RollerRow", "TaperedPair"]

@@ -498,3 +498,75 @@ class RollerBearing:
         from .loaddist import solve
         return solve(self, Fa=Fa, Fy=Fy, Fz=Fz, My=My, Mz=Mz, **kwargs)
 
+
+    # ------------------------------------------------------------------ shaft seat
+    # The seat contract (ballrace.analytic.contract.SeatBearing): one roller row
+    # (loaddist.RollerRow).  Plain class attributes, not dataclass fields.
+    accepts_clearance = True
+    life_exponent = 10.0 / 3.0          # ISO 281:2007, roller bearings
+    #: Weibull slope e of roller bearings for the system life (Lundberg & Palmgren 1952;
+    #: ISO 281:2007, the life adjustment factor for reliability of roller bearings).
+    weibull_slope = 9.0 / 8.0
+
+    @property
+    def carries_axial(self) -> bool:
+        """False for a cylindrical bearing (its flanges are not modelled: a seat with it
+        does not locate the shaft), True for a tapered one."""
+        return self.tapered
+
+    @property
+    def seat_name(self) -> str:
+        """"cylindrical" or "tapered" (for tables)."""
+        return self.kind
+
+    def seat_rows(self, direction, offset, row_spacing, clearance):
+        """The bearing as a shaft seat: its one row (a
+        :class:`~ballrace.analytic.roller.loaddist.RollerRow`), centred at the seat; see
+        :meth:`ballrace.analytic.contract.SeatBearing.seat_rows` (direction [-], offset
+        [m] beyond the just-touching position, row_spacing [m], clearance [m] or None)."""
+        from ..contract import RowMount
+        from .loaddist import RollerRow
+
+        if self.n_rows != 1:
+            raise ValueError(f"bearing must be single-row (n_rows=1) to be a shaft seat; got "
+                             f"n_rows={self.n_rows}")
+        return (RowMount(RollerRow(self, clearance), direction, 0.0, offset, True),)
+
+    def spring_axial_load(self, direction) -> float:
+        """No spring inside a single bearing: 0 [N] (direction [-] unused)."""
+        return 0.0
+
+    def equivalent_load(self, radial_load, axial_load, contact_angle=None):
+        """Dynamic equivalent radial load P_r [N] of the catalog life (ISO 281:2007):
+        cylindrical P_r = F_r (the seat carries no axial load), tapered X F_r + Y F_a
+        (:func:`~ballrace.analytic.roller.ratings.dynamic_equivalent_load`, single row).
+        radial_load, axial_load [N]; contact_angle [rad] must be None (the bearing's)."""
+        from . import ratings
+
+        if contact_angle is not None and float(contact_angle) != self.contact_angle:
+            raise ValueError("nominal_contact_angle is for ball bearings; a roller bearing "
+                             f"is rated at its own contact angle; got {contact_angle!r}")
+        if not self.tapered:
+            return float(radial_load)
+        return float(ratings.dynamic_equivalent_load(radial_load, axial_load,
+                                                     self.contact_angle, 1))
+
+    def seat_warnings(self, what, results, tilt) -> tuple:
+        """The static-safety message of the seat's rows (``results``: their
+        :class:`~ballrace.analytic.roller.loaddist.RollerLoadDistribution`), or None;
+        what names the seat, tilt [rad] (no tilt limit is checked: the slice loads show
+        the edge loading a tilt causes)."""
+        return (seat_safety_message(what, results),)
+
+
+def seat_safety_message(what: str, results) -> str | None:
+    """A message when the most loaded slice of any of ``results`` (roller load
+    distributions) has a static safety below 1 (ISO 76: 4000 MPa), else None; ``what``
+    names the seat."""
+    s0 = min((float(np.min(r.static_safety)) for r in results), default=math.inf)
+    if not s0 < 1.0:
+        return None
+    p = max(float(np.max(r.max_pressure)) for r in results)
+    return (f"{what}: static safety s0 = {s0:.3g} < 1: the most loaded slice of the lamina "
+            f"model reaches p_max = {p / 1e6:.0f} MPa, above the 4000 MPa on which ISO 76 "
+            "bases C_0r of roller bearings (s0 = (4000 MPa / p_max)^2)")

@@ -70,7 +70,7 @@ from . import lamina
 from .bearing import RollerBearing
 from .profile import Profile
 
-__all__ = ["RollerLoadDistribution", "ConvergenceError", "solve", "DOF",
+__all__ = ["RollerLoadDistribution", "RollerRow", "ConvergenceError", "solve", "DOF",
            "MAX_APPROACH_RATIO"]
 
 log = logging.getLogger(__name__)
@@ -849,3 +849,202 @@ def _checked(bearing, model, u, J, q, d, F_app, imposed, shape, Pd, iters, rtol)
         roller_loads=Q.reshape(shape + (Z,)), slice_loads=q3.reshape(shape + (Z, n_s)),
         approaches=d.reshape(shape + (Z, n_s)), raceway_tilts=tilt.reshape(shape + (Z,)),
         stiffness=J.reshape(shape + (5, 5)), clearance=float(Pd), iterations=int(iters))
+
+
+# =========================================================================== shaft seat
+class RollerRow:
+    r"""One roller row at a fixed clearance, as a shaft seat sees it: the
+    :class:`~ballrace.analytic.contract.Row` of a :class:`RollerBearing`.
+
+    The lamina model of :func:`solve` (module notes) evaluated at imposed inner-ring
+    displacements, every DOF imposed (no equilibrium iteration), with the slice directions
+    g_jk and the unloaded approaches built once: the fast path an outer Newton iteration
+    (:mod:`~ballrace.analytic.shaft`) calls many times.  Two rows of equal bearings at the
+    same clearance compare equal (their rows are evaluated together).
+
+    Frame: that of :func:`solve` shifted axially to the just-touching reference, as the
+    seat contract asks: the row's u = 0 is the bearing's dx = x_t (the first slice just
+    touching under a pure axial displacement; for a tapered bearing x_t = (P_d cos(alpha)/2
+    + 2 min P(s_k)) / sin(alpha), the :attr:`~RollerBearing.axial_clearance` for a profile
+    without drop at the middle), and x_t is :attr:`reference_axial_offset`, so that the
+    rollers sit centred at u_x = -x_t.  A cylindrical row has no axial law (the flanges
+    are not modelled): x_t = 0, and its forces and tangent have no axial row or column.
+
+    Parameters
+    ----------
+    bearing : RollerBearing
+        Single-row bearing.
+    clearance : float, optional
+        Diametral clearance P_d of the reference configuration [m]; default the bearing's.
+
+    Attributes
+    ----------
+    reference_axial_offset : float
+        x_t [m] (above; 0 for a cylindrical row).
+    approach_limit : float
+        :data:`MAX_APPROACH_RATIO` D_we [m].
+    step_length : float
+        D_we / 10 [m] (the approaches change character over a fraction of the roller).
+    moment_radius : float
+        d_m / 2 [m].
+
+    Examples
+    --------
+    >>> from ballrace.analytic.roller import RollerBearing
+    >>> b = RollerBearing(13e-3, 11.8e-3, 14, 70.65e-3, diametral_clearance=45e-6)
+    >>> r = b.solve(Fy=6940.0)
+    >>> F, K, dmax, energy = RollerRow(b).ring_forces(r.displacements[None])
+    >>> bool(np.allclose(F[0], r.loads, rtol=1e-12, atol=1e-9))
+    True
+    """
+
+    __slots__ = ("bearing", "clearance", "reference_axial_offset", "approach_limit",
+                 "step_length", "moment_radius", "_G", "_b", "_c", "_key")
+
+    def __init__(self, bearing: RollerBearing, clearance=None):
+        if not isinstance(bearing, RollerBearing):
+            raise TypeError(f"bearing must be a RollerBearing; got {type(bearing).__name__}")
+        if bearing.n_rows != 1:
+            raise ValueError(f"bearing must be single-row (n_rows=1) to be a seat row; got "
+                             f"n_rows={bearing.n_rows}")
+        Pd = bearing.diametral_clearance if clearance is None else float(
+            check_range(clearance, "clearance", -0.1 * bearing.roller_diameter,
+                        0.1 * bearing.roller_diameter, unit="m"))
+        G, b = _row_geometry(bearing, Pd)
+        sa = math.sin(bearing.contact_angle)
+        xt = float(np.min(-b)) / sa if sa > 0 else 0.0
+        self.bearing, self.clearance = bearing, clearance
+        self._G = G
+        self._b = b + sa * xt                    # approaches at the row's u = 0
+        self._b.setflags(write=False)
+        self._c = bearing.lamina_stiffness / bearing.n_slices
+        self.reference_axial_offset = xt
+        self.approach_limit = MAX_APPROACH_RATIO * bearing.roller_diameter
+        self.step_length = 0.1 * bearing.roller_diameter
+        self.moment_radius = 0.5 * bearing.pitch_diameter
+        self._key = (bearing, Pd)
+
+    def __eq__(self, other):
+        return type(other) is RollerRow and self._key == other._key
+
+    def __hash__(self):
+        return hash(self._key)
+
+    def __repr__(self):
+        return f"RollerRow({self.bearing!r}, clearance={self.clearance!r})"
+
+    @property
+    def diametral_clearance(self) -> float:
+        """P_d of the row [m]."""
+        return self._key[1]
+
+    def to_bearing_frame(self, u) -> np.ndarray:
+        """Displacements u (..., 5) of the row's frame in the frame of :func:`solve`:
+        dx + x_t [m, rad]."""
+        v = np.array(u, dtype=float)
+        v[..., 0] += self.reference_axial_offset
+        return v
+
+    def approaches(self, u) -> np.ndarray:
+        """Slice approaches delta_jk [m], shape u.shape[:-1] + (Z, n_s), at displacements
+        u (..., 5) [m, rad] (negative: a gap)."""
+        u = np.asarray(u, float)
+        b = self.bearing
+        d = u.reshape(-1, 5) @ self._G.T + self._b
+        return d.reshape(u.shape[:-1] + (b.n_rollers, b.n_slices))
+
+    def ring_forces(self, u):
+        r"""Roller-force resultant on the inner ring, its exact tangent, the largest slice
+        approach and the elastic energy at imposed displacements; the numbers of
+        ``solve(bearing, displacements=to_bearing_frame(u), clearance=...)`` (``.loads``,
+        ``.stiffness``).
+
+        Parameters
+        ----------
+        u : ndarray, shape (N, 5)
+            Inner-ring displacements (dx, dy, dz [m], theta_y, theta_z [rad]), row frame.
+
+        Returns
+        -------
+        F : ndarray, shape (N, 5)
+            sum q_jk g_jk (Fa, Fy, Fz [N], My, Mz [N m]).
+        K : ndarray, shape (N, 5, 5)
+            sum (10/9) (c_L/n_s) <delta_jk>^(1/9) g_jk g_jk^T [N/m, N/rad, N m/m, N m/rad].
+        delta_max : ndarray, shape (N,)
+            Largest slice approach [m].
+        energy : ndarray, shape (N,)
+            Slice potential sum (9/19) (c_L/n_s) <delta_jk>^(19/9) [J], whose gradient is F.
+        """
+        u = np.asarray(u, float).reshape(-1, 5)
+        G = self._G
+        d = u @ G.T + self._b                                   # (N, Z n_s)
+        dp = np.maximum(d, 0.0)
+        r = dp ** (1.0 / 9.0)
+        q = self._c * dp * r
+        F = q @ G
+        w = (_N * self._c) * r
+        K = np.einsum("nk,ki,kj->nij", w, G, G, optimize=True)
+        return F, K, d.max(1), (9.0 / 19.0) * np.einsum("nk,nk->n", q, dp)
+
+    def slice_loads(self, u) -> np.ndarray:
+        """Slice loads q_jk at the outer raceway [N], shape u.shape[:-1] + (Z, n_s), at
+        displacements u (..., 5) [m, rad]."""
+        dp = np.maximum(self.approaches(u), 0.0)
+        return self._c * dp ** _N
+
+    def element_loads(self, u) -> np.ndarray:
+        """Roller loads Q_j (outer raceway) [N], shape u.shape[:-1] + (Z,), at
+        displacements u (..., 5) [m, rad]."""
+        return self.slice_loads(u).sum(-1)
+
+    def result(self, u) -> RollerLoadDistribution:
+        """The checked :class:`RollerLoadDistribution` at imposed displacements u (5,)
+        [m, rad] of the row's frame (its ``displacements`` are in the frame of
+        :func:`solve`: :meth:`to_bearing_frame`)."""
+        return solve(self.bearing, displacements=self.to_bearing_frame(u),
+                     clearance=self.diametral_clearance)
+
+    def rating_life(self, u, *, dynamic_rating=None, rotating: str = "inner",
+                    nominal_contact_angle=None):
+        """ISO/TS 16281 reference rating life of the row at displacements u (..., 5)
+        [m, rad] (:func:`ballrace.analytic.roller.life.reference_rating_life` of its slice
+        loads, the cone's q_jk Q_i/Q_o at the inner raceway); dynamic_rating [N] (default
+        the bearing's ISO 281 C_r).  ``nominal_contact_angle`` must be None: a roller
+        bearing is rated at its own contact angle.  A row without load raises ValueError
+        (infinite life), as a ball row does."""
+        from types import SimpleNamespace
+
+        from . import life
+
+        if nominal_contact_angle is not None:
+            raise ValueError("nominal_contact_angle is for ball bearings; a roller bearing is "
+                             "rated at its own contact angle (give dynamic_rating [N] to use "
+                             f"another C); got {nominal_contact_angle!r}")
+        q = self.slice_loads(u)
+        res = SimpleNamespace(slice_loads=q, slice_loads_inner=q * self.bearing.inner_load_ratio)
+        return life.reference_rating_life(self.bearing, res, dynamic_rating=dynamic_rating,
+                                          rotating=rotating)
+
+
+@functools.lru_cache(maxsize=32)
+def _row_geometry(bearing: RollerBearing, clearance: float):
+    """(G (Z n_s, 5), b (Z n_s,)) of :class:`RollerRow`: the slice directions g_jk and the
+    approaches at u = 0 of the module notes (azimuth offset 0), read-only."""
+    a = bearing.contact_angle
+    sa, ca = math.sin(a), math.cos(a)
+    psi = bearing.azimuths(0.0)
+    cp, sp = np.cos(psi), np.sin(psi)
+    m = 0.5 * bearing.pitch_diameter * sa - bearing.slice_positions
+    Z, n_s = bearing.n_rollers, bearing.n_slices
+    G = np.empty((Z, n_s, 5))
+    G[..., 0] = sa
+    G[..., 1] = (ca * cp)[:, None]
+    G[..., 2] = (ca * sp)[:, None]
+    G[..., 3] = sp[:, None] * m[None, :]
+    G[..., 4] = -cp[:, None] * m[None, :]
+    G = np.ascontiguousarray(G.reshape(-1, 5))
+    b = np.ascontiguousarray(np.broadcast_to(-0.5 * clearance * ca - 2.0 * bearing.slice_drops,
+                                             (Z, n_s))).ravel()
+    G.setflags(write=False)
+    b.setflags(write=False)
+    return G, b
