@@ -117,8 +117,12 @@ class AxisymResult:
 
     Attributes
     ----------
-    name, mode, gap : what was run ("ball on ball" / "ball on plane", "two-body" /
-        "half-space", "hertz" / "exact").
+    name : str
+        What was run: "ball on ball" or "ball on plane".
+    mode : str
+        "two-body" or "half-space".
+    gap : str
+        "hertz" or "exact".
     load : normal load Q [N].
     n : elements per contact radius at the contact, h = a_Hertz / n [-].
     h : element size at the contact [m].

@@ -1,4 +1,4 @@
-"""Calculations for load ratings and life (:mod:`ballrace.analytic.ratings`, :mod:`~.life`).
+"""Calculations for load ratings and life (:mod:`ballrace.analytic.ratings`, :mod:`~ballrace.analytic.life`).
 
 Speeds come in as angular velocities [rad/s] (pint turns ``"2000 rpm"`` into 209.4 rad/s)
 and are converted to rev/min only where the catalog formulas are written that way.
