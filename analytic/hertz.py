@@ -89,26 +89,26 @@ log = logging.getLogger(__name__)
 
 METHODS = ("exact", "brewe-hamrock-1977", "hamrock-brewe-1983")
 
+#: The quantities whose errors are bounded, in the order of the module's table.
+_QUANTITIES = ("k", "ellipe", "ellipk", "a", "b", "approach", "p_max")
+
+
+def _bounds(*errors):
+    """{quantity: bound} of one row of the table, in the order of ``_QUANTITIES``."""
+    return dict(zip(_QUANTITIES, errors))
+
+
 #: Documented maximum |relative error| of each simplified method:
 #: ``APPROXIMATION_ERROR[method][alpha_max][quantity]`` over 1 <= alpha_r <= alpha_max
 #: (the module table rounded up to 0.1 %).  Asserted in ``tests/test_hertz.py``.
 APPROXIMATION_ERROR = {
-    "brewe-hamrock-1977": {
-        10.0: {"k": 0.034, "ellipe": 0.017, "ellipk": 0.028, "a": 0.029, "b": 0.006,
-               "approach": 0.055, "p_max": 0.022},
-        100.0: {"k": 0.064, "ellipe": 0.017, "ellipk": 0.028, "a": 0.043, "b": 0.021,
-                "approach": 0.055, "p_max": 0.022},
-        1e4: {"k": 0.493, "ellipe": 0.017, "ellipk": 0.029, "a": 0.307, "b": 0.125,
-              "approach": 0.213, "p_max": 0.126},
-    },
-    "hamrock-brewe-1983": {
-        10.0: {"k": 0.039, "ellipe": 0.010, "ellipk": 0.010, "a": 0.027, "b": 0.012,
-               "approach": 0.027, "p_max": 0.017},
-        100.0: {"k": 0.039, "ellipe": 0.010, "ellipk": 0.022, "a": 0.027, "b": 0.012,
-                "approach": 0.042, "p_max": 0.017},
-        1e4: {"k": 0.452, "ellipe": 0.010, "ellipk": 0.022, "a": 0.283, "b": 0.117,
-              "approach": 0.226, "p_max": 0.117},
-    },
+    #                                    k      E(e)   K(e)   a      b      delta  p_max
+    "brewe-hamrock-1977": {10.0: _bounds(0.034, 0.017, 0.028, 0.029, 0.006, 0.055, 0.022),
+                           100.0: _bounds(0.064, 0.017, 0.028, 0.043, 0.021, 0.055, 0.022),
+                           1e4: _bounds(0.493, 0.017, 0.029, 0.307, 0.125, 0.213, 0.126)},
+    "hamrock-brewe-1983": {10.0: _bounds(0.039, 0.010, 0.010, 0.027, 0.012, 0.027, 0.017),
+                           100.0: _bounds(0.039, 0.010, 0.022, 0.027, 0.012, 0.042, 0.017),
+                           1e4: _bounds(0.452, 0.010, 0.022, 0.283, 0.117, 0.226, 0.117)},
 }
 
 _ALPHA_MAX = 1e8          # largest radius ratio handled (k ~ 1.2e5)
@@ -1375,7 +1375,7 @@ _scalar = scalar_result          # the module's own short name
 
 
 def _error_table() -> str:  # pragma: no cover - documentation generator
-    qs = ("k", "ellipe", "ellipk", "a", "b", "approach", "p_max")
+    qs = _QUANTITIES
     out = ["| method | alpha_max | " + " | ".join(qs) + " |", "|---" * (len(qs) + 2) + "|"]
     for meth in METHODS[1:]:
         for hi in (10.0, 100.0, 1e4):

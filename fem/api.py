@@ -1064,22 +1064,26 @@ def _solve_load(case, states, meshes, sz, I, C, level, mode, gap, approach, shar
 TRACTION_MAX = 10.0
 #: The pressure under the tangential traction: the FE's tent pressures or Hertz's.
 TRACTION_PRESSURES = ("fe", "hertz")
+
+
+def _traction_tolerances(value, surface, location, trailing, rms):
+    """One level's tolerances: the von Mises and the Tresca maxima alike (``value`` for
+    the maximum, ``surface`` for the surface maximum, ``location`` for its x and depth),
+    ``trailing`` for the trailing-edge tension, ``rms`` for the section RMS."""
+    out = {}
+    for stress in ("von_mises", "tresca"):
+        out.update({f"traction_{stress}": value, f"traction_{stress}_surface": surface,
+                    f"traction_{stress}_x": location, f"traction_{stress}_depth": location})
+    return {**out, "traction_sxx_trailing": trailing, "traction_section_rms": rms,
+            "traction_resultant": 1e-3}
+
+
 #: Tolerances of the traction rows per level (relative for values, in minor semi-axes
 #: for the locations, in p0 for the section RMS and the trailing-edge tension); measured
 #: and derived in docs/fem.md "Surface traction".
 TRACTION_TOLERANCES = {
-    "standard": {"traction_von_mises": 0.02, "traction_von_mises_surface": 0.04,
-                 "traction_von_mises_x": 0.15, "traction_von_mises_depth": 0.15,
-                 "traction_tresca": 0.02, "traction_tresca_surface": 0.04,
-                 "traction_tresca_x": 0.15, "traction_tresca_depth": 0.15,
-                 "traction_sxx_trailing": 0.10, "traction_section_rms": 0.008,
-                 "traction_resultant": 1e-3},
-    "quick": {"traction_von_mises": 0.08, "traction_von_mises_surface": 0.12,
-              "traction_von_mises_x": 0.3, "traction_von_mises_depth": 0.3,
-              "traction_tresca": 0.08, "traction_tresca_surface": 0.12,
-              "traction_tresca_x": 0.3, "traction_tresca_depth": 0.3,
-              "traction_sxx_trailing": 0.15, "traction_section_rms": 0.02,
-              "traction_resultant": 1e-3},
+    "standard": _traction_tolerances(0.02, 0.04, 0.15, 0.10, 0.008),
+    "quick": _traction_tolerances(0.08, 0.12, 0.3, 0.15, 0.02),
 }
 TRACTION_TOLERANCES["fine"] = TRACTION_TOLERANCES["standard"]
 #: Sign of each stress component (sxx, syy, szz, sxy, sxz, syz) under x -> -x: the normal

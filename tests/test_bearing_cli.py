@@ -10,6 +10,7 @@ from typer.testing import CliRunner
 from ballrace.analytic import life, ratings
 from ballrace.casefiles import bearing as casefile
 from ballrace.cli import app
+from caseref import BEARING_209
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 runner = CliRunner()
@@ -74,14 +75,7 @@ def _write(tmp_path, text):
     return p
 
 
-GOOD = """
-[bearing]
-ball_diameter = "12.7 mm"
-n_balls = 9
-pitch_diameter = "65 mm"
-f_inner = 0.52
-f_outer = 0.52
-diametral_clearance = "0 mm"
+GOOD = BEARING_209 + """diametral_clearance = "0 mm"
 [loads]
 radial = "5 kN"
 [operation]

@@ -26,26 +26,33 @@ def test_solid_shaft_same_material():
     assert oc.operating == pytest.approx(20e-6 - 15e-6 * d / F, rel=1e-12)
 
 
-def test_hollow_shaft_same_material():
-    """Same material, shaft bore d0: Delta = I (d/F) (1 - (d0/d)^2) / (1 - (d0/F)^2)
-    (derived from the two Lamé compliances; the hollow-shaft rule of bearing catalogues)."""
-    d0 = 0.015
-    oc = life.operating_clearance(BRG, bore=d, outside_diameter=Do, shaft_interference=15e-6,
-                                  shaft_bore=d0)
-    expected = 15e-6 * (d / F) * (1 - (d0 / d) ** 2) / (1 - (d0 / F) ** 2)
-    assert oc.fit_inner == pytest.approx(expected, rel=1e-12)
+def _same_material_fit(interference, fit, raceway, other):
+    """Raceway diameter change of a ring of one material with its shaft or housing (Lamé):
+    I (F/d) (d^2 - d0^2) / (F^2 - d0^2) for the fit diameter d, the raceway diameter F and
+    the mate's other boundary d0 (a hollow shaft's bore, a finite housing's outside
+    diameter) [m]; a solid shaft (d0 = 0) gives I d / F, an infinite housing I F / d."""
+    return interference * (raceway / fit) * (fit**2 - other**2) / (raceway**2 - other**2)
 
 
-def test_housing_same_material():
-    """Infinite housing: Delta_e = I E / D; finite housing of outside diameter Dh:
-    Delta_e = I (E/D) (1 - (D/Dh)^2) / (1 - (E/Dh)^2)."""
+def test_infinite_housing_same_material():
+    """Infinite housing: Delta_e = I E / D."""
     oc = life.operating_clearance(BRG, bore=d, outside_diameter=Do, housing_interference=10e-6)
     assert oc.fit_outer == pytest.approx(10e-6 * E / Do, rel=1e-12)
-    Dh = 0.1
-    oc = life.operating_clearance(BRG, bore=d, outside_diameter=Do, housing_interference=10e-6,
-                                  housing_diameter=Dh)
-    expected = 10e-6 * (E / Do) * (1 - (Do / Dh) ** 2) / (1 - (E / Dh) ** 2)
-    assert oc.fit_outer == pytest.approx(expected, rel=1e-12)
+
+
+@pytest.mark.parametrize("attribute, fits, fit, raceway, other", [
+    # shaft bore d0: Delta = I (d/F) (1 - (d0/d)^2) / (1 - (d0/F)^2)
+    ("fit_inner", {"shaft_interference": 15e-6, "shaft_bore": 0.015}, d, F, 0.015),
+    # housing of outside diameter Dh: Delta_e = I (E/D) (1 - (D/Dh)^2) / (1 - (E/Dh)^2)
+    ("fit_outer", {"housing_interference": 10e-6, "housing_diameter": 0.1}, Do, E, 0.1),
+])
+def test_hollow_shaft_and_finite_housing_same_material(attribute, fits, fit, raceway, other):
+    """Same material, a hollow shaft or a finite housing: the two-ring Lamé closed form
+    (derived from the two Lamé compliances; the hollow-shaft rule of bearing catalogues)."""
+    oc = life.operating_clearance(BRG, bore=d, outside_diameter=Do, **fits)
+    interference = fits.get("shaft_interference", fits.get("housing_interference"))
+    expected = _same_material_fit(interference, fit, raceway, other)
+    assert getattr(oc, attribute) == pytest.approx(expected, rel=1e-12)
 
 
 def test_softer_shaft_takes_more_of_the_interference():

@@ -19,6 +19,7 @@ from typer.testing import CliRunner
 
 from ballrace.cli import app
 from ballrace.units import parse_quantity
+from caseref import BEARING_209
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = ROOT / "examples"
@@ -81,13 +82,7 @@ title = "209 inner race"
 [case]
 contact = "inner"
 load = "2000 N"
-[bearing]
-ball_diameter = "12.7 mm"
-n_balls = 9
-pitch_diameter = "65 mm"
-f_inner = 0.52
-f_outer = 0.52
-[fem]
+""" + BEARING_209 + """[fem]
 level = "standard"
 """
 

@@ -25,19 +25,17 @@ pytest.importorskip("dask.distributed")
 
 from ballrace.validation.runner import run_cases  # noqa: E402
 from ballrace.validation.schema import load_cases, parse_cases  # noqa: E402
+from caseref import case_header  # noqa: E402
 
 BALLRACE = str(Path(sys.executable).with_name("ballrace"))
 
 # A sweep long enough to kill a worker in the middle of it: 40 speeds, each solving the
 # Jones high-speed model twice (about 0.2 s per point on one core).  Same inputs and
 # expectations as the packaged case sweep-highspeed-218-contact-angles-vs-speed.
-SLOW_SWEEP = textwrap.dedent('''
-    [[case]]
-    id = "fault-sweep-highspeed-218"
-    title = "218 bearing under 17,800 N, 0-14,000 rpm, 40 speeds"
-    kind = "independent derivation"
-    calculation = "highspeed.angle_trend"
-    source = { author = "Jones", year = 1960, reference = "J. Basic Eng. 82, 309-320" }
+SLOW_SWEEP = "\n" + case_header(
+    "fault-sweep-highspeed-218", "218 bearing under 17,800 N, 0-14,000 rpm, 40 speeds",
+    "highspeed.angle_trend", author="Jones", year=1960,
+    reference="J. Basic Eng. 82, 309-320") + textwrap.dedent('''\
     [case.inputs]
     ball_diameter = "22.225 mm"
     n_balls = 16

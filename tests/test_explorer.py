@@ -16,7 +16,6 @@ import json
 import math
 import os
 import re
-import shutil
 import signal
 import subprocess
 import sys
@@ -37,6 +36,7 @@ from ballrace.teach import commands as tcmd
 from ballrace.teach import compute as tc
 from ballrace.teach import page as tpage
 from ballrace.teach import server as tsrv
+from teachweb import chromium, live_server, post
 
 STEEL = Material(E=200e9, nu=0.3)   # E' = 2/[2(1 - nu^2)/E] = E/(1 - nu^2) for two steel bodies
 
@@ -203,19 +203,8 @@ def test_bad_input_one_line(change, field, text):
 # ------------------------------------------------------------------ the server
 @pytest.fixture(scope="module")
 def server():
-    srv = tsrv.make_server(0)
-    th = threading.Thread(target=srv.serve_forever, kwargs={"poll_interval": 0.05}, daemon=True)
-    th.start()
-    yield f"http://127.0.0.1:{srv.server_address[1]}"
-    srv.shutdown()
-    srv.server_close()
-
-
-def _post(url, body):
-    req = urllib.request.Request(url + "/api/compute", data=json.dumps(body).encode(),
-                                 headers={"Content-Type": "application/json"}, method="POST")
-    with urllib.request.urlopen(req, timeout=60) as f:
-        return json.loads(f.read())
+    with live_server() as url:
+        yield url
 
 
 def test_server_page_is_self_contained(server):
@@ -229,7 +218,7 @@ def test_server_page_is_self_contained(server):
 
 def test_server_survives_bad_input(server):
     for change, field, _ in BAD:
-        r = _post(server, {**tc.DEFAULTS, **change})
+        _, r = post(server, {**tc.DEFAULTS, **change})
         assert r["ok"] is False and r["field"] == field
     for body in (b"not json", b"[1, 2]"):          # a malformed request: 400, one line
         req = urllib.request.Request(server + "/api/compute", data=body, method="POST")
@@ -238,7 +227,7 @@ def test_server_survives_bad_input(server):
         r = json.loads(err.value.read())
         assert err.value.code == 400
         assert r["ok"] is False and "\n" not in r["error"]
-    r = _post(server, {**tc.DEFAULTS, "load": "1 kN"})
+    _, r = post(server, {**tc.DEFAULTS, "load": "1 kN"})
     assert r["ok"] is True and r["table"]["load"] == pytest.approx(1000.0)
 
 
@@ -385,14 +374,6 @@ def test_export_command_small(tmp_path, monkeypatch):
 
 
 # ------------------------------------------------------------------ in a real browser
-def _chromium():
-    for p in (os.environ.get("BALLRACE_CHROMIUM"), "/usr/bin/chromium", shutil.which("chromium"),
-              shutil.which("chromium-browser")):
-        if p and Path(p).exists():
-            return p
-    return None
-
-
 def _num(text: str) -> float:
     return float(text.strip())
 
@@ -406,7 +387,7 @@ def _digits(v: float) -> float:
 def browser_exe():
     """Playwright's sync API and a Chromium executable, or a skip (before any other work)."""
     sync_api = pytest.importorskip("playwright.sync_api", reason="pip install playwright")
-    exe = _chromium()
+    exe = chromium()
     if exe is None:
         pytest.skip("no chromium (apt-get install chromium; see .ci/browser)")
     return sync_api, exe

@@ -11,6 +11,7 @@ import ballrace
 from ballrace import fem
 from ballrace.analytic import hertz
 from ballrace.validation.schema import ON_DEMAND, load_cases, parse_cases
+from caseref import case_header
 
 CASE_FILE = "fem_hertz_limits.toml"
 
@@ -59,13 +60,7 @@ def test_case_file_loads_and_is_on_demand():
 def test_min_rise_reduction_along_the_last_axis():
     from ballrace.validation.runner import reduce_points
 
-    (case,) = parse_cases('''
-[[case]]
-id = "rise"
-title = "min_rise"
-kind = "independent derivation"
-calculation = "hertz.point_contact"
-source = {author = "x", year = 2026, reference = "synthetic"}
+    (case,) = parse_cases(case_header("rise", "min_rise", "hertz.point_contact") + '''\
 inputs = {rx1 = "5 mm", ry1 = "5 mm", E1 = "200 GPa", nu1 = 0.3}
 [case.sweep]
 rx2 = ["4 mm", "6 mm"]

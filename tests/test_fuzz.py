@@ -98,6 +98,14 @@ def collect(name):
     return deco
 
 
+def fuzz_test(name, n_default, weight=1.0):
+    """A property test drawing from ``st.data()`` with :func:`_settings` (``n_default``,
+    ``weight``), whose failures the long run records under ``name`` (:func:`collect`)."""
+    def deco(f):
+        return _settings(n_default, weight)(given(st.data())(collect(name)(f)))
+    return deco
+
+
 def _record(name, outcome, residual=0.0):
     s = STATS.setdefault(name, {"cases": 0, "ok": 0, "refused": 0, "convergence": 0,
                                 "failure": 0, "worst_residual": 0.0})
@@ -230,9 +238,7 @@ def run(name, brg, fn, light=False):
 
 
 # --------------------------------------------------------------------------- tests
-@_settings(40, 0.3)
-@given(st.data())
-@collect('solve')
+@fuzz_test('solve', 40, 0.3)
 def test_fuzz_solve(data):
     brg = data.draw(bearings())
     L = data.draw(load_vectors(brg))
@@ -242,9 +248,7 @@ def test_fuzz_solve(data):
     run("solve", brg, lambda: brg.solve(*L, moment_arm=arm), light)
 
 
-@_settings(30, 0.15)
-@given(st.data())
-@collect('radial/thrust/combined')
+@fuzz_test('radial/thrust/combined', 30, 0.15)
 def test_fuzz_radial_thrust_combined(data):
     brg = data.draw(bearings())
     m = nominal(brg)
@@ -257,9 +261,7 @@ def test_fuzz_radial_thrust_combined(data):
     run("combined", brg, lambda: brg.combined(Fr, Fa, azimuth_offset=off), light)
 
 
-@_settings(40, 0.15)
-@given(st.data())
-@collect('eccentric_thrust')
+@fuzz_test('eccentric_thrust', 40, 0.15)
 def test_fuzz_eccentric_thrust(data):
     brg = data.draw(bearings())
     Fa = abs(data.draw(magnitudes)) * nominal(brg)
@@ -271,9 +273,7 @@ def test_fuzz_eccentric_thrust(data):
         pytest.fail("eccentric_thrust accepted e >= d_e/2")
 
 
-@_settings(20, 0.01)
-@given(st.data())
-@collect('solve (vectorized)')
+@fuzz_test('solve (vectorized)', 20, 0.01)
 def test_fuzz_vectorized_equals_scalar(data):
     brg = data.draw(bearings())
     L1, L2 = data.draw(load_vectors(brg)), data.draw(load_vectors(brg))
@@ -290,9 +290,7 @@ def test_fuzz_vectorized_equals_scalar(data):
             assert np.allclose(both.ball_loads[k], q, rtol=1e-6, atol=1e-6 * max(q.max(), 1e-300))
 
 
-@_settings(40, 0.1)
-@given(st.data())
-@collect('duplex')
+@fuzz_test('duplex', 40, 0.1)
 def test_fuzz_duplex(data):
     brg = data.draw(bearings(clearance=False))
     m = nominal(brg)
@@ -330,9 +328,7 @@ def test_fuzz_duplex(data):
     _record("duplex", "ok", r.residual / scale)
 
 
-@_settings(12, 0.005)
-@given(st.data())
-@collect('highspeed')
+@fuzz_test('highspeed', 12, 0.005)
 def test_fuzz_highspeed(data):
     brg = data.draw(bearings())
     m = nominal(brg)
@@ -409,9 +405,7 @@ def catalogue_bearings(draw):
                                 free_contact_angle=np.radians(kind))
 
 
-@_settings(16, 0.01)
-@given(st.data())
-@collect('highspeed (catalogue)')
+@fuzz_test('highspeed (catalogue)', 16, 0.01)
 def test_fuzz_highspeed_catalogue(data):
     """The population of issue 21: catalogue bearings, loads 1e-3-0.5 C (axial, radial or
     combined), d_m n 5e4-1.5e6 mm rpm, all three race controls.  Every result must pass

@@ -256,30 +256,32 @@ def test_line_contact_accepts_the_best_iterate_at_round_off(monkeypatch):
     assert c.slice_loads.sum() == pytest.approx(5000.0, rel=1e-14)
 
 
-def test_compiled_kernel_constants_are_the_policys():
+_N = r"([0-9.]+(?:e-?[0-9]+)?)"
+#: Where each constant of the policy stands in the compiled Newton (analytic/_ldkernel.c).
+KERNEL_CONSTANTS = [
+    (rf"step_max = {_N} \* g->A", "trust_fraction"),
+    (rf"lev = {_N} / g->A", "levenberg_geometric"),
+    (rf"eps20 = {_N} \* DBL_EPSILON", "roundoff_factor"),
+    (rf"cap = {_N} \* rtol > ", "floor_rtol"),
+    (rf"rtol : {_N};", "floor_cap"),
+    (rf"mu = {_N} \* fabs\(tr\)", "levenberg_trace"),
+    (rf"local = err < {_N};", "quadratic_region"),
+    (rf"k < {_N}; k\+\+\) {{\s*t \*= 0.5", "potential_halvings"),
+    (rf"local \? 0 : {_N}", "residual_halvings"),
+    (rf"phi0 \+ {_N} \* gslope", "armijo"),
+    (rf"phi0 \+ {_N} \* t \* gslope", "armijo"),
+    (rf"en > {_N} \* err", "stall_ratio"),
+    (rf"fl < {_N} \* rtol", "floor_rtol"),
+]
+
+
+@pytest.mark.parametrize("pattern, name", KERNEL_CONSTANTS)
+def test_compiled_kernel_constants_are_the_policys(pattern, name):
     """The compiled Newton (analytic/_ldkernel.c) cannot call Python: its compiled-in
     constants must be the policy's."""
-    c = (ANALYTIC / "_ldkernel.c").read_text()
-
-    def num(pattern):
-        m = re.search(pattern, c)
-        assert m, pattern
-        return float(m.group(1))
-
-    n = r"([0-9.]+(?:e-?[0-9]+)?)"
-    assert num(rf"step_max = {n} \* g->A") == POLICY.trust_fraction
-    assert num(rf"lev = {n} / g->A") == POLICY.levenberg_geometric
-    assert num(rf"eps20 = {n} \* DBL_EPSILON") == POLICY.roundoff_factor
-    assert num(rf"cap = {n} \* rtol > ") == POLICY.floor_rtol
-    assert num(rf"rtol : {n};") == POLICY.floor_cap
-    assert num(rf"mu = {n} \* fabs\(tr\)") == POLICY.levenberg_trace
-    assert num(rf"local = err < {n};") == POLICY.quadratic_region
-    assert num(rf"k < {n}; k\+\+\) {{\s*t \*= 0.5") == POLICY.potential_halvings
-    assert num(rf"local \? 0 : {n}") == POLICY.residual_halvings
-    assert num(rf"phi0 \+ {n} \* gslope") == POLICY.armijo
-    assert num(rf"phi0 \+ {n} \* t \* gslope") == POLICY.armijo
-    assert num(rf"en > {n} \* err") == POLICY.stall_ratio
-    assert num(rf"fl < {n} \* rtol") == POLICY.floor_rtol
+    m = re.search(pattern, (ANALYTIC / "_ldkernel.c").read_text())
+    assert m, pattern
+    assert float(m.group(1)) == getattr(POLICY, name)
 
 
 def test_policy_is_frozen():

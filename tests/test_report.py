@@ -11,6 +11,7 @@ import pytest
 
 from ballrace.validation.runner import run_cases
 from ballrace.validation.schema import load_cases, parse_cases
+from caseref import case_header
 
 
 class _Collect(HTMLParser):
@@ -52,16 +53,13 @@ def run():
     cases = (load_cases("hertz_approximations.toml")[-2:] + load_cases("subsurface.toml")[:2]
              + [c for c in load_cases("bearing.toml") if c.id in _BEARING]
              + [c for c in load_cases("hertz*.toml") if c.id == "hertz-nafems-d3613"])
-    wrong = parse_cases("""
-[[case]]
-id = "wrong-<b>"
-title = "a failing case with markup <script>alert(1)</script>"
-kind = "published"
-calculation = "hertz.point_contact"
-source = { author = "X & Y", year = 2000, reference = "eq. <1>" }
+    wrong = parse_cases(case_header(
+        "wrong-b", "a failing case with markup <script>alert(1)</script>",
+        "hertz.point_contact", kind="published", author="X & Y", year=2000,
+        reference="eq. <1>") + """\
 inputs = { load = "1000 N", rx1 = "5 mm", ry1 = "5 mm", E1 = "200 GPa", nu1 = 0.3 }
 expected.a = { value = "0.5 mm", rtol = 1e-3, reason = "wrong on purpose" }
-""".replace('"wrong-<b>"', '"wrong-b"'))
+""")
     return run_cases(cases + wrong, serial=True)
 
 

@@ -19,7 +19,6 @@ import os
 import re
 import subprocess
 import sys
-import threading
 import urllib.request
 
 import numpy as np
@@ -30,7 +29,7 @@ from ballrace import Material
 from ballrace.analytic import roller
 from ballrace.teach import compute as tc
 from ballrace.teach import page as tpage
-from ballrace.teach import server as tsrv
+from teachweb import chromium, live_server, post
 
 STEEL = Material(E=200e9, nu=0.3)
 ROLLER = {**tc.DEFAULTS, "mode": "roller"}
@@ -171,34 +170,23 @@ def test_light_load_refused_with_the_load_that_would_do():
 
 @pytest.fixture(scope="module")
 def server():
-    srv = tsrv.make_server(0)
-    th = threading.Thread(target=srv.serve_forever, kwargs={"poll_interval": 0.05}, daemon=True)
-    th.start()
-    yield f"http://127.0.0.1:{srv.server_address[1]}"
-    srv.shutdown()
-    srv.server_close()
-
-
-def _post(url, body):
-    req = urllib.request.Request(url + "/api/compute", data=json.dumps(body).encode(),
-                                 headers={"Content-Type": "application/json"}, method="POST")
-    with urllib.request.urlopen(req, timeout=60) as f:
-        return f.status, json.loads(f.read())
+    with live_server() as url:
+        yield url
 
 
 def test_server_refuses_out_of_range_inputs(server):
     for change, field, text in BAD + [({"load": "10 N"}, "load", "too light")]:
-        status, r = _post(server, {**ROLLER, **change})
+        status, r = post(server, {**ROLLER, **change})
         assert status == 200 and r["ok"] is False and r["field"] == field, (change, r)
         assert text in r["error"] and "\n" not in r["error"]
     # an input the page does not have, a long one: 400 before any work
     for body, field in (({**ROLLER, "n_slices": "4001"}, "general"),
                         ({**ROLLER, "tilt": "1" * 200 + " mrad"}, "tilt")):
         with pytest.raises(urllib.error.HTTPError) as e:
-            _post(server, body)
+            post(server, body)
         assert e.value.code == 400
         assert json.loads(e.value.read())["field"] == field
-    status, r = _post(server, {**ROLLER, "profile": "straight", "tilt": "2 mrad"})
+    status, r = post(server, {**ROLLER, "profile": "straight", "tilt": "2 mrad"})
     assert status == 200 and r["ok"] and r["kind"] == "roller"
 
 
@@ -266,23 +254,12 @@ def test_cli_roller_errors(args, text):
 
 
 # ------------------------------------------------------------------ in a real browser
-def _chromium():
-    import shutil
-    from pathlib import Path
-
-    for p in (os.environ.get("BALLRACE_CHROMIUM"), "/usr/bin/chromium", shutil.which("chromium"),
-              shutil.which("chromium-browser")):
-        if p and Path(p).exists():
-            return p
-    return None
-
-
 def test_in_browser_roller_mode(server):
     """Switch the live page to roller mode: both plots drawn (non-white pixels), the table's
     numbers those of the library to the printed digits, the crown inputs shown for the
     circular crown only, a bad tilt shown in place, and no console error."""
     sync_api = pytest.importorskip("playwright.sync_api", reason="pip install playwright")
-    exe = _chromium()
+    exe = chromium()
     if exe is None:
         pytest.skip("no chromium (apt-get install chromium; see .ci/browser)")
     with sync_api.sync_playwright() as p:

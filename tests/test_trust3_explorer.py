@@ -29,7 +29,7 @@ from typer.testing import CliRunner
 from ballrace.teach import commands as tcmd
 from ballrace.teach import compute as tc
 from ballrace.teach import server as tsrv
-from test_explorer import _chromium   # the browser the explorer tests drive
+from teachweb import chromium as _chromium   # the browser the explorer tests drive
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 REFUSED = "reads only the case file it was started with"
