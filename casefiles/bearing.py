@@ -934,17 +934,9 @@ def read_profile(spec, q, source: str, where: str, length: float, diameter: floa
 
 def _roller_material(spec, q, source: str):
     """The one material of rollers and rings (``[materials]`` roller and/or ring)."""
-    from ballrace.casefiles.schema import read_material
+    from ballrace.casefiles.schema import read_materials
 
-    mats = {}
-    for which in ("roller", "ring"):
-        m = getattr(spec, which)
-        if m is not None:
-            kw = read_material(m, q, f"[materials.{which}]", m.name or which)
-            try:
-                mats[which] = material(**kw)
-            except (ValueError, TypeError) as exc:
-                raise CaseFileError(f"{source}: [materials.{which}]: {exc}") from None
+    mats = read_materials(spec, q, source, material, parts=("roller", "ring"))
     if len(mats) == 2:
         a, b = mats["roller"], mats["ring"]
         if (a.E, a.nu) != (b.E, b.nu):

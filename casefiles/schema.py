@@ -246,14 +246,15 @@ def read_material(m, q, where: str, name: str, density: bool = True) -> dict:
     return kw
 
 
-def read_materials(spec, q, source: str, make) -> dict:
+def read_materials(spec, q, source: str, make, parts=("ball", "ring")) -> dict:
     """``{"ball": Material, "ring": Material}`` of a ``[materials]`` table ``spec``
     (:func:`materials_keys`; a material not given is left out), each built by ``make``
-    from its keywords (:func:`read_material`); an error names ``[materials.ball]``."""
+    from its keywords (:func:`read_material`); an error names ``[materials.ball]``.
+    ``parts`` are the table's keys (``("roller", "ring")`` for a roller bearing)."""
     from ballrace.errors import CaseFileError
 
     mats = {}
-    for which in ("ball", "ring"):
+    for which in parts:
         m = getattr(spec, which)
         if m is not None:
             kw = read_material(m, q, f"[materials.{which}]", m.name or which)
