@@ -667,6 +667,20 @@ def _kind_hint(data: dict, source: str):
     return None
 
 
+def _radial_axial(loads, q, source: str, example: str):
+    """(F_r, F_a) [N] of a ``[loads]`` table: both >= 0 and not both zero; ``example``
+    (``"8900 N"``) is the valid value an error shows."""
+    Fr = q(loads.radial, "[force]", "[loads].radial")
+    Fa = q(loads.axial, "[force]", "[loads].axial")
+    for name, v in (("radial", Fr), ("axial", Fa)):
+        if v < 0:
+            raise CaseFileError(f"{source}: [loads].{name} must be >= 0 N; got "
+                                f"{getattr(loads, name)!r} (e.g. \"{example}\")")
+    if Fr == 0 and Fa == 0:
+        raise CaseFileError(f"{source}: [loads]: radial and axial are both zero")
+    return Fr, Fa
+
+
 def parse_case(data: dict, source: str = "<case>") -> BearingCase:
     """Validate a case dictionary (parsed TOML) and convert it to SI.
 
@@ -718,14 +732,7 @@ def parse_case(data: dict, source: str = "<case>") -> BearingCase:
                             ring_material=mats.get("ring"), n_rows=b.n_rows,
                             name=b.name or spec.title)
 
-    Fr = q(spec.loads.radial, "[force]", "[loads].radial")
-    Fa = q(spec.loads.axial, "[force]", "[loads].axial")
-    for name, v in (("radial", Fr), ("axial", Fa)):
-        if v < 0:
-            raise CaseFileError(f"{source}: [loads].{name} must be >= 0 N; got "
-                                f"{getattr(spec.loads, name)!r} (e.g. \"8900 N\")")
-    if Fr == 0 and Fa == 0:
-        raise CaseFileError(f"{source}: [loads]: radial and axial are both zero")
+    Fr, Fa = _radial_axial(spec.loads, q, source, "8900 N")
     ecc = q(spec.loads.eccentricity, "[length]", "[loads].eccentricity")
     if ecc is not None and Fr != 0:
         raise CaseFileError(f"{source}: [loads].eccentricity applies to a pure thrust load; "
@@ -1032,14 +1039,7 @@ def parse_roller_case(data: dict, source: str = "<case>") -> BearingCase:
         raise CaseFileError(f"{source}: {W}: {exc}") from None
 
     loads = spec.loads
-    Fr = q(loads.radial, "[force]", "[loads].radial")
-    Fa = q(loads.axial, "[force]", "[loads].axial")
-    for name, v in (("radial", Fr), ("axial", Fa)):
-        if v < 0:
-            raise CaseFileError(f"{source}: [loads].{name} must be >= 0 N; got "
-                                f"{getattr(loads, name)!r} (e.g. \"6940 N\")")
-    if Fr == 0 and Fa == 0:
-        raise CaseFileError(f"{source}: [loads]: radial and axial are both zero")
+    Fr, Fa = _radial_axial(loads, q, source, "6940 N")
     if kind == "cylindrical" and Fa != 0:
         raise CaseFileError(f"{source}: [loads].axial: a cylindrical roller bearing carries "
                             f"no axial load here (its locating flanges, NJ, NUP, NF, are not "
