@@ -1030,21 +1030,5 @@ class RollerRow:
 def _row_geometry(bearing: RollerBearing, clearance: float):
     """(G (Z n_s, 5), b (Z n_s,)) of :class:`RollerRow`: the slice directions g_jk and the
     approaches at u = 0 of the module notes (azimuth offset 0), read-only."""
-    a = bearing.contact_angle
-    sa, ca = math.sin(a), math.cos(a)
-    psi = bearing.azimuths(0.0)
-    cp, sp = np.cos(psi), np.sin(psi)
-    m = 0.5 * bearing.pitch_diameter * sa - bearing.slice_positions
-    Z, n_s = bearing.n_rollers, bearing.n_slices
-    G = np.empty((Z, n_s, 5))
-    G[..., 0] = sa
-    G[..., 1] = (ca * cp)[:, None]
-    G[..., 2] = (ca * sp)[:, None]
-    G[..., 3] = sp[:, None] * m[None, :]
-    G[..., 4] = -cp[:, None] * m[None, :]
-    G = np.ascontiguousarray(G.reshape(-1, 5))
-    b = np.ascontiguousarray(np.broadcast_to(-0.5 * clearance * ca - 2.0 * bearing.slice_drops,
-                                             (Z, n_s))).ravel()
-    G.setflags(write=False)
-    b.setflags(write=False)
-    return G, b
+    model = _model(bearing, 0.0, clearance)
+    return model.G, model.b
