@@ -146,17 +146,23 @@ def ball_columns(r: dict, units: str = "eng") -> tuple[list, list]:
     return headers, rows
 
 
-def _render(r: dict, units: str = "eng") -> None:
+def _print_report(secs, title: str, columns, notes, units: str) -> None:
+    """Print the first section, the per-element table ``columns`` (headers, rows) under
+    ``title``, the other sections and the notes."""
     from ballrace.console import literal, make_console, print_columns, print_sections
 
     con = make_console()
-    secs = sections(r)
     print_sections(con, secs[:1], units)
-    headers, rows = ball_columns(r, units)
-    print_columns(con, f"Load distribution: {r['distribution']['method']}", headers, rows)
+    print_columns(con, title, *columns)
     print_sections(con, secs[1:], units)
-    for n in [*r["notes"], *(r.get("iso") or {}).get("notes", [])]:
+    for n in notes:
         con.print(literal(f"note: {n}"), style="dim")
+
+
+def _render(r: dict, units: str = "eng") -> None:
+    _print_report(sections(r), f"Load distribution: {r['distribution']['method']}",
+                  ball_columns(r, units),
+                  [*r["notes"], *(r.get("iso") or {}).get("notes", [])], units)
 
 
 # ============================================================================ roller bearings
@@ -264,16 +270,8 @@ def roller_columns(r: dict, units: str = "eng") -> tuple[list, list]:
 
 
 def _render_roller(r: dict, units: str = "eng") -> None:
-    from ballrace.console import literal, make_console, print_columns, print_sections
-
-    con = make_console()
-    secs = roller_sections(r)
-    print_sections(con, secs[:1], units)
-    headers, rows = roller_columns(r, units)
-    print_columns(con, f"Rollers: {r['distribution']['method']}", headers, rows)
-    print_sections(con, secs[1:], units)
-    for n in r["notes"]:
-        con.print(literal(f"note: {n}"), style="dim")
+    _print_report(roller_sections(r), f"Rollers: {r['distribution']['method']}",
+                  roller_columns(r, units), r["notes"], units)
 
 
 def plot_rollers(r: dict, path, most: int = 3) -> None:
