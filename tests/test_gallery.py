@@ -230,13 +230,9 @@ def test_iso_life_and_operating_clearance():
     assert np.all(np.diff(k["L10r"][:j + 1]) > 0) and np.all(np.diff(k["L10r"][j:]) < 0)
 
 
-def test_shaft_gearbox():
-    # Statics of a shaft (independent of the solver): the seats carry the gear's forces,
-    # sum R = F, and its moment about seat A, (x_g - x_A) F_y = (x_B - x_A) R_By + Mz_A
-    # + Mz_B (moments the seats carry), the locating seat takes F_t tan(15 deg); 1e-9.
-    import numpy as np
-
-    k = run(checks("plot_15_shaft_gearbox.py"))
+def _gearbox_statics(k: dict):
+    """Assert the statics of a two-seat gearbox shaft of 5000 N (test_shaft_gearbox) and
+    return the seat reactions (2, 6) [N, N m]."""
     R, F = np.asarray(k["reactions"]), np.asarray(k["gear"])
     assert R[:, :3].sum(0) == pytest.approx(F[:3], abs=1e-9 * 5000)
     xa, xb = k["x_seats"]
@@ -244,6 +240,15 @@ def test_shaft_gearbox():
     rhs = (xb - xa) * R[1, 1] + R[0, 4] + R[1, 4]
     assert lhs == pytest.approx(rhs, abs=1e-9 * 5000)
     assert R[0, 0] == pytest.approx(5000 * np.tan(np.radians(15)), rel=1e-9)
+    return R
+
+
+def test_shaft_gearbox():
+    # Statics of a shaft (independent of the solver): the seats carry the gear's forces,
+    # sum R = F, and its moment about seat A, (x_g - x_A) F_y = (x_B - x_A) R_By + Mz_A
+    # + Mz_B (moments the seats carry), the locating seat takes F_t tan(15 deg); 1e-9.
+    k = run(checks("plot_15_shaft_gearbox.py"))
+    R = _gearbox_statics(k)
     assert abs(R[1, 0]) < 1e-9 * 5000
 
 
@@ -366,13 +371,7 @@ def test_roller_gearbox_shaft():
     # roller seat's radial reaction rebuilt from its slice loads (contact angle 0:
     # F_y = sum q_jk cos psi_j, F_z = sum q_jk sin psi_j, re-derived here; 1e-9).
     k = run(checks("plot_22_roller_gearbox_shaft.py"))
-    R, F = np.asarray(k["reactions"]), np.asarray(k["gear"])
-    assert R[:, :3].sum(0) == pytest.approx(F[:3], abs=1e-9 * 5000)
-    xa, xb = k["x_seats"]
-    lhs = (k["x_gear"] - xa) * F[1] + F[4]
-    rhs = (xb - xa) * R[1, 1] + R[0, 4] + R[1, 4]
-    assert lhs == pytest.approx(rhs, abs=1e-9 * 5000)
-    assert R[0, 0] == pytest.approx(5000 * np.tan(np.radians(15)), rel=1e-9)
+    R = _gearbox_statics(k)
     assert R[1, 0] == 0.0
     q, psi = np.asarray(k["slice_loads"]), np.asarray(k["azimuths"])
     Q = q.sum(-1)
