@@ -28,6 +28,7 @@ import numpy as np
 
 import ballrace
 from ballrace.analytic import shaft as S
+from core_table import best
 
 
 def case():
@@ -45,15 +46,6 @@ def roller_case():
     brg, s, seats, loads = case()
     cyl = RollerBearing(13e-3, 11.8e-3, 14, 70.65e-3, diametral_clearance=20e-6)
     return cyl, s, [seats[0], S.Seat(0.23, cyl, floating=True)], loads
-
-
-def _best(fn, n=20):
-    ts = []
-    for _ in range(n):
-        t0 = time.perf_counter()
-        fn()
-        ts.append(time.perf_counter() - t0)
-    return min(ts)
 
 
 def duty(n, seed=0):
@@ -105,7 +97,7 @@ def test_shaft_ball_and_cylindrical_roller_40_elements(benchmark):
 
     cold(s, seats, loads)
     cold(sr, rseats, rloads)
-    t_ball = _best(lambda: cold(s, seats, loads))
+    t_ball = best(lambda: cold(s, seats, loads), 20)
     r = benchmark(cold, sr, rseats, rloads)
     benchmark.extra_info["iterations"] = r.iterations
     benchmark.extra_info["ratio_to_all_ball_shaft"] = benchmark.stats.stats.min / t_ball
@@ -157,7 +149,7 @@ if __name__ == "__main__":
         S._PROBLEMS.clear()
         return S.solve(s, seats, loads)
 
-    t_r, t_b = _best(cold_roller, 50), _best(cold_ball, 50)
+    t_r, t_b = best(cold_roller, 50), best(cold_ball, 50)
     sys.stdout.write(f"ball + cylindrical roller shaft ({rr.nodes.size - 1} elements, "
                      f"{rr.iterations} Newton iterations): best {t_r * 1e3:.2f} ms; all-ball "
                      f"shaft best {t_b * 1e3:.2f} ms (ratio {t_r / t_b:.2f})\n")

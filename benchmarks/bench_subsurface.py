@@ -14,13 +14,12 @@ the line at the speed of their frictionless fields, printed as ratios).
 """
 from __future__ import annotations
 
-import time
-
 import numpy as np
 import pytest
 
 import ballrace
 from ballrace.analytic import hertz, subsurface
+from core_table import best
 
 E_PRIME = 219.78e9
 
@@ -92,21 +91,11 @@ def test_bench_section(benchmark, name):
     assert benchmark(globals()[name]).sxx.shape == (100, 100)
 
 
-def _best(fn, n=7):
-    fn()
-    times = []
-    for _ in range(n):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return min(times)
-
-
 if __name__ == "__main__":
     for fn in (depth_search, section_100x100):
-        print(f"{fn.__name__}: {_best(fn, 1):.3f} s")
+        print(f"{fn.__name__}: {best(fn, 1, warmup=True):.3f} s")
     for name in ("ellipse", "circle", "line"):
-        t0 = _best(globals()[f"{name}_section_frictionless"])
-        t1 = _best(globals()[f"{name}_section_traction"])
+        t0 = best(globals()[f"{name}_section_frictionless"], warmup=True)
+        t1 = best(globals()[f"{name}_section_traction"], warmup=True)
         print(f"{name} 100 x 100: frictionless {t0:.4f} s, traction 0.3 {t1:.4f} s, "
               f"ratio {t1 / t0:.2f}")

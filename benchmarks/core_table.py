@@ -72,6 +72,19 @@ def timeit(fn, *, target: float = 0.15, repeats: int = 7, number: int | None = N
     return statistics.median(ts)
 
 
+def best(fn, n: int = 7, *, warmup: bool = False) -> float:
+    """Shortest of ``n`` wall-clock times of one call ``fn()`` [s]; ``warmup`` first calls
+    it once untimed."""
+    if warmup:
+        fn()
+    ts = []
+    for _ in range(n):
+        t0 = time.perf_counter()
+        fn()
+        ts.append(time.perf_counter() - t0)
+    return min(ts)
+
+
 def timeit_pair(fn, floor, *, target: float = 0.3, repeats: int = 9):
     """Median seconds per call of ``fn()`` and of ``floor()``, measured alternately.
 
