@@ -46,19 +46,14 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ballrace.analytic import roller as _roller_pkg
 from ballrace.analytic._checks import check_choice
 from ballrace.analytic.materials import Material
+from ballrace.analytic.roller import ProfileContext, line_contact, subsurface_stress
 
 __all__ = ["RollerLevel", "ROLLER_LEVELS", "ROLLER_TOLERANCES", "RollerFEResult",
            "TensorGrid", "roller_contact"]
 
 log = logging.getLogger(__name__)
-
-line_contact = _roller_pkg.line_contact
-subsurface_stress = _roller_pkg.subsurface_stress
-ProfileContext = _roller_pkg.ProfileContext
-as_profile = _roller_pkg.as_profile
 
 
 # --------------------------------------------------------------------------- levels
@@ -98,9 +93,9 @@ class RollerLevel:
 #: Named levels.  quick: CI smoke level (a few seconds); standard: the check (<= 60 s and
 #: <= 4 GB on 2 cores with PARDISO, measured in docs/fem-roller.md); fine: the convergence
 #: reference.
-ROLLER_LEVELS = {"quick": RollerLevel(3.0, 6.0, 1.0, 24, 0.45, 0.6),
-                 "standard": RollerLevel(5.0, 4.0, 0.8, 44, 0.25, 0.30),
-                 "fine": RollerLevel(7.0, 4.0, 0.7, 64, 0.18, 0.22)}
+ROLLER_LEVELS = {"quick": RollerLevel(3.0, 8.0, 1.0, 20, 0.45, 0.6),
+                 "standard": RollerLevel(4.5, 6.0, 0.8, 40, 0.25, 0.30),
+                 "fine": RollerLevel(6.0, 6.0, 0.7, 56, 0.2, 0.22)}
 #: Least tent spacing along the roller in elements (inf-sup: tents as fine as the mesh
 #: make the tent pressures oscillate, docs/fem.md); it caps the elongation [-].
 TENT_FLOOR_X = 1.5
@@ -111,7 +106,7 @@ ROLLER_TOLERANCES = {
     "quick": {"centre_pressure": 0.08, "approach": 0.10},
     "fine": {"centre_pressure": 0.03, "approach": 0.05},
 }
-MODES = ("two-body", "half-space")
+MODES = ("half-space", "two-body")
 
 #: Raceway block beyond the roller end, in roller lengths L [-]; width (rolling
 #: direction) and depth, in L [-].  The pressure along the roller is coupled through the
@@ -415,7 +410,7 @@ def halfspace_w(contact, z: float, E: float, nu: float, n_x: int = 8, n_y: int =
 
 # --------------------------------------------------------------------------- model
 def roller_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="lundberg",
-                   level="standard", *, mode: str = "two-body", n_slices: int = 41,
+                   level="standard", *, mode: str = "half-space", n_slices: int = 41,
                    solver: str | None = None, use_cache: bool = True) -> RollerFEResult:
     """FE check of a profiled roller on its raceway against
     :func:`ballrace.analytic.roller.line_contact` (module notes).
@@ -437,9 +432,11 @@ def roller_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="l
         mid-length; "lundberg" by name is designed for ``Q``.
     level : {"quick", "standard", "fine"} or RollerLevel
         Mesh level (:data:`ROLLER_LEVELS`).
-    mode : {"two-body", "half-space"}
-        Roller and raceway both elastic, or a rigid roller on one elastic block of
-        modulus E'/2 (1 - nu2^2) (line_contact's idealisation).
+    mode : {"half-space", "two-body"}
+        A rigid roller on one elastic block of modulus E'/2 (1 - nu2^2), large against
+        the roller (line_contact's idealisation: the verification, default), or the
+        roller and the raceway both elastic (the real finite roller, "beyond the
+        half-space": its free end face shifts load to the middle; module notes).
     n_slices : int
         Slices of the line_contact compared with [-].
     solver : str, optional
