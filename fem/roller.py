@@ -32,6 +32,37 @@ half-space) with a 3-D model of the real bodies:
 Frame: that of :mod:`ballrace.analytic.roller.contact` (x along the roller axis, y the
 rolling direction, z the contact normal into the roller; the raceway in z < 0).
 
+Measured (R1 = 6 mm, L = 12 mm, flat raceway, 5 kN, steel; PARDISO; the machine's two
+cores shared with other jobs, load average 8-10, so the wall times below are 3-4 times
+an idle machine's; CPU time is user + system)
+---------------------------------------------------------------------------------------
+Half-space mode against line_contact (41 slices):
+
+=================  =======  ========  =======  ========  ========  ============  ========
+case / level       DOFs     peak RAM  CPU      centre p  approach  max p         VM centre
+=================  =======  ========  =======  ========  ========  ============  ========
+Lundberg standard  166k     2.3 GB    60 s     -0.39 %   +0.12 %   (edge) +16 %  +0.09 %
+crowned standard   212k     3.2 GB    87 s     -0.18 %   +0.05 %   +1.94 %       +0.16 %
+=================  =======  ========  =======  ========  ========  ============  ========
+
+(crowned: 4 mm flat, 0.5 m crown radius; its pressure peaks where the flat part ends.)
+The slice loads of Lundberg's roller agree with line_contact's uniform 122.1 N within
+1 % on every slice but the end one (-9.5 %: the drop grows without bound at the end, the
+FE resolves the last 0.3 b, the strips average it); the FE pressure there rises to
+1.81 GPa within the last half-width before falling to zero — a feature of the tent
+resolution of the logarithmic end, not checked.  The von Mises depths agree within 4 %
+(centre) and 4-9 % (edge); the FE pressure scatters by +-2 % along the roller (tents
+against P2 surface elements), which sets the tolerance of the crowned edge peak,
+:data:`EDGE_TOLERANCE`.
+
+Two bodies (``mode="two-body"``, the elastic finite roller on the block) at the
+standard level with n = 5 (349k DOFs, 4.7 GB, 135 s CPU: beyond the standard budget,
+so it is not the default): Lundberg's roller carries 5.7 % more load per length in the
+middle (129.1 N per slice against 122.1 N) and 43 % less in the end slice — its free end
+face makes the roller softer there than the half-space that Lundberg's profile is
+designed on; the centre pressure is +1.65 %, the approach +1.6 %.  That is the real
+roller "beyond the half-space", a result, not an error.
+
 >>> from ballrace import fem                                       # doctest: +SKIP
 >>> f = fem.roller_contact(5000.0, 6e-3, np.inf, 12e-3, st, st, level="quick")  # doctest: +SKIP
 >>> f.x, f.pressure, f.approach, f.n_dofs                          # doctest: +SKIP
@@ -90,9 +121,9 @@ class RollerLevel:
     smoothing: float = 1.0
 
 
-#: Named levels.  quick: CI smoke level (a few seconds); standard: the check (<= 60 s and
-#: <= 4 GB on 2 cores with PARDISO, measured in docs/fem-roller.md); fine: the convergence
-#: reference.
+#: Named levels.  quick: CI smoke level (seconds); standard: the check (<= 60 s and
+#: <= 4 GB on 2 cores with PARDISO in half-space mode, measured in the module notes);
+#: fine: the convergence reference (some 6 GB).
 ROLLER_LEVELS = {"quick": RollerLevel(3.0, 8.0, 1.0, 20, 0.45, 0.6),
                  "standard": RollerLevel(4.5, 6.0, 0.8, 40, 0.25, 0.30),
                  "fine": RollerLevel(6.0, 6.0, 0.7, 56, 0.2, 0.22)}
@@ -102,11 +133,15 @@ TENT_FLOOR_X = 1.5
 #: Tolerances of the comparison rows per level (relative) — measured, see
 #: :func:`roller_contact` notes; ``None``: reported, not checked.
 ROLLER_TOLERANCES = {
-    "standard": {"centre_pressure": 0.03, "approach": 0.05},
-    "quick": {"centre_pressure": 0.08, "approach": 0.10},
-    "fine": {"centre_pressure": 0.03, "approach": 0.05},
+    "standard": {"centre_pressure": 0.03, "approach": 0.01, "von_mises_centre": 0.02},
+    "quick": {"centre_pressure": 0.06, "approach": 0.03, "von_mises_centre": 0.05},
 }
+ROLLER_TOLERANCES["fine"] = ROLLER_TOLERANCES["standard"]
 MODES = ("half-space", "two-body")
+#: Relative tolerance of the largest pressure of a circular crown (where its flat part
+#: ends) against line_contact at the standard level, half-space mode: measured +1.94 %
+#: (4 mm flat, 0.5 m crown radius, 12 mm roller, 5 kN), the FE's +-2 % tent scatter.
+EDGE_TOLERANCE = {"crowned": 0.03}
 
 #: Raceway block beyond the roller end, in roller lengths L [-]; width (rolling
 #: direction) and depth, in L [-].  The pressure along the roller is coupled through the
@@ -297,13 +332,19 @@ class RollerFEResult:
     approach_rigid : float
         Rigid approach of the supports (roller axis plane, block bottom) [m]; includes the
         bodies' bulk compliance.
-    centre_pressure, edge_pressure : float
-        Pressure at x = 0 and the largest pressure in the outer half (x >= L/4) [Pa].
+    centre_pressure : float
+        FE peak pressure averaged over line_contact's centre slice [Pa] (the comparison
+        row "centre_pressure"; "centre_pressure_node" is the value at x = 0).
+    edge_pressure : float
+        The largest nodal pressure in the outer half (x >= L/4) [Pa]: the edge peak.
     x_edge : float
         Where that edge peak lies [m].
     slice_x, slice_loads : ndarray
         line_contact's slice centres (x >= 0) and the FE load on each slice [m], [N]
         (the centre slice whole: both halves).
+    slice_pressure : ndarray
+        FE peak pressure (over y) averaged over each slice [Pa]; its largest value is the
+        row "max_pressure" ("max_pressure_node": the largest nodal value).
     von_mises_centre, von_mises_centre_depth, von_mises_edge, von_mises_edge_depth : float
         Von Mises maximum over depth in the raceway and its depth, under the roller centre
         and under line_contact's edge peak (``info["x_stress_edge"]``) [Pa], [m].
@@ -331,6 +372,7 @@ class RollerFEResult:
     x_edge: float
     slice_x: np.ndarray
     slice_loads: np.ndarray
+    slice_pressure: np.ndarray
     von_mises_centre: float
     von_mises_centre_depth: float
     von_mises_edge: float
@@ -357,6 +399,17 @@ class RollerFEResult:
                 return r
         raise KeyError(quantity)
 
+    def side_by_side(self) -> list:
+        """Per slice of line_contact (x >= 0): ``x`` [m], FE and line_contact slice
+        pressure [Pa] and slice load [N], as dicts."""
+        c = self.analytic
+        mid = (c.n_slices - 1) // 2
+        return [{"x": float(x), "pressure_fe": float(pf), "pressure_line_contact": float(pa),
+                 "load_fe": float(lf), "load_line_contact": float(la)}
+                for x, pf, pa, lf, la in zip(self.slice_x, self.slice_pressure,
+                                             c.pressure[mid:], self.slice_loads,
+                                             c.slice_loads[mid:])]
+
     def to_dict(self) -> dict:
         """JSON-ready summary (SI units)."""
         keys = ("level", "mode", "approach", "approach_depth_point", "approach_rigid",
@@ -368,7 +421,8 @@ class RollerFEResult:
         out["pressure"] = self.pressure.tolist()
         out["timings"] = dict(self.timings)
         out["comparison"] = list(self.comparison)
-        out["info"] = dict(self.info)
+        out["slices"] = self.side_by_side()
+        out["info"] = {k: v for k, v in self.info.items()}
         return out
 
 
@@ -496,8 +550,10 @@ def roller_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="l
     stretch = float(np.clip(np.max(np.diff(xn)) / (TENT_FLOOR_X * h), 1.0, lv.stretch))
     t0 = time.perf_counter()
     strip = Ly + 2.0 * h
-    kw = dict(strip=strip, layer=0.5 * b0, depth=1.8 * bmax, column=2.0 * b0,
-              edge_zone=2.0 * bmax, h=h, h_edge=lv.edge * h, growth=0.3,
+    # full-depth refinement (the von Mises maxima lie at 0.7 b) under the centre and over
+    # the last 1.5 b of the roller; a thin layer along the rest of the strip
+    kw = dict(strip=strip, layer=0.5 * b0, depth=1.2 * bmax + 0.4 * b0, column=2.0 * b0,
+              edge_zone=1.5 * bmax, h=h, h_edge=lv.edge * h, growth=0.3,
               stretch=stretch, use_cache=use_cache)
     X = Lh + OVERHANG * L
     Yb = min(BLOCK_L * L, 0.5 * abs(R2)) if np.isfinite(R2) else BLOCK_L * L
@@ -581,6 +637,15 @@ def roller_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="l
     hi = cx + 0.5 * w
     fl = 2.0 * grid.strip_loads(sol.lam, lo, hi)        # both sides of y = 0
     fl[0] *= 2.0                                        # the centre slice: both sides of x = 0
+    # the FE peak pressure averaged over each of line_contact's slices (the strip
+    # method's slice pressure is that of the slice's mean load): the tents' scatter
+    # along the roller (+-2 %) averages out
+    sp = []
+    for a, b_ in zip(lo, hi):
+        xx = np.linspace(a, min(b_, Lh), 17)
+        sp.append(float(np.mean([grid.evaluate(sol.lam, np.full(yf.size, v), yf).max()
+                                 for v in xx])))
+    sp = np.array(sp)
     us = [ex.displacement(s, sol.lam) for s in states]
     eps = 1e-7 * h
     zq = DEPTH_POINT * b0
@@ -619,9 +684,11 @@ def roller_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="l
         rows.append({"quantity": q, "unit": unit, "fe": float(fe), "analytic": float(an_),
                      "error": float(err), "tol": t, "ok": bool(t is None or abs(err) <= t)})
 
-    row("centre_pressure", "Pa", p_c, float(cp[0]))
+    row("centre_pressure", "Pa", float(sp[0]), float(cp[0]))
+    row("centre_pressure_node", "Pa", p_c, float(cp[0]))
     row("edge_pressure", "Pa", p_e, float(cp[k_ce]))
-    row("max_pressure", "Pa", float(P.max()), float(cp.max()))
+    row("max_pressure", "Pa", float(sp.max()), float(cp.max()))
+    row("max_pressure_node", "Pa", float(P.max()), float(cp.max()))
     row("approach", "m", approach_fe, float(c.approach))
     row("approach_depth_point", "m", d_fe, float(c.approach) - w_sum)
     row("edge_slice_load", "N", float(fl[-1]), float(c.slice_loads[-1]))
@@ -640,8 +707,9 @@ def roller_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="l
         s.release()
     res = RollerFEResult(
         level=name, mode=mode, x=xn, pressure=P, approach=approach_fe,
-        approach_depth_point=d_fe, approach_rigid=sol.Delta, centre_pressure=p_c,
-        edge_pressure=p_e, x_edge=x_e, slice_x=cx, slice_loads=fl, von_mises_centre=vc,
+        approach_depth_point=d_fe, approach_rigid=sol.Delta, centre_pressure=float(sp[0]),
+        edge_pressure=p_e, x_edge=x_e, slice_x=cx, slice_loads=fl, slice_pressure=sp,
+        von_mises_centre=vc,
         von_mises_centre_depth=zc, von_mises_edge=ve, von_mises_edge_depth=ze,
         n_dofs=n_dofs, timings=timings, peak_rss=int(peak), solver=states[0].solver,
         analytic=c, comparison=rows,
