@@ -138,10 +138,12 @@ ROLLER_TOLERANCES = {
 }
 ROLLER_TOLERANCES["fine"] = ROLLER_TOLERANCES["standard"]
 MODES = ("half-space", "two-body")
-#: Relative tolerance of the largest pressure of a circular crown (where its flat part
-#: ends) against line_contact at the standard level, half-space mode: measured +1.94 %
-#: (4 mm flat, 0.5 m crown radius, 12 mm roller, 5 kN), the FE's +-2 % tent scatter.
-EDGE_TOLERANCE = {"crowned": 0.03}
+#: Relative tolerances of the edge peak of a circular crown (its largest pressure, where
+#: the flat part ends) against line_contact at the standard level, half-space mode
+#: (4 mm flat, 0.5 m crown radius, 12 mm roller, 5 kN): the slice-averaged FE pressure
+#: was +1.94 % and +3.68 % off on two meshes of the level (the tents' +-2-4 % scatter
+#: along the roller), the load of that slice +0.29 %.
+EDGE_TOLERANCE = {"crowned": 0.05, "crowned_slice_load": 0.01}
 
 #: Raceway block beyond the roller end, in roller lengths L [-]; width (rolling
 #: direction) and depth, in L [-].  The pressure along the roller is coupled through the
@@ -689,6 +691,8 @@ def roller_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="l
     row("edge_pressure", "Pa", p_e, float(cp[k_ce]))
     row("max_pressure", "Pa", float(sp.max()), float(cp.max()))
     row("max_pressure_node", "Pa", float(P.max()), float(cp.max()))
+    k_pk = int(np.argmax(cp))
+    row("peak_slice_load", "N", float(fl[k_pk]), float(c.slice_loads[mid + k_pk]))
     row("approach", "m", approach_fe, float(c.approach))
     row("approach_depth_point", "m", d_fe, float(c.approach) - w_sum)
     row("edge_slice_load", "N", float(fl[-1]), float(c.slice_loads[-1]))

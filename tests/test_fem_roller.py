@@ -81,7 +81,6 @@ def quick_lundberg():
                               mode="half-space")
 
 
-@pytest.mark.slow
 def test_quick_half_space_lundberg(quick_lundberg):
     f = quick_lundberg
     c = f.analytic
@@ -124,6 +123,12 @@ def test_standard_crowned_edge_peak():
     f = _standard(roller.Crowned(4e-3, 0.5))
     r = f.row("max_pressure")
     assert abs(r["error"]) <= fr.EDGE_TOLERANCE["crowned"], r
+    r = f.row("peak_slice_load")
+    assert abs(r["error"]) <= fr.EDGE_TOLERANCE["crowned_slice_load"], r
+    # the load peaks off the centre, where the flat part ends (line_contact: x = 2.34 mm)
+    c = f.analytic
+    assert np.argmax(f.slice_loads) == np.argmax(c.slice_loads[c.n_slices // 2:])
+    assert 1.5e-3 < f.slice_x[np.argmax(f.slice_loads)] < 3.0e-3
 
 
 @pytest.mark.slow
