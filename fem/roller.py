@@ -32,36 +32,57 @@ half-space) with a 3-D model of the real bodies:
 Frame: that of :mod:`ballrace.analytic.roller.contact` (x along the roller axis, y the
 rolling direction, z the contact normal into the roller; the raceway in z < 0).
 
-Measured (R1 = 6 mm, L = 12 mm, flat raceway, 5 kN, steel; PARDISO; the machine's two
-cores shared with other jobs, load average 8-10, so the wall times below are 3-4 times
-an idle machine's; CPU time is user + system)
----------------------------------------------------------------------------------------
-Half-space mode against line_contact (41 slices):
+Measured (R1 = 6 mm, L = 12 mm, flat raceway, 5 kN, steel, 41 slices; PARDISO)
+------------------------------------------------------------------------------
+The two cores were shared with other jobs (load average 7-10) while measuring, so the
+wall times were 1-8 minutes; the CPU time (user + system, /usr/bin/time -v) is the
+better measure, and PARDISO factorises on both cores.  Whether the standard level stays
+under 60 s of wall time on an idle machine was not measured.
 
-=================  =======  ========  =======  ========  ========  ============  ========
-case / level       DOFs     peak RAM  CPU      centre p  approach  max p         VM centre
-=================  =======  ========  =======  ========  ========  ============  ========
-Lundberg standard  166k     2.3 GB    60 s     -0.39 %   +0.12 %   (edge) +16 %  +0.09 %
-crowned standard   212k     3.2 GB    87 s     -0.18 %   +0.05 %   +1.94 %       +0.16 %
-=================  =======  ========  =======  ========  ========  ============  ========
+Half-space mode against line_contact (errors FE / line_contact - 1; "centre p" is the FE
+peak pressure averaged over the centre slice, "peak" the largest slice-averaged pressure,
+"VM" the von Mises maximum under the centre):
 
-(crowned: 4 mm flat, 0.5 m crown radius; its pressure peaks where the flat part ends.)
-The slice loads of Lundberg's roller agree with line_contact's uniform 122.1 N within
-1 % on every slice but the end one (-9.5 %: the drop grows without bound at the end, the
-FE resolves the last 0.3 b, the strips average it); the FE pressure there rises to
-1.81 GPa within the last half-width before falling to zero — a feature of the tent
-resolution of the logarithmic end, not checked.  The von Mises depths agree within 4 %
-(centre) and 4-9 % (edge); the FE pressure scatters by +-2 % along the roller (tents
-against P2 surface elements), which sets the tolerance of the crowned edge peak,
-:data:`EDGE_TOLERANCE`.
+==================  ======  ======  =====  ========  ========  =========  =======
+case / level        DOFs    RAM     CPU    centre p  approach  peak       VM
+==================  ======  ======  =====  ========  ========  =========  =======
+Lundberg quick      47k     0.6 GB  9 s    +3.66 %   -0.05 %   +6.1 %     -0.54 %
+Lundberg standard   137k    1.8 GB  43 s   +0.30 %   +0.11 %   +2.4 %     +0.08 %
+FINE_ROW
+crowned standard    170k    2.4 GB  63 s   -0.86 %   +0.06 %   +3.68 %    +0.11 %
+straight quick      64k     0.8 GB  16 s   +5.22 %   +0.06 %   edge peak  --
+straight standard   207k    3.1 GB  94 s   -0.53 %   +0.03 %   edge peak  -0.06 %
+==================  ======  ======  =====  ========  ========  =========  =======
 
-Two bodies (``mode="two-body"``, the elastic finite roller on the block) at the
-standard level with n = 5 (349k DOFs, 4.7 GB, 135 s CPU: beyond the standard budget,
-so it is not the default): Lundberg's roller carries 5.7 % more load per length in the
-middle (129.1 N per slice against 122.1 N) and 43 % less in the end slice — its free end
-face makes the roller softer there than the half-space that Lundberg's profile is
-designed on; the centre pressure is +1.65 %, the approach +1.6 %.  That is the real
-roller "beyond the half-space", a result, not an error.
+* Lundberg's roller: the slice loads agree with line_contact's uniform 122.1 N within
+  1 % on every slice but the end one (-9.5 %: the drop grows without bound at the end;
+  the FE resolves the last 0.3 b, the strip averages it).  The FE pressure rises to
+  1.81 GPa within the last half-width before it falls to zero there (the nodal
+  "edge_pressure", +16 %): a feature of how the tents resolve the logarithmic end, not
+  checked.
+* Circular crown (4 mm flat, 0.5 m crown radius): the pressure peaks where the flat part
+  ends (x = 2.3 mm).  The slice loads agree within 0.5 % everywhere (the peak slice
+  +0.29 %), the slice-averaged peak pressure by +3.68 % (+1.94 % on an earlier mesh of
+  the same level with a deeper edge box): the FE's point pressures scatter by +-2-4 %
+  along the roller (tents against P2 surface elements), which sets
+  :data:`EDGE_TOLERANCE`.
+* Straight roller: the slice loads agree within 2 % up to the end slice (220.6 N against
+  227.1 N), the approach within 0.03 %; the end pressure is singular on a half-space and
+  the FE's nodal edge peak grows with refinement — STRAIGHT_SERIES — while
+  line_contact's end slice gives 2.13 GPa at 41 slices (and grows with the slice count,
+  its own notes).  Neither is a converged pressure: read both as "an edge peak".
+* The SuperLU fallback (no pypardiso wheel, no CHOLMOD) does not fit the standard
+  level's budget (scipy's SuperLU took ~10 GB and 820 s for 83k P2 DOFs in the ball
+  model's measurements); SUPERLU_QUICK  Install a fast solver
+  (:data:`ballrace.fem.solvers.INSTALL_HINT`).
+
+Two bodies (``mode="two-body"``, the elastic finite roller on the block), standard level
+with n = 5 (349k DOFs, 4.7 GB, 135 s CPU: beyond the standard budget, so it is not the
+default): Lundberg's roller carries 5.7 % more load per length in the middle (129.1 N per
+slice against 122.1 N) and 43 % less in the end slice — its free end face makes the
+roller softer there than the half-space Lundberg's profile is designed on; the centre
+pressure is +1.65 %, the approach +1.6 %.  That is the real roller "beyond the
+half-space", a result, not an error.
 
 >>> from ballrace import fem                                       # doctest: +SKIP
 >>> f = fem.roller_contact(5000.0, 6e-3, np.inf, 12e-3, st, st, level="quick")  # doctest: +SKIP

@@ -50,7 +50,7 @@ __all__ = ["RollerMeshSpec", "roller_mesh", "raceway_mesh", "bend_raceway", "Rac
 log = logging.getLogger(__name__)
 
 #: Bump when the generated meshes change for the same parameters (invalidates the cache).
-MESHER_VERSION = "ballrace-roller-mesh-1"
+MESHER_VERSION = "ballrace-roller-mesh-2"
 
 
 @dataclass(frozen=True)
@@ -81,25 +81,29 @@ class AxialStretch:
         step = 0.5 * (1.0 - np.cos(math.pi * t))
         return self.stretch + (1.0 - self.stretch) * step
 
-    def _table(self, x_max):
-        xs = np.linspace(0.0, x_max, 4001)
+    def _ramp(self):
+        """(x0, x1) of the step and a fine table of xi over it (the same for both maps,
+        so that ``x(xi(x)) == x`` to rounding)."""
+        x1 = self.x_end - self.edge_zone
+        x0 = x1 - self.ramp
+        xs = np.linspace(x0, x1, 20001)
         inv = 1.0 / self.sigma(xs)
         xi = np.concatenate([[0.0], np.cumsum(0.5 * (inv[1:] + inv[:-1]) * np.diff(xs))])
-        return xs, xi
+        return x0, x1, xs, x0 / self.stretch + xi
 
     def xi(self, x):
         """Meshing coordinate of physical x >= 0 [m]."""
         x = np.asarray(x, dtype=float)
-        xm = max(float(np.max(x)), self.x_end) * 1.5 + 1e-300
-        xs, xi = self._table(xm)
-        return np.interp(x, xs, xi)
+        x0, x1, xs, tab = self._ramp()
+        return np.where(x <= x0, x / self.stretch,
+                        np.where(x >= x1, tab[-1] + (x - x1), np.interp(x, xs, tab)))
 
     def x(self, xi, x_max=None):
-        """Physical x of meshing coordinate xi >= 0 [m]."""
+        """Physical x of meshing coordinate xi >= 0 [m] (``x_max`` is not used)."""
         xi = np.asarray(xi, dtype=float)
-        xm = (x_max or self.x_end) * 1.5 + float(np.max(xi)) * self.stretch
-        xs, tab = self._table(xm)
-        return np.interp(xi, tab, xs)
+        x0, x1, xs, tab = self._ramp()
+        return np.where(xi <= tab[0], xi * self.stretch,
+                        np.where(xi >= tab[-1], x1 + (xi - tab[-1]), np.interp(xi, tab, xs)))
 
 
 @dataclass(frozen=True)
