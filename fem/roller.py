@@ -48,12 +48,16 @@ case / level        DOFs    RAM     CPU    centre p  approach  peak       VM
 ==================  ======  ======  =====  ========  ========  =========  =======
 Lundberg quick      47k     0.6 GB  9 s    +3.66 %   -0.05 %   +6.1 %     -0.54 %
 Lundberg standard   137k    1.8 GB  43 s   +0.30 %   +0.11 %   +2.4 %     +0.08 %
-FINE_ROW
+Lundberg fine       301k    4.7 GB  154 s  -0.64 %   +0.11 %   +3.4 %     --
 crowned standard    170k    2.4 GB  63 s   -0.86 %   +0.06 %   +3.68 %    +0.11 %
 straight quick      64k     0.8 GB  16 s   +5.22 %   +0.06 %   edge peak  --
 straight standard   207k    3.1 GB  94 s   -0.53 %   +0.03 %   edge peak  -0.06 %
 ==================  ======  ======  =====  ========  ========  =========  =======
 
+* Convergence (Lundberg, quick / standard / fine): the centre pressure +3.66 / +0.30 /
+  -0.64 % off line_contact (standard to fine: -0.94 points, the size of the tents'
+  scatter), the nodal pressure peak near the end 1.754 / 1.815 / 1.798 GPa (standard to
+  fine -1.0 %), the approach -0.05 / +0.11 / +0.11 %.
 * Lundberg's roller: the slice loads agree with line_contact's uniform 122.1 N within
   1 % on every slice but the end one (-9.5 %: the drop grows without bound at the end;
   the FE resolves the last 0.3 b, the strip averages it).  The FE pressure rises to
@@ -698,7 +702,10 @@ def roller_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="l
     timings["extract"] = time.perf_counter() - t0
     timings["total"] = time.perf_counter() - t_all
 
-    tol = ROLLER_TOLERANCES.get(name, ROLLER_TOLERANCES["standard"])
+    # two bodies: the finite roller departs from line_contact's half-spaces (module
+    # notes) -- its differences are results, no tolerances apply
+    tol = ROLLER_TOLERANCES.get(name, ROLLER_TOLERANCES["standard"]) if mode == "half-space" \
+        else {}
     rows = []
 
     def row(q, unit, fe, an_):
