@@ -72,12 +72,16 @@ straight standard   207k    3.1 GB  94 s   -0.53 %   +0.03 %   edge peak  -0.06 
   :data:`EDGE_TOLERANCE`.
 * Straight roller: the slice loads agree within 2 % up to the end slice (220.6 N against
   227.1 N), the approach within 0.03 %; the end pressure is singular on a half-space and
-  the FE's nodal edge peak grows with refinement — STRAIGHT_SERIES — while
-  line_contact's end slice gives 2.13 GPa at 41 slices (and grows with the slice count,
+  the FE's nodal edge peak grows with refinement — 2.77 / 3.39 / 3.86 GPa at the quick /
+  standard / fine levels (fine: 484k DOFs, 9.0 GB, 392 s CPU; averaged over the end
+  slice 2.38 / not measured / 2.39 GPa) — while line_contact's end slice gives 2.13 GPa at 41 slices (and grows with the slice count,
   its own notes).  Neither is a converged pressure: read both as "an edge peak".
 * The SuperLU fallback (no pypardiso wheel, no CHOLMOD) does not fit the standard
   level's budget (scipy's SuperLU took ~10 GB and 820 s for 83k P2 DOFs in the ball
-  model's measurements); SUPERLU_QUICK  Install a fast solver
+  model's measurements), and not even the quick level's: forced to SuperLU
+  (``solver="superlu"``) the quick level's 47k DOFs took 469 s of CPU time and 1.8 GB
+  (the factorisation alone 466 s single-threaded; the same results as PARDISO).  Install
+  a fast solver
   (:data:`ballrace.fem.solvers.INSTALL_HINT`).
 
 Two bodies (``mode="two-body"``, the elastic finite roller on the block), standard level
