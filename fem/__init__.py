@@ -27,9 +27,11 @@ from .api import (GAPS, LEVELS, MODES, TOLERANCES, TRACTION_TOLERANCES, ContactC
                   ball_case, ball_on_ball, ball_on_groove, ball_on_plane, ball_on_race,
                   groove_case, plane_case, race_case, run_case)
 from .render import render, render_3d
+from .roller import ROLLER_LEVELS, RollerFEResult, RollerLevel, roller_contact
 from .solvers import SOLVERS, available_solvers
 
 __all__ = ["ball_on_race", "ball_on_plane", "ball_on_ball", "ball_on_groove", "run_case",
            "render", "render_3d", "race_case", "plane_case", "ball_case", "groove_case",
            "ContactCase", "FEResult", "LEVELS", "MeshLevel", "MODES", "GAPS", "TOLERANCES",
-           "TRACTION_TOLERANCES", "SOLVERS", "available_solvers"]
+           "TRACTION_TOLERANCES", "SOLVERS", "available_solvers",
+           "roller_contact", "RollerFEResult", "RollerLevel", "ROLLER_LEVELS"]
