@@ -41,7 +41,7 @@ from pathlib import Path
 import numpy as np
 
 __all__ = ["MeshSpec", "TetMesh", "block_mesh", "ball_mesh", "morph_block", "cache_dir",
-           "mesh_hash", "MESHER_VERSION"]
+           "build_cached", "mesh_hash", "MESHER_VERSION"]
 
 log = logging.getLogger(__name__)
 
@@ -279,6 +279,13 @@ def _generate(spec: MeshSpec) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _build(spec: MeshSpec, use_cache: bool) -> TetMesh:
+    return build_cached(spec, use_cache, _generate)
+
+
+def build_cached(spec, use_cache: bool, generate) -> TetMesh:
+    """The mesh of ``spec`` from the cache folder, or made by ``generate(spec) -> (points,
+    tets)`` and stored there (written to a temporary name, then moved, so parallel
+    workers never read half a file).  ``spec`` needs ``kind`` and ``key()``."""
     path = cache_dir() / f"{spec.kind}-{spec.key()}.vtu"
     if use_cache and path.exists():
         import meshio
@@ -288,7 +295,7 @@ def _build(spec: MeshSpec, use_cache: bool) -> TetMesh:
         return TetMesh(points=np.asarray(m.points, dtype=float),
                        tets=np.asarray(m.cells_dict["tetra"], dtype=np.int64), spec=spec)
     t0 = time.perf_counter()
-    pts, tets = _generate(spec)
+    pts, tets = generate(spec)
     dt = time.perf_counter() - t0
     log.info("mesh %s: %d nodes, %d tets in %.2f s", spec.kind, len(pts), len(tets), dt)
     if use_cache:

@@ -36,13 +36,11 @@ import hashlib
 import json
 import logging
 import math
-import os
-import time
 from dataclasses import asdict, dataclass
 
 import numpy as np
 
-from .contact import GMSH_OPTIONS, TetMesh, cache_dir
+from .contact import GMSH_OPTIONS, TetMesh, build_cached
 
 __all__ = ["RollerMeshSpec", "roller_mesh", "raceway_mesh", "bend_raceway", "RacewaySurface",
            "RollerSurface", "AxialStretch", "MESHER_VERSION"]
@@ -295,26 +293,7 @@ def _generate(spec: RollerMeshSpec):
 
 
 def _build(spec: RollerMeshSpec, use_cache: bool) -> TetMesh:
-    path = cache_dir() / f"{spec.kind}-{spec.key()}.vtu"
-    if use_cache and path.exists():
-        import meshio
-
-        m = meshio.read(path)
-        log.info("mesh %s: loaded %s", spec.kind, path)
-        return TetMesh(points=np.asarray(m.points, dtype=float),
-                       tets=np.asarray(m.cells_dict["tetra"], dtype=np.int64), spec=spec)
-    t0 = time.perf_counter()
-    pts, tets = _generate(spec)
-    dt = time.perf_counter() - t0
-    log.info("mesh %s: %d nodes, %d tets in %.2f s", spec.kind, len(pts), len(tets), dt)
-    if use_cache:
-        import meshio
-
-        path.parent.mkdir(parents=True, exist_ok=True)
-        tmp = path.with_suffix(f".{os.getpid()}.vtu")
-        meshio.write(tmp, meshio.Mesh(pts, [("tetra", tets)]), binary=True)
-        os.replace(tmp, path)
-    return TetMesh(points=pts, tets=tets, spec=spec, seconds=dt)
+    return build_cached(spec, use_cache, _generate)
 
 
 def _common(half_length, strip, layer, depth, column, edge_zone, h, h_edge, h_far, growth,
