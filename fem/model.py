@@ -98,22 +98,12 @@ class PressureGrid:
         j = np.clip(np.floor(v).astype(np.int64), 0, self.ny - 1)
         fu = np.clip(u - i, 0.0, 1.0)
         fv = np.clip(v - j, 0.0, 1.0)
-        pid = np.arange(x.size)
-        rows, cols, vals = [], [], []
-        for di, dj, w in ((0, 0, (1 - fu) * (1 - fv)), (1, 0, fu * (1 - fv)),
-                          (0, 1, (1 - fu) * fv), (1, 1, fu * fv)):
-            rows.append(pid)
-            cols.append((i + di) * (self.ny + 1) + (j + dj))
-            vals.append(np.where(inside, w, 0.0))
-        return np.concatenate(rows), np.concatenate(cols), np.concatenate(vals)
+        return bilinear_weights(i, j, fu, fv, inside, self.ny + 1)
 
     def evaluate(self, lam, x, y):
         """Pressure ``sum lambda_k phi_k`` at points (x, y) [Pa]."""
-        x = np.asarray(x, dtype=float)
-        r, c, w = self.weights(x, y)
-        out = np.zeros(x.size)
-        np.add.at(out, r, w * np.asarray(lam)[c])
-        return out.reshape(x.shape)
+        return evaluate_tents(self, lam, x, y)
+
 
     def integrals(self, gap, order: int = 6) -> dict:
         """Tent integrals over the grid (Gauss, ``order`` points per direction per cell).
@@ -182,6 +172,29 @@ class PressureGrid:
         i, j = np.meshgrid(np.arange(self.nx + 1), np.arange(self.ny + 1), indexing="ij")
         mask = (i == self.nx) | (j == self.ny)
         return np.flatnonzero(mask.ravel())
+
+
+def bilinear_weights(i, j, fu, fv, inside, n_y_nodes: int):
+    """Bilinear tent weights of points in cells (i, j) at fractions (fu, fv) [-]:
+    (point index, tent index k = i * n_y_nodes + j, weight), 4 per point, zero where not
+    ``inside`` (shared by the uniform and the graded grids)."""
+    pid = np.arange(np.size(i))
+    rows, cols, vals = [], [], []
+    for di, dj, w in ((0, 0, (1 - fu) * (1 - fv)), (1, 0, fu * (1 - fv)),
+                      (0, 1, (1 - fu) * fv), (1, 1, fu * fv)):
+        rows.append(pid)
+        cols.append((i + di) * n_y_nodes + (j + dj))
+        vals.append(np.where(inside, w, 0.0))
+    return np.concatenate(rows), np.concatenate(cols), np.concatenate(vals)
+
+
+def evaluate_tents(grid, lam, x, y):
+    """Pressure ``sum lambda_k phi_k`` at points (x, y) of a grid with ``weights`` [Pa]."""
+    x = np.asarray(x, dtype=float)
+    r, c, w = grid.weights(x, y)
+    out = np.zeros(x.size)
+    np.add.at(out, r, w * np.asarray(lam)[c])
+    return out.reshape(x.shape)
 
 
 # --------------------------------------------------------------------------- bodies

@@ -110,6 +110,8 @@ from ballrace.analytic._checks import check_choice
 from ballrace.analytic.materials import Material
 from ballrace.analytic.roller import ProfileContext, line_contact, subsurface_stress
 
+from . import model
+
 __all__ = ["RollerLevel", "ROLLER_LEVELS", "ROLLER_TOLERANCES", "RollerFEResult",
            "TensorGrid", "roller_contact"]
 
@@ -220,23 +222,11 @@ class TensorGrid:
         inside = (x >= 0) & (x <= self.Lx) & (y >= 0) & (y <= self.Ly)
         i, fu = self._cell(x, self.xn)
         j, fv = self._cell(y, self.yn)
-        ny = self.yn.size
-        pid = np.arange(x.size)
-        rows, cols, vals = [], [], []
-        for di, dj, w in ((0, 0, (1 - fu) * (1 - fv)), (1, 0, fu * (1 - fv)),
-                          (0, 1, (1 - fu) * fv), (1, 1, fu * fv)):
-            rows.append(pid)
-            cols.append((i + di) * ny + (j + dj))
-            vals.append(np.where(inside, w, 0.0))
-        return np.concatenate(rows), np.concatenate(cols), np.concatenate(vals)
+        return model.bilinear_weights(i, j, fu, fv, inside, self.yn.size)
 
     def evaluate(self, lam, x, y):
         """Pressure at points [Pa]."""
-        x = np.asarray(x, dtype=float)
-        r, c, w = self.weights(x, y)
-        out = np.zeros(x.size)
-        np.add.at(out, r, w * np.asarray(lam)[c])
-        return out.reshape(x.shape)
+        return model.evaluate_tents(self, lam, x, y)
 
     def integrals(self, gap, order: int = 6) -> dict:
         """``m = int phi_k``, ``G0 = int phi_k g0``, ``Mx = int phi_k x`` per tent."""
