@@ -41,7 +41,7 @@ from pathlib import Path
 import numpy as np
 
 __all__ = ["MeshSpec", "TetMesh", "block_mesh", "ball_mesh", "morph_block", "cache_dir",
-           "build_cached", "mesh_hash", "MESHER_VERSION"]
+           "build_cached", "extract_tets", "mesh_hash", "MESHER_VERSION"]
 
 log = logging.getLogger(__name__)
 
@@ -216,7 +216,9 @@ def deterministic_options(gmsh) -> None:
         gmsh.option.setNumber(name, value)
 
 
-def _extract(gmsh) -> tuple[np.ndarray, np.ndarray]:
+def extract_tets(gmsh) -> tuple[np.ndarray, np.ndarray]:
+    """The current gmsh model's tetrahedra: points (n, 3) [m] and connectivity (m, 4),
+    renumbered compactly over the nodes the tetrahedra use."""
     tags, coords, _ = gmsh.model.mesh.getNodes()
     pts = coords.reshape(-1, 3)
     etypes, _, enodes = gmsh.model.mesh.getElements(3)
@@ -268,7 +270,7 @@ def _generate(spec: MeshSpec) -> tuple[np.ndarray, np.ndarray]:
         else:
             raise ValueError(f"kind must be 'block' or 'ball'; got {spec.kind!r}")
         gmsh.model.mesh.generate(3)
-        pts, tets = _extract(gmsh)
+        pts, tets = extract_tets(gmsh)
     finally:
         gmsh.finalize()
     pts[:, 1] *= s

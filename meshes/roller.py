@@ -40,7 +40,7 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
-from .contact import GMSH_OPTIONS, TetMesh, build_cached
+from .contact import TetMesh, build_cached, deterministic_options, extract_tets
 
 __all__ = ["RollerMeshSpec", "roller_mesh", "raceway_mesh", "bend_raceway", "RacewaySurface",
            "RollerSurface", "AxialStretch", "MESHER_VERSION"]
@@ -231,33 +231,13 @@ def _size_field(gmsh, spec: RollerMeshSpec, zsign: float, z0: float) -> None:
     gmsh.model.mesh.field.setAsBackgroundMesh(f)
 
 
-def _extract(gmsh):
-    tags, coords, _ = gmsh.model.mesh.getNodes()
-    pts = coords.reshape(-1, 3)
-    etypes, _, enodes = gmsh.model.mesh.getElements(3)
-    tets = None
-    for et, en in zip(etypes, enodes):
-        if et == 4:
-            tets = en.reshape(-1, 4)
-    if tets is None:
-        raise RuntimeError("gmsh produced no tetrahedra")
-    order = np.argsort(tags)
-    tags, pts = tags[order], pts[order]
-    used = np.unique(tets)
-    idx = np.searchsorted(tags, used)
-    remap = np.full(int(tags.max()) + 1, -1, dtype=np.int64)
-    remap[used] = np.arange(used.size)
-    return pts[idx].copy(), remap[tets].astype(np.int64)
-
-
 def _generate(spec: RollerMeshSpec):
     import gmsh
 
     ax = spec.axial
     gmsh.initialize(interruptible=False)
     try:
-        for name, value in GMSH_OPTIONS.items():
-            gmsh.option.setNumber(name, value)
+        deterministic_options(gmsh)
         gmsh.model.add(spec.kind)
         occ = gmsh.model.occ
         if spec.kind == "raceway":
@@ -276,7 +256,7 @@ def _generate(spec: RollerMeshSpec):
         else:
             raise ValueError(f"kind must be 'roller' or 'raceway'; got {spec.kind!r}")
         gmsh.model.mesh.generate(3)
-        pts, tets = _extract(gmsh)
+        pts, tets = extract_tets(gmsh)
     finally:
         gmsh.finalize()
     scale = max(spec.size)
