@@ -15,9 +15,23 @@ import logging as _logging
 
 from ballrace.analytic.materials import BEARING_STEEL, SILICON_NITRIDE, Material
 from ballrace.analytic.bearing import BallBearing
-from ballrace.analytic.roller.bearing import RollerBearing
 
 __version__ = "0.1.0"
 __all__ = ["Material", "BallBearing", "RollerBearing", "BEARING_STEEL", "SILICON_NITRIDE", "__version__"]
 
 _logging.getLogger(__name__).addHandler(_logging.NullHandler())
+
+
+def __getattr__(name):
+    # the roller sub-package (its ratings, life, line contact) is imported on first use,
+    # so that ``import ballrace`` and the commands that need no roller do not pay for it
+    if name == "RollerBearing":
+        from ballrace.analytic.roller.bearing import RollerBearing
+
+        globals()["RollerBearing"] = RollerBearing
+        return RollerBearing
+    raise AttributeError(f"module 'ballrace' has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(set(globals()) | set(__all__))
