@@ -66,7 +66,7 @@ import numpy as np
 from scipy import special
 
 from ._checks import (MAX_MAGNITUDE, MIN_MAGNITUDE, as_array, broadcast, check_choice,
-                      check_instance, check_nonnegative, check_positive)
+                      check_nonnegative, check_positive)
 from .materials import Material, effective_modulus
 
 __all__ = [
@@ -300,7 +300,6 @@ def _table_lookup(v: np.ndarray):
     t = x - i
     u0, u1 = un[i], un[i + 1]
     s0, s1 = sn[i] * h, sn[i + 1] * h
-    t2 = t * t
     # Hermite basis: value and derivative (d/dt) of the cubic
     du = u1 - u0
     c2 = 3.0 * du - 2.0 * s0 - s1

@@ -1062,7 +1062,7 @@ def _damped_newton(sysm, x, rtol, max_iter, min_step=2.0**-39, chord_steps=True)
     it = chord = 0
     step_cap = POLICY.highspeed_step * sysm.m.D
     short = 0
-    lu = None
+    lu = lu_last = None
     damped = False
     _getrf, _getrs = _lapack()
     while err > rtol and it < max_iter and short < 5:

@@ -2110,7 +2110,7 @@ def thrust(bearing: BallBearing, Fa, *, rtol: float = 1e-13, max_iter: int = 100
     Lc = np.zeros((Fv.size, 5))
     Lc[:, 0] = Fv
     _check_loads(model, Lc)
-    bf, A, Z = model.beta_f, model.A, model.Z
+    bf, A = model.beta_f, model.A
     beta = _thrust_angle(model, Fv, rtol, max_iter)
     dt = A * np.sin(beta - bf) / np.cos(beta)                         # H&D eq. 3.60
     u = np.zeros((Fv.size, 5))

@@ -34,7 +34,6 @@ from __future__ import annotations
 
 import logging
 import os
-from typing import Callable
 
 import numpy as np
 

@@ -551,9 +551,9 @@ TABLE.update({
 })
 METHOD_OF = {"bearing.BallBearing": ANGULAR}
 
-#: Known gaps (issue 14 items 7-9) in the solver modules, one test id each; they
+#: Known gaps in the solver modules, one test id each; they
 #: are strict xfails, so a fix makes the test XPASS and fail: then delete its line.
-KNOWN: set[str] = set()   # none left (issue 14); add an id here only with an issue for it
+KNOWN: set[str] = set()   # none left; add an id here only for a tracked gap
 
 
 def _public():
@@ -633,7 +633,7 @@ def test_shapes_that_do_not_broadcast_name_both_arguments(key, a, b):
     assert a in msg and b in msg and "broadcast" in msg, msg
 
 
-# ------------------------------------------------------------------ regressions (issue 14)
+# ------------------------------------------------------------------ regressions
 def test_material_refuses_text_booleans_and_arrays():
     """Issue 14 item 7: these were accepted (numpy turns "1.0" and True into 1.0)."""
     for bad in ("1.0", True, np.array([200e9, 210e9]), [200e9]):

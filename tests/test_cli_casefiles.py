@@ -1,4 +1,4 @@
-"""docs/casefiles.md: every example on the page loads and runs (issue 11 item 14).
+"""docs/casefiles.md: every example on the page loads and runs.
 
 The page holds one complete example of each case file, in this order: bearing case,
 shaft case, FE case, validation case (the shaft example is checked in

@@ -1,4 +1,4 @@
-"""What a new user meets at the command line (issue 11 items 1-8, 10, 11; issue 14 item 10b).
+"""What a new user meets at the command line.
 
 Each test is one finding: a silent misread, a traceback, an unclear error or output that
 does not fit a terminal.  CLI runs go through typer's CliRunner (stdout and stderr apart)
@@ -492,7 +492,7 @@ def test_pyproject_uses_spdx_license_and_lists_data_folders():
         assert any(f for pattern in pk["package-data"][data] for f in folder.glob(pattern))
 
 
-# ----------------------------------------------------------------- issue 14 item 10b
+# ----------------------------------------------------------------- earlier regressions
 NASTY = '[/bold] x [link=http://evil.example]click[/link] \\u001b]8;;http://e\\u001b\\\\y [m]'
 
 
@@ -543,7 +543,7 @@ def test_literal_escapes_controls_and_bidi_overrides_only():
 
 
 def test_a_new_block_of_bearing_rows_is_one_more_section():
-    """How issue 12's ISO life rows join the bearing output: (title, [(name, SI, kind)])."""
+    """How the ISO life rows join the bearing output: (title, [(name, SI, kind)])."""
     from rich.console import Console
 
     from ballrace.casefiles.bearing import load_case
@@ -552,7 +552,7 @@ def test_a_new_block_of_bearing_rows_is_one_more_section():
 
     secs = sections(analyze(load_case(EXAMPLES / "bearing_209.toml")))
     assert [t for t, _ in secs][1:3] == ["Life", "Lubricant film (Hamrock & Dowson 1977)"]
-    assert secs[-1][0].startswith("Life: ISO 281:2007")       # the ISO block (issue 12)
+    assert secs[-1][0].startswith("Life: ISO 281:2007")       # the ISO block
     secs.append(("ISO 281 life", [("viscosity ratio kappa", 1.5, None),
                                   ("L_nm", 123.4, "=1e6 rev"),
                                   ("operating clearance", 10e-6, "small"),

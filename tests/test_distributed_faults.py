@@ -1,4 +1,4 @@
-"""Distributed validation runs under faults (issue 14 items 10b and 13).
+"""Distributed validation runs under faults.
 
 The slow tests start a real ``dask scheduler`` and ``dask worker`` processes on
 127.0.0.1 (no nanny, so a killed worker stays dead), run ``ballrace validate

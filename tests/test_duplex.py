@@ -174,7 +174,7 @@ def test_pair_equilibrium_random(P, Fa, Fr, arrangement):
     assert abs(r.radial_loads.sum() - Fr) < 1e-8 * scale
 
 
-def test_issue14_item5_radial_overload_is_reported_like_the_axial_one():
+def test_radial_overload_is_reported_like_the_axial_one():
     # 3.3e7 N radial on a 5-ball pair ended with "did not converge: relative residual 0.71"
     brg = ballrace.BallBearing(12.7e-3, 5, 40e-3, 0.52, 0.52, free_contact_angle=np.radians(25))
     pair = dx.DuplexPair(brg, "DB", preload=100.0)

@@ -1,4 +1,4 @@
-"""Standard-level FE checks (issue 10 tolerances); run by ``make test-fem`` (``-m slow``).
+"""Standard-level FE checks with their tolerances; run by ``make test-fem`` (``-m slow``).
 
 Tolerances at "standard" (:data:`ballrace.fem.TOLERANCES`): a, b, p_max 0.5 %, approach
 (the FE estimate of Hertz's delta) and the depth-point approach 1 %, tau0, tau at

@@ -1,4 +1,4 @@
-"""Fuzz suite for the solver entry points (issue 14 item 11).
+"""Fuzz suite for the solver entry points.
 
 Hypothesis draws valid bearings (3 balls to the largest set that fits, D from 0.5 to
 60 mm, pitch ratio D/d_m up to 0.85, conformities 0.505-0.6, free contact angle 0-89 deg
@@ -407,7 +407,7 @@ def catalogue_bearings(draw):
 
 @fuzz_test('highspeed (catalogue)', 16, 0.01)
 def test_fuzz_highspeed_catalogue(data):
-    """The population of issue 21: catalogue bearings, loads 1e-3-0.5 C (axial, radial or
+    """The population of reported hard cases: catalogue bearings, loads 1e-3-0.5 C (axial, radial or
     combined), d_m n 5e4-1.5e6 mm rpm, all three race controls.  Every result must pass
     the independent re-derivation; ConvergenceError must say where the equilibrium ends."""
     brg = data.draw(catalogue_bearings())

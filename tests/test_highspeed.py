@@ -380,10 +380,10 @@ def test_inner_control_light_inner_contact_converges_and_flags_slip():
                        match=r"residual .* after \d+ Newton iterations.*control='outer'"):
         hs.solve(BRG, rtol=1e-300, **kw)
 
-def test_issue14_item3_outer_ring_rotation_without_inner_speed():
+def test_outer_ring_rotation_without_inner_speed():
     # 6 balls, D = 1.62 mm, P_d = 30.3 um, Fr = 175.7 N, outer ring at 66.1 rad/s, outer
     # control, Jones's per-ball orbit: "Rx must be finite; got nan" (a far-side ball's open
-    # contact took the groove-centre line's angle near pi into the kinematics).  The issue
+    # contact took the groove-centre line's angle near pi into the kinematics).  The report
     # gives no conformities; f_i = 0.505, f_o = 0.51 reproduce the NaN.
     brg = ballrace.BallBearing(1.62e-3, 6, 10.5e-3, 0.505, 0.51, diametral_clearance=30.3e-6)
     r = hs.solve(brg, Fr=175.7, speed_outer=66.1, control="outer", orbital="ball")
@@ -398,7 +398,7 @@ def test_issue14_item3_outer_ring_rotation_without_inner_speed():
     assert np.allclose(r.orbital_speed[loaded] / 66.1, 0.5 * (1 + 1.62 / 10.5), rtol=0.02)
 
 
-def test_issue14_item5_overload_reported_like_the_static_solver():
+def test_overload_reported_like_the_static_solver():
     brg = ballrace.BallBearing(22.225e-3, 16, 125.26e-3, 0.5232, 0.5232,
                                free_contact_angle=np.radians(40))
     with pytest.raises(ValueError, match="beyond the load-deflection range"):
@@ -407,7 +407,7 @@ def test_issue14_item5_overload_reported_like_the_static_solver():
         ld.solve(brg, Fa=1e9)
 
 
-# ----------------------------------------------------------------- issue 21
+# ----------------------------------------------------------------- convergence of the high-speed solver
 from hsref import rederive_highspeed  # noqa: E402
 
 STEEL208 = ballrace.Material(E=208e9, nu=0.3, density=7850.0)
@@ -420,7 +420,7 @@ def _reproducer(D, Z, dm, fi, fo, angle_deg, **run):
                                  material=STEEL208), run)
 
 
-# the four reproducers of issue 21: (bearing, loads and speed)
+# four reported cases: (bearing, loads and speed)
 ISSUE21 = {
     "40deg-light-combined-inner": _reproducer(
         0.011472, 11, 0.05729, 0.5068, 0.5133, 40.0,
@@ -439,7 +439,7 @@ ISSUE21 = {
 
 @pytest.mark.parametrize("gyro", ["harris", "none"])
 @pytest.mark.parametrize("case", list(ISSUE21))
-def test_issue21_reproducers_converge_correctly_or_say_why(case, gyro):
+def test_reproducers_converge_correctly_or_say_why(case, gyro):
     """Each reproducer either converges to a result that the independent re-derivation
     (tests/hsref.py: deflections from the ball positions and groove centres, Q from
     hertz.contact_stiffness, half-torus grooves, ball and ring balances from the REPORTED
@@ -465,7 +465,7 @@ def test_issue21_reproducers_converge_correctly_or_say_why(case, gyro):
         assert any("90 deg or more from the groove bottom" in w for w in r.warnings)
 
 
-def test_issue21_light_combined_flags_balls_past_the_groove_edge():
+def test_light_combined_flags_balls_past_the_groove_edge():
     """40 deg, tight inner (f_i 0.5068) / loose outer (0.5133) groove, 39 N thrust + 28 N
     radial at d_m n 4e5: the far-side balls' inner lines of centres lie beyond 90 deg from
     the groove bottom while the ball overlaps the full torus (the ball would ride on the
@@ -486,7 +486,7 @@ def test_issue21_light_combined_flags_balls_past_the_groove_edge():
     assert np.all(r.inner_deflections[past] < 0.05 * D)
 
 
-def test_issue21_thrust_needs_an_inner_contact_past_the_groove_edge():
+def test_thrust_needs_an_inner_contact_past_the_groove_edge():
     """Reproducer 4 (40 deg, f_i 0.5109 / f_o 0.54, 5 % C thrust at d_m n 1e6, outer-race
     control, Harris gyroscopics): followed in speed, the inner contact angle reaches the
     groove edge before the full speed.  Independent check: Harris's pure-thrust equations
@@ -507,7 +507,7 @@ def test_issue21_thrust_needs_an_inner_contact_past_the_groove_edge():
     assert np.degrees(ai) > 90.0
 
 
-def test_issue21_inner_control_friction_beyond_the_load_is_named():
+def test_inner_control_friction_beyond_the_load_is_named():
     """Reproducer 3 (25 deg, light load, d_m n 1.4e6, inner-race control, Harris
     gyroscopics): the branch followed from the static solution ends where the friction
     that resists M_g at the inner race is several times the inner contact load; the error
@@ -519,7 +519,7 @@ def test_issue21_inner_control_friction_beyond_the_load_is_named():
     assert rederive_highspeed(brg, r) == []
 
 
-def test_issue21_bearing_at_zero_speed_equals_static_model():
+def test_bearing_at_zero_speed_equals_static_model():
     """The bearing of reproducer 1 under its load at zero speed: the same ball loads and
     angles as the static model (loaddist, rings parallel; loads 1e-9 of the largest,
     angles of loaded balls 1e-9 rad), and at 1 rad/s within 1e-4 (F_c ~ omega^2),
@@ -607,7 +607,7 @@ def test_tight_inner_loose_outer_light_preload_is_not_silent():
     assert rederive_highspeed(brg, r) == []
 
 
-# ------------------------------------------------- fast paths of the solver (issue 22)
+# ------------------------------------------------- fast paths of the solver
 def _near_solution_system(kw, control="outer", gyroscopic="harris", orbital="cage",
                           tilt="fixed", seed=0):
     """The solver's system at a state 1e-4 (relative) off a solved equilibrium."""

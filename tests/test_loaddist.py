@@ -483,7 +483,7 @@ def test_random_bearings_and_loads(case):
         assert np.allclose(t.ball_loads, r.ball_loads, rtol=1e-7)
 
 
-# --------------------------------------------------------------------------- issue 14 regressions
+# --------------------------------------------------------------------------- regressions
 def _radial_reference(brg, Fr, clearance):
     """Independent 1-D radial solution (H&D 1981 eqs. 3.39-3.42, centred rings, every
     contact angle 0 so K_n = K_n(0)): bisection on delta_r."""
@@ -505,7 +505,7 @@ def _radial_reference(brg, Fr, clearance):
     (BallBearing(12.7e-3, 9, 65e-3, 0.52, 0.52, diametral_clearance=0.254e-3), 5000.0),
     (ricci218(free_contact_angle=np.radians(60)), 17800.0),
 ])
-def test_issue14_radial_landing_on_first_contact_is_not_equilibrium(brg, Fr):
+def test_radial_landing_on_first_contact_is_not_equilibrium(brg, Fr):
     # Newton's trust-radius steps landed exactly on first contact, where Q = 0 and the
     # round-off floor accepted a residual of 1.0 (Q_max = 3.8e-19 N, L10 = 6e67)
     from ballrace.analytic import life
@@ -520,14 +520,14 @@ def test_issue14_radial_landing_on_first_contact_is_not_equilibrium(brg, Fr):
     assert np.allclose(r2.max_ball_load, Qref, rtol=1e-9)
 
 
-def test_issue14_floor_never_accepts_before_contact():
+def test_floor_never_accepts_before_contact():
     # the round-off floor is 0 while no ball is loaded, and capped at 1e-9 (100 rtol)
     assert newton.roundoff_floor(1e-12, 0.0, 1e-4) == 0.0
     assert newton.roundoff_floor(1e-12, 1e-30, 1e-4) == pytest.approx(1e-9)
     assert newton.roundoff_floor(1e-12, 1e-6, 1e-4) == pytest.approx(1e-10)
 
 
-def test_issue14_nan_is_not_convergence():
+def test_nan_is_not_convergence():
     brg = ricci218()
     with pytest.raises(ValueError, match="initial must be within"):
         brg.solve(Fa=17800.0, initial=1e308)
@@ -544,7 +544,7 @@ def test_issue14_nan_is_not_convergence():
 
 
 @pytest.mark.parametrize("bf", [np.pi / 2 - 1e-14, np.pi / 2 - 1e-8, np.pi / 2 - 1e-4])
-def test_issue14_thrust_near_90_degrees(bf):
+def test_thrust_near_90_degrees(bf):
     # at pi/2 - 1e-14 thrust() returned Q = 3.26e6 N (residual 16) where solve gives 1112.5 N
     brg = ricci218(free_contact_angle=bf)
     t, s = brg.thrust(17800.0), brg.solve(Fa=17800.0)
@@ -555,7 +555,7 @@ def test_issue14_thrust_near_90_degrees(bf):
     assert t.max_ball_load == pytest.approx(1112.5, rel=1e-5)
 
 
-def test_issue14_thrust_light_load():
+def test_thrust_light_load():
     brg = ricci218()
     t = brg.thrust(1e-6)                                  # residual was 1.8e-8
     assert t.relative_residual < RTOL_EQ
@@ -563,7 +563,7 @@ def test_issue14_thrust_light_load():
     assert np.allclose(t.ball_loads, Q, rtol=1e-12)
 
 
-def test_issue14_eccentric_thrust_arrays_converge_per_case():
+def test_eccentric_thrust_arrays_converge_per_case():
     brg = ricci218()
     r = brg.eccentric_thrust([17800.0, 100.0], 0.0508)   # was "could not broadcast"
     for k, Fa in enumerate((17800.0, 100.0)):
@@ -576,14 +576,14 @@ def test_issue14_eccentric_thrust_arrays_converge_per_case():
 
 
 @pytest.mark.parametrize("Fa", [0.1, 1e-2, 1e-4])
-def test_issue14_eccentric_thrust_tiny_loads_equal_thrust(Fa):
+def test_eccentric_thrust_tiny_loads_equal_thrust(Fa):
     brg = ricci218()
     r, t = brg.eccentric_thrust(Fa, 0.0), brg.thrust(Fa)   # had no round-off floor
     assert r.relative_residual < RTOL_EQ
     assert np.allclose(r.ball_loads, t.ball_loads, rtol=1e-9)
 
 
-def test_issue14_eccentric_thrust_robust_at_large_eccentricity():
+def test_eccentric_thrust_robust_at_large_eccentricity():
     # a fixed-seed sweep of feasible inputs, e up to 0.9 d_e/2 (27 % failed before, 62 % at
     # e/R_i = 0.6-0.9): every case converges and satisfies Ricci's eqs. (30)-(31)
     rng = np.random.default_rng(14)
@@ -608,7 +608,7 @@ def test_issue14_eccentric_thrust_robust_at_large_eccentricity():
         n += 1
 
 
-def test_issue14_item1_eccentric_thrust_singular_and_beyond_capacity():
+def test_eccentric_thrust_singular_and_beyond_capacity():
     # 3 balls, hybrid: LinAlgError "Singular matrix" before; now the solve() answer
     brg = BallBearing(4.55e-3, 3, 7.81e-3, 0.5367, 0.5230, free_contact_angle=0.2425,
                       ball_material=ballrace.SILICON_NITRIDE)
@@ -623,8 +623,8 @@ def test_issue14_item1_eccentric_thrust_singular_and_beyond_capacity():
         brg5.eccentric_thrust(4.70, 24.1e-3)
 
 
-def test_issue14_item2_angles_in_range_and_life_accepts_every_result():
-    # 7 balls, D = 3.14 mm, P_d = 51.9 um (conformities not given in the issue: 0.52):
+def test_angles_in_range_and_life_accepts_every_result():
+    # 7 balls, D = 3.14 mm, P_d = 51.9 um (conformities not given in the report: 0.52):
     # at Fr = 110.6 kN a ball approach exceeds 0.1 D -> the documented overload error
     from ballrace.analytic import life
     brg = BallBearing(3.14e-3, 7, 13.4e-3, 0.52, 0.52, diametral_clearance=51.9e-6)
@@ -646,7 +646,7 @@ def test_issue14_item2_angles_in_range_and_life_accepts_every_result():
     assert r.relative_residual < RTOL_EQ and np.all(np.abs(r.contact_angles) <= np.pi / 2)
 
 
-def test_issue14_item4_near_zero_loads_with_clearance():
+def test_near_zero_loads_with_clearance():
     brg = BallBearing(9.86e-3, 4, 21.9e-3, 0.52, 0.52, diametral_clearance=67.6e-6)
     r = brg.solve(Fa=-1.2e-3, Fz=-44e-3, Mz=-14e-6)            # residual 1.2e-2 before
     assert r.relative_residual < RTOL_EQ
@@ -655,7 +655,7 @@ def test_issue14_item4_near_zero_loads_with_clearance():
     assert np.all(r.relative_residual < RTOL_EQ)
 
 
-def test_issue14_fuzz_loaded_ball_at_minus_90_degrees_keeps_its_sign():
+def test_fuzz_loaded_ball_at_minus_90_degrees_keeps_its_sign():
     # found by `make fuzz`: 3 balls, pure tilting moment; balls 2 and 3 loaded at
     # beta = -/+ pi/2 in floating point; folding -pi/2 to +pi/2 flipped a thrust component
     brg = BallBearing(0.004153618540158789, 3, 0.004886610047245634, 0.505, 0.505,

@@ -242,7 +242,7 @@ def test_teach_subsurface_writes_png(tmp_path):
     assert "max shear" in r.output and "0.31" in r.output
 
 
-# ------------------------------------------------------------------ issue 14: nothing that cannot fail
+# ------------------------------------------------------------------ nothing that cannot fail
 @pytest.mark.parametrize("expected, field", [
     ('expected.a = { value = "0.3244 mm", atol = "inf m", reason = "r" }', "expected.a.atol"),
     ('expected.a = { value = "1e400 m", rtol = 1e-3, reason = "r" }', "expected.a.value"),

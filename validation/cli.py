@@ -6,7 +6,6 @@ The library logs; this module prints (rich).  Heavy imports happen inside the co
 from __future__ import annotations
 
 import logging
-import sys
 import textwrap
 from pathlib import Path
 from typing import Annotated, Optional
