@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Optional
 
 import numpy as np
 
@@ -375,6 +376,14 @@ def analyze_roller(case) -> BearingAnalysis:
                      f"{b.design_load:.4g} N (4000 MPa at the inner contact of a uniformly "
                      "loaded roller)")
 
+    half_space = _roller_half_space(res, p_in, p_out)
+    if half_space is not None:
+        notes.append(f"half-space: the finite line contact of the most loaded roller "
+                     f"({half_space['roller'] + 1}) at the {half_space['raceway']} raceway, "
+                     "its slices coupled through the elastic half-space (roller_contact), and "
+                     "the stresses below it (subsurface_stress); read an end value of a "
+                     "straight or edge-loaded roller as an edge peak that grows with the "
+                     "slice count")
     tilts = np.asarray(res.roller_tilts, dtype=float)
     values = {
         "title": case.title,
@@ -405,11 +414,33 @@ def analyze_roller(case) -> BearingAnalysis:
             "slice_pressure_outer": [_list(row) for row in p_out],
             "displacements": _list(res.displacements), "loads": _list(res.loads),
             "max_roller_load": float(np.max(Q)), "max_pressure": float(res.max_pressure),
+            "half_space": half_space,
         },
         "life": out_life,
     }
     return BearingAnalysis(case=case, method=method, distribution=res, values=values,
                            notes=tuple(notes))
+
+
+def _roller_half_space(res, p_in, p_out) -> Optional[dict]:
+    """The most loaded roller on the half-space at the raceway of the larger lamina
+    pressure: its line contact's pressure peak and the von Mises / Tresca maxima below it
+    (SI), or None without load."""
+    raceway = "inner" if p_in.max() >= p_out.max() else "outer"
+    j = res.most_loaded_roller(raceway)
+    c = res.roller_contact(j, raceway)
+    if not c.load > 0.0:
+        return None
+    s = res.subsurface(raceway, roller=j)
+    k, i = int(np.argmax(c.pressure)), int(np.argmax(s.von_mises_max))
+    t = int(np.argmax(s.tresca_max))
+    return {"raceway": raceway, "roller": j, "load": float(c.load),
+            "x": _list(c.x), "pressure": _list(c.pressure),
+            "peak_pressure": float(c.pressure[k]), "peak_pressure_x": float(c.x[k]),
+            "von_mises_max": float(s.von_mises_max[i]),
+            "von_mises_depth": float(s.von_mises_depth[i]), "von_mises_x": float(s.x[i]),
+            "tresca_max": float(s.tresca_max[t]), "tresca_depth": float(s.tresca_depth[t]),
+            "tresca_x": float(s.x[t])}
 
 
 def _list(x):

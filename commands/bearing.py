@@ -200,6 +200,19 @@ def roller_sections(r: dict) -> list:
     if tapered:
         dist.append(("axial deflection", d["displacements"][0], "small"))
     out.append(("Load distribution", dist))
+    h = d.get("half_space")
+    if h:
+        where = f"roller {h['roller'] + 1}, {h['raceway']}"
+        out.append((f"Half-space line contact ({where})", [
+            ("roller load Q", h["load"], "force"),
+            ("peak pressure along the roller", h["peak_pressure"], "stress"),
+            ("  at x (from the roller centre)", h["peak_pressure_x"], "length"),
+            ("von Mises max below it", h["von_mises_max"], "stress"),
+            ("  at depth / x", f"{h['von_mises_depth'] * 1e6:.4g} µm / "
+             f"{h['von_mises_x'] * 1e3:.4g} mm", None),
+            ("Tresca max (sigma1 - sigma3)/2", h["tresca_max"], "stress"),
+            ("  at depth / x", f"{h['tresca_depth'] * 1e6:.4g} µm / "
+             f"{h['tresca_x'] * 1e3:.4g} mm", None)]))
     rows = []
     if tapered:
         rows.append(("X / Y / e", f"{lf['X']:.3g} / {lf['Y']:.3g} / {lf['e']:.3g}", None))

@@ -547,6 +547,67 @@ class RollerLoadDistribution:
         return {int(j): self.roller_contact(int(j), raceway, n_slices=n_slices)
                 for j in np.flatnonzero(self.roller_loads > 0)}
 
+    def most_loaded_roller(self, raceway: str = "inner") -> int:
+        """Index of the roller with the largest load at ``raceway`` [-] (one load case).
+
+        Parameters
+        ----------
+        raceway : {"inner", "outer"}
+            The contact: :attr:`inner_loads` (cone) or :attr:`roller_loads` (cup).
+        """
+        from .._checks import check_choice
+
+        check_choice(raceway, "raceway", ("inner", "outer"))
+        if self.roller_loads.ndim != 1:
+            raise ValueError(f"most_loaded_roller needs a result of one load case; this one "
+                             f"has load cases of shape {self.roller_loads.shape[:-1]}")
+        return int(np.argmax(self.inner_loads if raceway == "inner" else self.roller_loads))
+
+    def subsurface(self, raceway: str = "inner", *, roller=None, n_slices=None,
+                   n_depth: int = 24):
+        """Stresses below the most loaded roller's contact with ``raceway`` (one load case).
+
+        The roller's finite line contact on the half-space (:meth:`roller_contact`: its
+        load, tilt and profile in this solution) and the von Mises and Tresca stresses
+        below it (:func:`~ballrace.analytic.roller.contact.subsurface_stress`, Poisson's
+        ratio of the bearing's material): the maxima over depth at every slice centre,
+        their depths, and so the stress under an edge peak beside the stress in the
+        middle.  In the middle of a uniformly loaded roller the maxima are those of 2-D
+        Hertz (McEwen): von Mises 0.557 p0 at 0.70 b, Tresca 0.300 p0 at 0.79 b for
+        nu = 0.3 (Johnson, *Contact Mechanics*, 1985, §4.2); checked in the tests.
+
+        Parameters
+        ----------
+        raceway : {"inner", "outer"}
+            The contact.
+        roller : int, optional
+            Roller index [-]; default :meth:`most_loaded_roller`.
+        n_slices : int, optional
+            Slices of the line contact [-], odd, >= 5; default the bearing's.
+        n_depth : int, optional
+            Depths of the stress grid [-] (:func:`subsurface_stress`).
+
+        Returns
+        -------
+        RollerStress
+            Its ``von_mises_max.max()`` is the largest von Mises stress below the roller
+            [Pa]; ``x`` the slice centres [m].
+
+        Raises
+        ------
+        ValueError
+            For a result of several load cases, or a roller without load.
+        """
+        from .contact import subsurface_stress
+
+        j = self.most_loaded_roller(raceway) if roller is None else roller
+        c = self.roller_contact(j, raceway, n_slices=n_slices)
+        if not c.load > 0.0:
+            raise ValueError(f"roller: roller {j} carries no load at the {raceway} raceway in "
+                             "this solution, so there is no stress below it (solve with a "
+                             "load, or choose a loaded roller, e.g. roller=None)")
+        return subsurface_stress(c, nu=self.bearing.material.nu, n_depth=n_depth)
+
 
 def _scalar(x):
     a = np.asarray(x)
