@@ -457,6 +457,7 @@ FIGURE_SOURCES = [
     "ballrace.validation.figures:bearing_figures",
     "ballrace.validation.figures:fem_figures",
     "ballrace.validation.figures_life:life_figures",
+    "ballrace.validation.figures_roller:roller_figures",
     "ballrace.validation.figures_fem:fem_figures",
 ]
 

@@ -46,6 +46,7 @@ CALC_MODULES = (
     "ballrace.validation.calc_kinematics",
     "ballrace.validation.calc_shaft",
     "ballrace.validation.calc_roller",
+    "ballrace.validation.calc_roller_published",
     "ballrace.validation.calc_fem",
 )
 
