@@ -155,3 +155,14 @@ def test_clearance_figure_series(figs):
     L = np.asarray(life_["series"][0]["y"])
     assert L[x == 0.0][0] == pytest.approx(1.0)
     assert L[-1] < 0.5
+
+
+def test_load_distribution_figures_of_roller_cases_speak_of_rollers():
+    from ballrace.validation import figures
+
+    run = run_cases(load_case_file(CASE_FILE.with_name("roller.toml")), serial=True, fem="none")
+    figs = [f for f in figures.bearing_figures(run) if f.id.startswith("bearing-roller-")]
+    assert figs, "the roller cases with a load distribution give a figure"
+    for f in figs:
+        assert f.panels[0]["title"] == "roller loads"
+        assert f.panels[0]["series"][0]["label"] == "ballrace (per roller)"

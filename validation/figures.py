@@ -313,41 +313,44 @@ def bearing_figures(run) -> list[Figure]:
         s = getattr(r, "series", None) or {}
         if "psi" not in s or "Q" not in s:
             continue
+        element = "roller" if r.calculation.startswith("roller.") else "ball"
         psi = np.degrees(np.asarray(s["psi"], dtype=float))
         psi = (psi + 180.0) % 360.0 - 180.0
         Q = np.asarray(s["Q"], dtype=float)
         pub = _published_points(r, psi, Q)
-        if np.any(np.isclose(psi, -180.0)):       # the ball at psi = 180 deg shows at both ends
+        if np.any(np.isclose(psi, -180.0)):   # the element at psi = 180 deg shows at both ends
             k = int(np.argmin(np.abs(psi + 180.0)))
             psi, Q = np.append(psi, 180.0), np.append(Q, Q[k])
             if "beta" in s:
                 s = {**s, "beta": np.append(np.asarray(s["beta"], dtype=float), s["beta"][k])}
         order = np.argsort(psi)
-        q_series = [{"x": psi[order], "y": Q[order], "label": "ballrace (per ball)",
+        q_series = [{"x": psi[order], "y": Q[order], "label": f"ballrace (per {element})",
                      "style": "markers"}]
         jones = _jones_curve(r, psi[order], Q[order])
         if jones is not None:
             q_series.append(jones)
         q_series += _published_series(pub, "Q", r.kind)
-        panels = [{"kind": "lines", "title": "ball loads", "xlabel": "azimuth psi [deg]",
+        panels = [{"kind": "lines", "title": f"{element} loads", "xlabel": "azimuth psi [deg]",
                    "ylabel": "Q [N]", "series": q_series, "xticks": [-180, -90, 0, 90, 180],
                    "legend": "below"}]
         caption = f"Case {r.id} ({r.status}); psi = 0 on the load line."
         if "beta" in s:
             beta = np.degrees(np.asarray(s["beta"], dtype=float))
             if np.ptp(beta) > 1e-6 or pub["beta"][0] or "beta_level" in pub:
-                b_series = [{"x": psi[order], "y": beta[order], "label": "ballrace (per ball)",
+                b_series = [{"x": psi[order], "y": beta[order],
+                             "label": f"ballrace (per {element})",
                              "style": "markers"}, *_published_series(pub, "beta", r.kind)]
                 panels.append({"kind": "lines", "title": "contact angles",
                                "xlabel": "azimuth psi [deg]", "ylabel": "beta [deg]",
                                "series": b_series, "xticks": [-180, -90, 0, 90, 180],
                                "legend": "below"})
             else:
-                caption += f" Contact angle {beta[0]:.3g} deg at every ball (not plotted)."
+                caption += (f" Contact angle {beta[0]:.3g} deg at every {element} (not "
+                            "plotted).")
         if pub["Q"][0] or pub["beta"][0] or "Q_level" in pub or "beta_level" in pub:
             caption += (f" Red: the {'published ' if r.kind == 'published' else ''}values "
-                        "the case checks (open markers at their balls; a dotted line when "
-                        "the value holds at every ball).")
+                        f"the case checks (open markers at their {element}s; a dotted line "
+                        f"when the value holds at every {element}).")
         if jones is not None:
             caption += (" Dashed: Jones's closed-form distribution at the same clearance "
                         "ratio.")
