@@ -203,9 +203,12 @@ def _roller_seat(s, rows, r, k) -> dict:
     :class:`~ballrace.analytic.roller.loaddist.RollerLoadDistribution`), from what the
     seat bearing and its rows' results say (the seat contract, duck-typed): the ball row's
     keys where they mean the same (``max_roller_load`` for ``max_ball_load``; the contact
-    angle is the bearing's, fixed), and the roller's own (edge loading, slices, the life's
-    Weibull slope and exponent)."""
+    angle is the bearing's, fixed), and the roller's own (``edge_load_ratio``: the largest
+    end-slice load over the most loaded roller's mean slice load,
+    :func:`~ballrace.analytic.roller.bearing.edge_load_ratio`; slices; the life's Weibull
+    slope and exponent)."""
     from ballrace.analytic.life import BALL_WEIBULL_SLOPE
+    from ballrace.analytic.roller.bearing import edge_load_ratio
 
     brg = s.bearing
     R = r.reactions[k]
@@ -225,7 +228,7 @@ def _roller_seat(s, rows, r, k) -> dict:
                 contact_angle_min=angle, contact_angle_max=angle, contact_angle_limit=None,
                 misalignment=float(r.misalignment[k]),
                 misalignment_limit=getattr(brg, "permissible_misalignment", None),
-                max_edge_load_ratio=max(float(np.max(x.edge_load_ratio)) for x in rows),
+                edge_load_ratio=max(edge_load_ratio(x.slice_loads) for x in rows),
                 n_slices=int(one.n_slices), pitch_diameter=float(one.pitch_diameter),
                 radial_deflection=float(np.hypot(*r.ring_displacements[k, 1:3])),
                 axial_deflection=float(r.ring_displacements[k, 0]),
@@ -296,9 +299,10 @@ def _render(r: dict, units: str = "eng") -> None:
         lim = s["contact_angle_limit"]
         bad_beta = lim is not None and max(abs(s["contact_angle_min"]),
                                            abs(s["contact_angle_max"])) > lim
-        bad_tilt = s["misalignment"] > s["misalignment_limit"]
+        bad_tilt = (s["misalignment_limit"] is not None
+                    and s["misalignment"] > s["misalignment_limit"])
         roller = s.get("rolling_element") == "roller"
-        flagged |= bad_s0 or bad_beta or bad_tilt
+        flagged |= not roller and (bad_s0 or bad_beta or bad_tilt)
         rflagged |= roller and (bad_s0 or bad_tilt)
         oc = s["operating_clearance"]
         n = s["name"]

@@ -66,7 +66,7 @@ from . import lamina
 from .profile import ProfileContext, as_profile
 
 __all__ = ["RollerBearing", "KINDS", "STATIC_PRESSURE", "PERMISSIBLE_MISALIGNMENT",
-           "EDGE_LOAD_RATIO"]
+           "EDGE_LOAD_RATIO", "edge_load_ratio"]
 
 #: Kinds of roller bearing.
 KINDS = ("cylindrical", "tapered")
@@ -95,10 +95,11 @@ LARGEST_ROLLER = 0.3
 PERMISSIBLE_MISALIGNMENT = {"cylindrical": float(np.radians(4.0 / 60.0)),
                             "tapered": float(np.radians(2.0 / 60.0))}
 
-#: Edge loading a seat warns about [-]: the more loaded end slice of a roller carrying more
-#: than this multiple of the roller's mean slice load Q_j / n_s
-#: (:attr:`~ballrace.analytic.roller.loaddist.RollerLoadDistribution.edge_load_ratio`; 1
-#: for a straight roller without tilt, below 1 for a crowned one).  A screening value chosen
+#: Edge loading a seat warns about [-]: an end slice of a roller carrying more than this
+#: multiple of the mean slice load Q_max / n_s of the most loaded roller (1 for straight
+#: rollers without tilt, below 1 for crowned ones; cf.
+#: :attr:`~ballrace.analytic.roller.loaddist.RollerLoadDistribution.edge_load_ratio`, per
+#: roller).  A screening value chosen
 #: here, not a standard's: the lamina model has no edge stress peak, so a loaded roller end
 #: means a real pressure above the lamina's there (``roller_contact`` solves it).
 EDGE_LOAD_RATIO = 1.5
@@ -596,28 +597,41 @@ def seat_tilt_messages(what: str, bearing, results, tilt) -> tuple:
     """(tilt message, edge message), each str or None, for a roller seat: the ring tilt
     [rad] beyond :data:`PERMISSIBLE_MISALIGNMENT` of ``bearing``'s kind (a
     :class:`RollerBearing`), and the end slice of a roller (any of ``results``, roller load
-    distributions) carrying more than :data:`EDGE_LOAD_RATIO` times its mean slice load;
-    ``what`` names the seat."""
+    distributions) carrying more than :data:`EDGE_LOAD_RATIO` times the mean slice load of
+    the most loaded roller; ``what`` names the seat."""
     lim = PERMISSIBLE_MISALIGNMENT[bearing.kind]
     t = float(np.max(tilt)) if np.size(tilt) else 0.0
-    ratio = max((float(np.max(r.edge_load_ratio)) for r in results), default=0.0)
-    edge = (f" (an end slice carries {ratio:.3g} times its roller's mean slice load)"
-            if ratio > EDGE_LOAD_RATIO else "")
-    tilt_msg = None
+    ratio = max((edge_load_ratio(r.slice_loads) for r in results), default=0.0)
     if t > lim:
-        tilt_msg = (f"{what}: the inner ring is tilted {t * 1e3:.3g} mrad "
-                    f"({math.degrees(t) * 60:.3g} arcmin) against the outer ring, more than "
-                    f"the {math.degrees(lim) * 60:.0f} arcmin ({lim * 1e3:.2f} mrad) a "
-                    f"{bearing.kind} roller bearing tolerates (roller.bearing."
-                    f"PERMISSIBLE_MISALIGNMENT, guide values){edge}: expect edge loading, an "
-                    "edge stress the lamina model does not resolve, and a shorter life")
-        return tilt_msg, None
-    if edge:
-        return None, (f"{what}: edge-loaded rollers{edge}, within the permissible "
-                      f"misalignment ({t * 1e3:.3g} mrad tilt): the roller ends see an edge "
-                      "stress the lamina model does not resolve (check the profile, or solve "
-                      "the roller's line contact: RollerLoadDistribution.roller_contact)")
+        return (f"{what}: the inner ring is tilted {t * 1e3:.3g} mrad "
+                f"({math.degrees(t) * 60:.3g} arcmin) against the outer ring, more than the "
+                f"{math.degrees(lim) * 60:.0f} arcmin ({lim * 1e3:.2f} mrad) a {bearing.kind} "
+                "roller bearing tolerates (roller.bearing.PERMISSIBLE_MISALIGNMENT, guide "
+                "values): expect a shorter life; roller end slices carry up to "
+                f"{ratio:.3g} times the most loaded roller's mean slice load (edge loading "
+                f"above {EDGE_LOAD_RATIO:g}, with an edge stress the lamina model does not "
+                "resolve)"), None
+    if ratio > EDGE_LOAD_RATIO:
+        return None, (f"{what}: edge-loaded rollers: an end slice carries {ratio:.3g} times "
+                      f"the most loaded roller's mean slice load (above {EDGE_LOAD_RATIO:g}) "
+                      f"at a tilt of {t * 1e3:.3g} mrad, within the permissible misalignment: the "
+                      "roller ends see an edge stress the lamina model does not resolve "
+                      "(check the profile, or solve the roller's line contact: "
+                      "RollerLoadDistribution.roller_contact)")
     return None, None
+
+
+def edge_load_ratio(q) -> float:
+    """Edge loading of a roller set [-]: the largest end-slice load of any roller over the
+    mean slice load Q_max / n_s of the most loaded roller, of slice loads q (..., Z, n_s)
+    [N] (0 without load): 1 for straight rollers without tilt; a lightly loaded roller
+    touching at one end only counts no more than its load."""
+    q = np.asarray(q, float)
+    Qmax = float(q.sum(-1).max(initial=0.0))
+    if not Qmax > 0:
+        return 0.0
+    end = float(np.maximum(q[..., 0], q[..., -1]).max())
+    return end / (Qmax / q.shape[-1])
 
 
 def seat_safety_message(what: str, results) -> str | None:
