@@ -361,6 +361,7 @@ def test_tilt_warning_fires_for_a_misaligned_roller_seat_only():
     assert r.misalignment[1] < lim and not msgs
 
 
+@pytest.mark.filterwarnings("ignore:shaft seats")
 def test_tilt_warning_reaches_the_command_line(tmp_path):
     text = GEARBOX.read_text().replace('["200 mm", "48 mm", "0 mm"]', '["200 mm", "22 mm", "0 mm"]')
     p = tmp_path / "slender.toml"
@@ -394,3 +395,15 @@ def test_edge_loading_within_the_permissible_tilt():
     q = tilted.slice_loads
     assert ratio == pytest.approx(max(q[:, 0].max(), q[:, -1].max())
                                   / (q.sum(-1).max() / b.n_slices), rel=1e-12)
+
+
+def test_every_roller_seat_key_is_documented():
+    from ballrace.casefiles.shaft import _roller_models
+
+    text = (Path(__file__).resolve().parents[1] / "docs" / "casefiles.md").read_text()
+    section = text[text.index("## Shaft case"):text.index("## FE case")]
+    spec = _roller_models().model_fields["bearings"].annotation.__args__[1]
+    spans = re.findall(r"`([^`\n]+)`", section)
+    missing = [k for k in spec.model_fields
+               if not any(re.search(rf"(?<![\w.-]){k}(?![\w-])", sp) for sp in spans)]
+    assert not missing, missing
