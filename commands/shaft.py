@@ -1,4 +1,4 @@
-r"""``ballrace shaft CASE.toml``: an elastic shaft on its ball bearings, from a case file.
+r"""``ballrace shaft CASE.toml``: an elastic shaft on its ball or roller bearings, from a case file.
 
 Registered on the main Typer app by :func:`register` (see :mod:`ballrace.cli`).  The case
 file is read, its units parsed, by :mod:`ballrace.casefiles.shaft` (where its format is
@@ -477,7 +477,8 @@ def register(app) -> None:
         plot_file: Annotated[Optional[str], typer.Option(
             "--plot", help="Write a picture of the shaft (PNG/SVG/PDF) to this file.")] = None,
     ):
-        """An elastic shaft on its ball bearings: reactions, ball loads, deflection, lives."""
+        """An elastic shaft on its ball or roller bearings: reactions, element loads,
+        deflection, lives."""
         from ballrace.commands import run_case_file
 
         result = run_case_file(case_file, units, "shaft", load_shaft_case, analyze,

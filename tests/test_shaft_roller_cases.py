@@ -295,7 +295,8 @@ BAD = [
     (None, {"direction": -1}, r'\[\[seat\]\] #2 \("B"\)\.direction: a thrust direction means '
                               r"nothing for a cylindrical roller bearing"),
     (None, {"offset": "5 um"}, r'\[\[seat\]\] #2 \("B"\)\.offset'),
-    (None, {"floating": True, "spring_preload": "100 N"}, r'\[\[seat\]\] #2 \("B"\)\.spring_preload'),
+    (None, {"floating": True, "spring_preload": "100 N"},
+     r'\[\[seat\]\] #2 \("B"\)\.spring_preload'),
     (None, {"row_spacing": "10 mm"}, r'\[\[seat\]\] #2 \("B"\)\.row_spacing: a single'),
     (None, {"fits": {"bore": "40 mm", "outside_diameter": "80 mm"}},
      r'\[\[seat\]\] #2 \("B"\)\.fits: the operating clearance from fits is computed for ball'),
