@@ -146,6 +146,23 @@ class SeatBearing(Protocol):
         bearings (ISO 281:2007, clause 6.1).
     seat_name : str
         Short name of the bearing kind for tables (e.g. "single", "pair DB").
+
+    Optional attributes, read with ``getattr`` where present (not members of the protocol:
+    a seat bearing without them still satisfies it, and ``isinstance`` does not ask for
+    them):
+
+    weibull_slope : float
+        Weibull slope e [-] of the bearing's life scatter: its rows combine into the
+        seat's life, and the seats into the system life, with it
+        (:func:`~ballrace.analytic.shaft.rating_lives`,
+        :func:`~ballrace.analytic.shaft.duty_cycle`, :func:`~ballrace.analytic.shaft.system_life`).
+        Default 10/9 where absent (ball bearings, Lundberg & Palmgren 1947;
+        :data:`ballrace.analytic.life.BALL_WEIBULL_SLOPE`); roller bearings give 9/8
+        (Lundberg & Palmgren 1952).
+    permissible_misalignment : float
+        Ring tilt the bearing tolerates [rad], shown next to the seat's tilt by
+        ``ballrace shaft`` (roller bearings; a ball bearing's follows its type,
+        :data:`ballrace.analytic.ratings.PERMISSIBLE_MISALIGNMENT`).
     """
 
     accepts_clearance: bool

@@ -122,7 +122,8 @@ from typing import Literal, Optional
 
 import numpy as np
 
-__all__ = ["CaseFileError", "BearingCase", "load_case", "parse_case", "parse_roller_case"]
+__all__ = ["CaseFileError", "BearingCase", "load_case", "parse_case", "parse_roller_case",
+           "bearing_family", "roller_bearing_from_keys"]
 
 
 from ballrace.errors import CaseFileError  # noqa: E402 - one class for every case file
@@ -805,21 +806,29 @@ _BALL_LIFE_KEYS = ("material", "processing", "hardness_hrc", "lubrication_factor
 
 def _bearing_type(data: dict, source: str):
     """The ``[bearing].type`` of a case dictionary, after refusing the keys of the other
-    family: a ball key in a roller bearing's table and a roller key in a ball bearing's."""
+    family (:func:`bearing_family`)."""
     b = data.get("bearing")
     if not isinstance(b, dict):
         return None
+    return bearing_family(b, source, "[bearing]")
+
+
+def bearing_family(b: dict, source: str, where: str):
+    """The ``type`` of a bearing table ``b`` at ``where`` (``"[bearing]"``,
+    ``"[bearings.NAME]"``), after refusing the keys of the other family: a ball key in a
+    roller bearing's table and a roller key in a ball bearing's (``CaseFileError`` naming
+    the key and what to give instead)."""
     typ = b.get("type", "deep-groove")
     if typ in ROLLER_TYPES:
         for key, instead in BALL_KEYS.items():
             if key in b:
-                raise CaseFileError(f"{source}: [bearing].{key} is a ball-bearing key; a "
+                raise CaseFileError(f"{source}: {where}.{key} is a ball-bearing key; a "
                                     f"{typ} bearing takes {instead}")
     else:
         for key in ROLLER_KEYS:
             if key in b:
                 raise CaseFileError(
-                    f"{source}: [bearing].{key} is a roller-bearing key; give type = "
+                    f"{source}: {where}.{key} is a roller-bearing key; give type = "
                     f"\"cylindrical-roller\" or \"tapered-roller\" for a roller bearing (a "
                     f"{typ!s} ball bearing takes ball_diameter, n_balls, f_inner, f_outer)")
     return typ
@@ -953,6 +962,54 @@ def _roller_material(spec, q, source: str):
     return mats.get("roller") or mats.get("ring")
 
 
+def roller_bearing_from_keys(b, q, source: str, where: str, **extra):
+    """The :class:`~ballrace.analytic.roller.RollerBearing` of a case file's roller bearing
+    keys (:func:`~ballrace.casefiles.schema.roller_bearing_keys`; the ``[bearing]`` table of
+    a bearing case file, a ``[bearings.NAME]`` table of a shaft case file).
+
+    ``q`` is the file's :func:`quantity_reader`, ``where`` the table (``"[bearing]"``),
+    ``extra`` further RollerBearing arguments (material, name).  ``CaseFileError`` naming
+    the file and the key, with a valid example.
+    """
+    from ballrace.analytic.roller import RollerBearing
+
+    W = where
+    kind = "tapered" if b.type == "tapered-roller" else "cylindrical"
+    D = _positive(q(b.roller_diameter, "[length]", f"{W}.roller_diameter"), b.roller_diameter,
+                  f"{source}: {W}.roller_diameter", "13 mm")
+    L = _positive(q(b.roller_length, "[length]", f"{W}.roller_length"), b.roller_length,
+                  f"{source}: {W}.roller_length", "11.8 mm")
+    dm = _positive(q(b.pitch_diameter, "[length]", f"{W}.pitch_diameter"), b.pitch_diameter,
+                   f"{source}: {W}.pitch_diameter", "70.65 mm")
+    alpha = q(b.contact_angle, "[angle]", f"{W}.contact_angle")
+    if kind == "cylindrical" and alpha not in (None, 0.0):
+        raise CaseFileError(f"{source}: {W}.contact_angle: a cylindrical roller bearing has "
+                            f"contact angle 0; got {b.contact_angle!r} (use type = "
+                            "\"tapered-roller\" for a bearing with a cup angle)")
+    if kind == "tapered":
+        if alpha is None:
+            raise CaseFileError(f"{source}: {W}.contact_angle: a tapered roller bearing needs "
+                                "its cup angle, e.g. contact_angle = \"15 deg\"")
+        if not 0.0 < alpha < math.pi / 3:
+            raise CaseFileError(f"{source}: {W}.contact_angle (the cup angle) must be in "
+                                f"(0, 60) deg, typically 10 ... 30 deg; got {b.contact_angle!r}"
+                                " (e.g. contact_angle = \"15 deg\")")
+    if b.n_slices is not None and (b.n_slices < 5 or b.n_slices % 2 == 0):
+        good = b.n_slices + 1 if b.n_slices >= 5 else 31
+        raise CaseFileError(f"{source}: {W}.n_slices must be odd and >= 5 (one slice at the "
+                            f"roller middle); got {b.n_slices} (e.g. n_slices = {good})")
+    profile = read_profile(b.profile, q, source, f"{W}.profile", L, D)
+    kw = dict(roller_diameter=D, roller_length=L, n_rollers=b.n_rollers, pitch_diameter=dm,
+              kind=kind, contact_angle=alpha or 0.0,
+              diametral_clearance=q(b.diametral_clearance, "[length]",
+                                    f"{W}.diametral_clearance"),
+              profile=profile, n_slices=b.n_slices)
+    try:
+        return RollerBearing(**kw, **extra)
+    except (ValueError, TypeError) as exc:
+        raise CaseFileError(f"{source}: {W}: {exc}") from None
+
+
 def parse_roller_case(data: dict, source: str = "<case>") -> BearingCase:
     """Validate a roller-bearing case dictionary (``[bearing].type`` "cylindrical-roller" or
     "tapered-roller"; module notes) and convert it to SI.
@@ -979,8 +1036,6 @@ def parse_roller_case(data: dict, source: str = "<case>") -> BearingCase:
     """
     import types
 
-    from ballrace.analytic.roller import RollerBearing
-
     for section, message in _NOT_FOR_ROLLERS.items():
         if section in data:
             raise CaseFileError(f"{source}: {message}")
@@ -999,44 +1054,10 @@ def parse_roller_case(data: dict, source: str = "<case>") -> BearingCase:
     spec = validate_spec(_roller_models(), data, source)
     q = quantity_reader(source)
     b = spec.bearing
-    W = "[bearing]"
-    kind = "tapered" if b.type == "tapered-roller" else "cylindrical"
-    D = _positive(q(b.roller_diameter, "[length]", f"{W}.roller_diameter"), b.roller_diameter,
-                  f"{source}: {W}.roller_diameter", "13 mm")
-    L = _positive(q(b.roller_length, "[length]", f"{W}.roller_length"), b.roller_length,
-                  f"{source}: {W}.roller_length", "11.8 mm")
-    dm = _positive(q(b.pitch_diameter, "[length]", f"{W}.pitch_diameter"), b.pitch_diameter,
-                   f"{source}: {W}.pitch_diameter", "70.65 mm")
-    alpha = q(b.contact_angle, "[angle]", f"{W}.contact_angle")
-    if kind == "cylindrical" and alpha not in (None, 0.0):
-        raise CaseFileError(f"{source}: {W}.contact_angle: a cylindrical roller bearing has "
-                            f"contact angle 0; got {b.contact_angle!r} (use type = "
-                            "\"tapered-roller\" for a bearing with a cup angle)")
-    if kind == "tapered":
-        if alpha is None:
-            raise CaseFileError(f"{source}: {W}.contact_angle: a tapered roller bearing needs "
-                                "its cup angle, e.g. contact_angle = \"15 deg\"")
-        if not 0.0 < alpha < math.pi / 3:
-            raise CaseFileError(f"{source}: {W}.contact_angle (the cup angle) must be in "
-                                f"(0, 60) deg, typically 10 ... 30 deg; got {b.contact_angle!r}"
-                                " (e.g. contact_angle = \"15 deg\")")
-    if b.n_slices is not None and (b.n_slices < 5 or b.n_slices % 2 == 0):
-        good = b.n_slices + 1 if b.n_slices >= 5 else 31
-        raise CaseFileError(f"{source}: {W}.n_slices must be odd and >= 5 (one slice at the "
-                            f"roller middle); got {b.n_slices} (e.g. n_slices = {good})")
-    profile = read_profile(b.profile, q, source, f"{W}.profile", L, D)
     mat = _roller_material(spec.materials, q, source)
-    kw = dict(roller_diameter=D, roller_length=L, n_rollers=b.n_rollers, pitch_diameter=dm,
-              kind=kind, contact_angle=alpha or 0.0,
-              diametral_clearance=q(b.diametral_clearance, "[length]",
-                                    f"{W}.diametral_clearance"),
-              profile=profile, n_slices=b.n_slices, name=b.name or spec.title)
-    if mat is not None:
-        kw["material"] = mat
-    try:
-        brg = RollerBearing(**kw)
-    except (ValueError, TypeError) as exc:
-        raise CaseFileError(f"{source}: {W}: {exc}") from None
+    brg = roller_bearing_from_keys(b, q, source, "[bearing]", name=b.name or spec.title,
+                                   **({} if mat is None else {"material": mat}))
+    kind, alpha = brg.kind, brg.contact_angle
 
     loads = spec.loads
     Fr, Fa = _radial_axial(loads, q, source, "6940 N")

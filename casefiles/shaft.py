@@ -33,6 +33,20 @@ shaft and seats on top of each other are one-line errors naming the key)::
     # pair = "DB"; preload = "1.5 kN"   # a duplex pair (DB, DF, DT) of this bearing
     # dynamic_rating = "29.1 kN"        # C for the life (default: ISO 281 from geometry)
 
+    [bearings.nu208]                    # a roller bearing: the roller keys of a bearing
+    type = "cylindrical-roller"         # case file (casefiles.schema.roller_bearing_keys)
+    roller_diameter = "12 mm"           # or type = "tapered-roller" with contact_angle
+    roller_length = "12 mm"
+    n_rollers = 14
+    pitch_diameter = "60 mm"
+    diametral_clearance = "30 um"
+    profile = "iso"                     # a name, a table { x, drop } or a crown
+    n_slices = 31                       # { flat_length, crown_radius }
+    # material = { E = "208 GPa", nu = 0.3 }; dynamic_rating = "62 kN"
+    # tapered only: pair = "DB" or "DF" with preload = "2 kN" or end_play = "30 um"
+    # (a cylindrical seat takes no direction, offset, spring_preload; no roller seat
+    # takes fits: give its clearance)
+
     [[seat]]
     name = "A"
     position = "20 mm"
@@ -91,7 +105,8 @@ __all__ = ["ShaftCase", "load_shaft_case", "parse_shaft_case"]
 
 def _models():
     """Pydantic models, built on first use; the bearing, material, fits and operation
-    keys are the shared ones of :mod:`ballrace.casefiles.schema`."""
+    keys are the shared ones of :mod:`ballrace.casefiles.schema` (a roller bearing's
+    ``[bearings.NAME]`` table: :func:`_roller_models`)."""
     from pydantic import Field
 
     from ballrace.casefiles import schema
@@ -182,6 +197,27 @@ def _models():
     return CaseSpec
 
 
+def _roller_models():
+    """Pydantic model of the roller bearings of a shaft case file (``{"bearings": {NAME:
+    table}}``, the tables whose ``type`` is a roller type): the roller keys of
+    :func:`ballrace.casefiles.schema.roller_bearing_keys` and the shaft's own."""
+    from ballrace.casefiles import schema
+
+    MaterialSpec = schema.material_keys()
+
+    class RollerBearingSpec(schema.roller_bearing_keys()):
+        material: Optional[MaterialSpec] = None
+        pair: Optional[Literal["DB", "DF"]] = None
+        preload: Optional[str] = None
+        end_play: Optional[str] = None
+        dynamic_rating: Optional[str] = None
+
+    class RollerBearings(schema.strict()):
+        bearings: dict[str, RollerBearingSpec]
+
+    return RollerBearings
+
+
 @dataclass(frozen=True)
 class ShaftCase:
     """A validated shaft case in SI units (frozen).
@@ -236,14 +272,26 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
     import ballrace
     from ballrace.analytic import shaft as S
     from ballrace.casefiles.bearing import (CaseFileError, parse_speed, array_item,
-                                            bearing_from_keys, quantity_reader, validate_spec)
-    from ballrace.casefiles.schema import read_material, read_operating_clearance
+                                            bearing_family, bearing_from_keys, quantity_reader,
+                                            roller_bearing_from_keys, validate_spec)
+    from ballrace.casefiles.schema import ROLLER_TYPES, read_material, read_operating_clearance
     from ballrace.analytic.duplex import DuplexPair
 
     hint = _kind_hint(data, source)
     if hint:
         raise CaseFileError(hint)
+    raw = data.get("bearings")
+    rollers = {}
+    if isinstance(raw, dict):                 # roller tables: their own model
+        for name, table in raw.items():
+            if isinstance(table, dict) and bearing_family(
+                    table, source, f"[bearings.{name}]") in ROLLER_TYPES:
+                rollers[name] = table
+        if rollers:
+            data = {**data, "bearings": {n: t for n, t in raw.items() if n not in rollers}}
     spec = validate_spec(_models(), data, source)
+    roller_specs = validate_spec(_roller_models(), {"bearings": rollers},
+                                 source).bearings if rollers else {}
     q = quantity_reader(source)
 
     def err(where, msg):
@@ -279,7 +327,15 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
     L = shaft.length
 
     bearings, ratings = {}, {}
-    for name, b in spec.bearings.items():
+    for name in raw if isinstance(raw, dict) else ():      # in the file's order
+        if name in roller_specs:
+            b = roller_specs[name]
+            bearings[name] = _roller_bearing(b, name, q, source, material,
+                                             roller_bearing_from_keys)
+            ratings[name] = q(b.dynamic_rating, "[force]",
+                              f"[bearings.{name}].dynamic_rating")
+            continue
+        b = spec.bearings[name]
         where = f"[bearings.{name}]"
         kw = dict(name=b.name or name)
         if b.material is not None:
@@ -310,6 +366,7 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
             raise err(f"{where}.bearing", f"no bearing named {s.bearing!r} in [bearings] "
                       f"(have: {', '.join(bearings) or 'none'})")
         brg = bearings[s.bearing]
+        _roller_seat_keys(s, brg, source, where)
         kw = dict(direction=s.direction, floating=s.floating, name=s.name or f"seat {k + 1}")
         for key, dim in (("offset", "[length]"), ("spring_preload", "[force]"),
                          ("clearance", "[length]"), ("row_spacing", "[length]")):
@@ -408,6 +465,77 @@ def parse_shaft_case(data: dict, source: str = "<case>") -> ShaftCase:
                      speed_rpm=None if speed is None else speed * 60 / (2 * math.pi),
                      rotating_ring=op.rotating_ring, ratings=tuple(C), solve_options=opts,
                      notes=tuple(case_notes))
+
+
+def _roller_bearing(b, name, q, source, material, from_keys):
+    """The seat bearing of a roller ``[bearings.NAME]`` table ``b``
+    (:func:`_roller_models`): a :class:`~ballrace.analytic.roller.RollerBearing`, or with
+    ``pair`` a :class:`~ballrace.analytic.roller.TaperedPair` (its ``preload`` [N] or
+    ``end_play`` [m]).  ``material`` reads a material table, ``from_keys`` is
+    :func:`ballrace.casefiles.bearing.roller_bearing_from_keys`."""
+    from ballrace.analytic.roller import TaperedPair
+    from ballrace.errors import CaseFileError
+
+    where = f"[bearings.{name}]"
+    kw = dict(name=b.name or name)
+    if b.material is not None:
+        kw["material"] = material(b.material, f"{where}.material")
+    brg = from_keys(b, q, source, where, **kw)
+    extra = {"preload": q(b.preload, "[force]", f"{where}.preload"),
+             "end_play": q(b.end_play, "[length]", f"{where}.end_play")}
+    if b.pair is None:
+        for key, v in extra.items():
+            if v is not None:
+                raise CaseFileError(
+                    f"{source}: {where}.{key}: a {key.replace('_', ' ')} needs pair = \"DB\" "
+                    "or \"DF\" (two tapered roller bearings at one seat); for a single bearing "
+                    "use the seat's offset")
+        return brg
+    if not brg.tapered:
+        raise CaseFileError(
+            f"{source}: {where}.pair: a pair is of tapered roller bearings (type = "
+            f"\"tapered-roller\"); a {b.type} bearing carries no axial load to preload "
+            "(remove pair, or give two seats)")
+    try:
+        return TaperedPair(brg, b.pair, **{k: v for k, v in extra.items() if v is not None})
+    except (ValueError, TypeError) as exc:
+        raise CaseFileError(f"{source}: {where}: {exc}") from None
+
+
+def _roller_seat_keys(s, brg, source: str, where: str) -> None:
+    """``CaseFileError`` for a ``[[seat]]`` key that means nothing for its roller bearing:
+    a thrust direction, offset or spring preload on a bearing that carries no axial load
+    (cylindrical), a row spacing on a single bearing, a clearance or fits on a preloaded
+    pair, fits on any roller bearing (ball bearings only).  Ball seats are not checked
+    here."""
+    from ballrace.analytic.roller import RollerBearing, TaperedPair
+    from ballrace.errors import CaseFileError
+
+    if not isinstance(brg, (RollerBearing, TaperedPair)):
+        return
+    given = s.model_fields_set
+    if not brg.carries_axial:
+        for key, why in (("direction", "a thrust direction"), ("offset", "an axial offset"),
+                         ("spring_preload", "a spring preload")):
+            if key in given and getattr(s, key) is not None:
+                raise CaseFileError(
+                    f"{source}: {where}.{key}: {why} means nothing for a {brg.seat_name} "
+                    "roller bearing: it carries no axial load (its flanges are not modelled) "
+                    "and does not locate the shaft; remove the key (another seat locates)")
+    if isinstance(brg, RollerBearing) and s.row_spacing is not None:
+        raise CaseFileError(f"{source}: {where}.row_spacing: a single {brg.seat_name} roller "
+                            "bearing has one row; row_spacing is for a pair (pair = \"DB\" in "
+                            "[bearings])")
+    if isinstance(brg, TaperedPair) and s.clearance is not None:
+        raise CaseFileError(f"{source}: {where}.clearance: a {brg.seat_name} keeps its preload "
+                            "or end play ([bearings] preload, end_play); remove the clearance")
+    if s.fits is not None:
+        raise CaseFileError(
+            f"{source}: {where}.fits: the operating clearance from fits is computed for ball "
+            "bearings only; " + ("a tapered pair keeps its preload or end play ([bearings] "
+                                 "preload, end_play)" if isinstance(brg, TaperedPair) else
+                                 "give the roller seat's operating clearance as clearance "
+                                 "(e.g. clearance = \"30 um\")"))
 
 
 def _delta_T(text, source, where) -> float:

@@ -1,4 +1,4 @@
-r"""``ballrace shaft CASE.toml``: an elastic shaft on its ball bearings, from a case file.
+r"""``ballrace shaft CASE.toml``: an elastic shaft on its ball or roller bearings, from a case file.
 
 Registered on the main Typer app by :func:`register` (see :mod:`ballrace.cli`).  The case
 file is read, its units parsed, by :mod:`ballrace.casefiles.shaft` (where its format is
@@ -43,7 +43,7 @@ def _thermal_note(case: ShaftCase) -> str | None:
         ("shaft_temperature_change", o["shaft_temperature_change"] != 0.0),
         ("housing_temperature_change", o["housing_temperature_change"] != 0.0
          and o["housing_expansion"] != 0.0)) if on]
-    n_loc = sum(not s.floating for s in case.seats)
+    n_loc = sum(not s.floating and s.bearing.carries_axial for s in case.seats)
     if not names or n_loc > 1:
         return None
     return (f"[operation] {' and '.join(names)} change nothing here: "
@@ -56,9 +56,7 @@ def analyze(case: ShaftCase) -> dict:
     """Solve a :class:`ShaftCase`; plain SI numbers (``--json``)."""
     import warnings
 
-    from ballrace.analytic import ratings
     from ballrace.analytic import shaft as S
-    from ballrace.analytic.duplex import DuplexPair
 
     notes = list(case.notes)
     thermal = _thermal_note(case)
@@ -76,38 +74,14 @@ def analyze(case: ShaftCase) -> dict:
     except ValueError as exc:
         lf = None
         notes.append(f"lives not available: {exc}")
-    s0 = r.static_safety
     seats = []
     for k, s in enumerate(case.seats):
         b = r.bearings[k]
         rows = b if isinstance(b, tuple) else (b,)
-        Q = np.concatenate([np.atleast_1d(x.ball_loads) for x in rows])
-        pmax = max(float(np.max(x.inner.p_max)) for x in rows) if Q.max() > 0 else 0.0
-        pmax = max(pmax, max(float(np.max(x.outer.p_max)) for x in rows) if Q.max() > 0 else 0)
-        beta = np.concatenate([np.atleast_1d(x.contact_angles)[np.atleast_1d(x.ball_loads) > 0]
-                               for x in rows]) if Q.max() > 0 else np.zeros(1)
-        R = r.reactions[k]
-        kind = ratings.bearing_type(s.ball_bearing)
-        pair = isinstance(s.bearing, DuplexPair)
-        d = dict(name=s.name, position=s.position,
-                 bearing=("pair " + s.bearing.arrangement) if pair else "single",
-                 direction=s.direction, floating=s.floating,
-                 clearance=(s.ball_bearing.diametral_clearance if s.clearance is None
-                            else s.clearance),
-                 operating_clearance=None if pair else (
-                     s.ball_bearing.diametral_clearance if s.clearance is None else s.clearance),
-                 reaction=[float(v) for v in R], radial_load=float(np.hypot(R[1], R[2])),
-                 moment=float(np.hypot(R[3], R[4])),
-                 max_ball_load=float(Q.max()), max_pressure=pmax,
-                 static_safety=float(s0[k]),
-                 contact_angle_min=float(beta.min()), contact_angle_max=float(beta.max()),
-                 contact_angle_limit=(ratings.DEEP_GROOVE_ANGLE_LIMIT if kind == "deep-groove"
-                                      else None),
-                 misalignment=float(r.misalignment[k]),
-                 misalignment_limit=ratings.PERMISSIBLE_MISALIGNMENT[kind],
-                 radial_deflection=float(np.hypot(*r.ring_displacements[k, 1:3])),
-                 axial_deflection=float(r.ring_displacements[k, 0]),
-                 stiffness=[[float(v) for v in row] for row in r.seat_stiffness[k]])
+        if s.ball_bearing is None:              # a roller seat (or another seat bearing)
+            d = _roller_seat(s, rows, r, k)
+        else:
+            d = _ball_seat(s, rows, r, k)
         if lf is not None:
             d["L10r"] = float(lf.seat_lives[k])
             d["L10_iso281"] = lf.catalog_lives[k]
@@ -119,12 +93,13 @@ def analyze(case: ShaftCase) -> dict:
     for d, st in zip(seats, case.seats):
         if lf is not None and d.get("L10_iso281") is None:
             why = ("its rows share the thrust in a way the catalogue formula does not know"
-                   if isinstance(st.bearing, DuplexPair) else
+                   if len(st.mounts) > 1 else
                    "the X/Y tables do not cover its load")
             notes.append(f"{d['name']}: no ISO 281 catalogue life ({why}); its life is "
                          "L10r (ISO/TS 16281)")
         elif lf is not None:
-            note = _moment_note(d, st.ball_bearing.pitch_diameter)
+            note = _moment_note(d, d["pitch_diameter"] if st.ball_bearing is None
+                                else st.ball_bearing.pitch_diameter)
             if note:
                 notes.append(note)
     L = case.shaft.length
@@ -158,6 +133,9 @@ def analyze(case: ShaftCase) -> dict:
         "notes": notes,
         "duty": None,
     }
+    rollers = any(st.ball_bearing is None for st in case.seats)
+    if rollers and lf is not None:              # ball and roller seats: e per seat
+        out["life"]["seat_weibull_slopes"] = [float(e) for e in lf.seat_weibull_slopes]
     if case.duty:
         def scaled(p, f):
             return S.PointLoad(p.position, *(f * p.vector), name=p.name)
@@ -178,7 +156,85 @@ def analyze(case: ShaftCase) -> dict:
                        "seat_hours": [float(v) for v in dc.seat_hours],
                        "system_hours": float(dc.system_hours),
                        "weibull_slope": dc.weibull_slope}
+        if rollers:
+            out["duty"]["seat_weibull_slopes"] = [float(e) for e in dc.seat_weibull_slopes]
     return out
+
+
+def _ball_seat(s, rows, r, k) -> dict:
+    """The ``--json`` row of a ball seat ``s`` (k-th of the solved shaft ``r``; ``rows``
+    its rows' load distributions)."""
+    from ballrace.analytic import ratings
+    from ballrace.analytic.duplex import DuplexPair
+
+    s0 = r.static_safety
+    Q = np.concatenate([np.atleast_1d(x.ball_loads) for x in rows])
+    pmax = max(float(np.max(x.inner.p_max)) for x in rows) if Q.max() > 0 else 0.0
+    pmax = max(pmax, max(float(np.max(x.outer.p_max)) for x in rows) if Q.max() > 0 else 0)
+    beta = np.concatenate([np.atleast_1d(x.contact_angles)[np.atleast_1d(x.ball_loads) > 0]
+                           for x in rows]) if Q.max() > 0 else np.zeros(1)
+    R = r.reactions[k]
+    kind = ratings.bearing_type(s.ball_bearing)
+    pair = isinstance(s.bearing, DuplexPair)
+    d = dict(name=s.name, position=s.position,
+             bearing=("pair " + s.bearing.arrangement) if pair else "single",
+             direction=s.direction, floating=s.floating,
+             clearance=(s.ball_bearing.diametral_clearance if s.clearance is None
+                        else s.clearance),
+             operating_clearance=None if pair else (
+                 s.ball_bearing.diametral_clearance if s.clearance is None else s.clearance),
+             reaction=[float(v) for v in R], radial_load=float(np.hypot(R[1], R[2])),
+             moment=float(np.hypot(R[3], R[4])),
+             max_ball_load=float(Q.max()), max_pressure=pmax,
+             static_safety=float(s0[k]),
+             contact_angle_min=float(beta.min()), contact_angle_max=float(beta.max()),
+             contact_angle_limit=(ratings.DEEP_GROOVE_ANGLE_LIMIT if kind == "deep-groove"
+                                  else None),
+             misalignment=float(r.misalignment[k]),
+             misalignment_limit=ratings.PERMISSIBLE_MISALIGNMENT[kind],
+             radial_deflection=float(np.hypot(*r.ring_displacements[k, 1:3])),
+             axial_deflection=float(r.ring_displacements[k, 0]),
+             stiffness=[[float(v) for v in row] for row in r.seat_stiffness[k]])
+    return d
+
+
+def _roller_seat(s, rows, r, k) -> dict:
+    """The ``--json`` row of a seat whose rows are not ball rows (a roller bearing's: their
+    :class:`~ballrace.analytic.roller.loaddist.RollerLoadDistribution`), from what the
+    seat bearing and its rows' results say (the seat contract, duck-typed): the ball row's
+    keys where they mean the same (``max_roller_load`` for ``max_ball_load``; the contact
+    angle is the bearing's, fixed), and the roller's own (``edge_load_ratio``: the largest
+    end-slice load over the most loaded roller's mean slice load,
+    :func:`~ballrace.analytic.roller.bearing.edge_load_ratio`; slices; the life's Weibull
+    slope and exponent)."""
+    from ballrace.analytic.life import BALL_WEIBULL_SLOPE
+    from ballrace.analytic.roller.bearing import edge_load_ratio
+
+    brg = s.bearing
+    R = r.reactions[k]
+    one = rows[0].bearing                      # the single bearing of the rows
+    Q = np.concatenate([np.atleast_1d(x.roller_loads) for x in rows])
+    angle = float(getattr(one, "contact_angle", 0.0))
+    return dict(name=s.name, position=s.position, bearing=brg.seat_name,
+                rolling_element="roller", carries_axial=bool(brg.carries_axial),
+                direction=s.direction, floating=s.floating,
+                clearance=float(rows[0].clearance),
+                operating_clearance=float(rows[0].clearance) if brg.accepts_clearance else None,
+                reaction=[float(v) for v in R], radial_load=float(np.hypot(R[1], R[2])),
+                moment=float(np.hypot(R[3], R[4])),
+                max_roller_load=float(Q.max()),
+                max_pressure=max(float(np.max(x.max_pressure)) for x in rows),
+                static_safety=float(r.static_safety[k]),
+                contact_angle_min=angle, contact_angle_max=angle, contact_angle_limit=None,
+                misalignment=float(r.misalignment[k]),
+                misalignment_limit=getattr(brg, "permissible_misalignment", None),
+                edge_load_ratio=max(edge_load_ratio(x.slice_loads) for x in rows),
+                n_slices=int(one.n_slices), pitch_diameter=float(one.pitch_diameter),
+                radial_deflection=float(np.hypot(*r.ring_displacements[k, 1:3])),
+                axial_deflection=float(r.ring_displacements[k, 0]),
+                stiffness=[[float(v) for v in row] for row in r.seat_stiffness[k]],
+                life_exponent=float(brg.life_exponent),
+                weibull_slope=float(getattr(brg, "weibull_slope", BALL_WEIBULL_SLOPE)))
 
 
 def _moment_note(d: dict, pitch_diameter: float) -> str | None:
@@ -214,7 +270,7 @@ def _render(r: dict, units: str = "eng") -> None:
             ("relative residual", sh["residual"], None)]
     if r["life"]:
         lf = r["life"]
-        rows.append((f"system life {lf['kind']} (e = {lf['weibull_slope']:.4g})",
+        rows.append((f"system life {lf['kind']} ({_slope_text(lf)})",
                      lf["system"], "=1e6 rev"))
         if lf["system_h"] is not None:
             rows.append(("system life", lf["system_h"], "=h"))
@@ -235,7 +291,7 @@ def _render(r: dict, units: str = "eng") -> None:
         return g(0.0 if abs(x) < ROUND_OFF * mscale else x, "moment", 4)
 
     F, M, Ln, Sm, A = (ul(k, units) for k in ("force", "moment", "length", "small", "angle"))
-    flagged = False
+    flagged = rflagged = False
     t1, t2, t3, t4 = [], [], [], []
     for s in r["seats"]:
         R = s["reaction"]
@@ -243,18 +299,25 @@ def _render(r: dict, units: str = "eng") -> None:
         lim = s["contact_angle_limit"]
         bad_beta = lim is not None and max(abs(s["contact_angle_min"]),
                                            abs(s["contact_angle_max"])) > lim
-        bad_tilt = s["misalignment"] > s["misalignment_limit"]
-        flagged |= bad_s0 or bad_beta or bad_tilt
+        bad_tilt = (s["misalignment_limit"] is not None
+                    and s["misalignment"] > s["misalignment_limit"])
+        roller = s.get("rolling_element") == "roller"
+        flagged |= not roller and (bad_s0 or bad_beta or bad_tilt)
+        rflagged |= roller and (bad_s0 or bad_tilt)
         oc = s["operating_clearance"]
         n = s["name"]
+        thrust = (f" {'+' if s['direction'] > 0 else '-'}x"
+                  if s.get("carries_axial", True) else "")
         t1.append([n, g(s["position"], "length"), force(s["radial_load"]), force(R[0]),
                    force(R[1]), force(R[2])])
-        t2.append([n, f"{s['bearing']} {'+' if s['direction'] > 0 else '-'}x"
+        t2.append([n, f"{s['bearing']}{thrust}"
                    + (" floating" if s["floating"] else ""), moment(R[3]), moment(R[4]),
                    fmt(s["misalignment"] * 1e3, 3) + (" !" if bad_tilt else "")])
-        t3.append([n, "-" if oc is None else g(oc, "small", 4), g(s["max_ball_load"], "force"),
+        t3.append([n, "-" if oc is None else g(oc, "small", 4),
+                   g(s["max_roller_load" if roller else "max_ball_load"], "force"),
                    g(s["max_pressure"], "stress", 4),
                    fmt(s["static_safety"], 3) + (" !" if bad_s0 else ""),
+                   "roller" if roller else
                    f"{g(s['contact_angle_min'], 'angle', 3)}.."
                    f"{g(s['contact_angle_max'], 'angle', 3)}" + (" !" if bad_beta else "")])
         t4.append([n, g(s["radial_deflection"], "small", 4),
@@ -273,6 +336,12 @@ def _render(r: dict, units: str = "eng") -> None:
               "(negative: preload); s0 = (4200 MPa / p_max)^3 from the most loaded contact "
               "(ISO 76 bases C0 on 4200 MPa); L10r: ISO/TS 16281 life from the ball loads, "
               "ISO 281 L10 from P = X Fr + Y Fa")
+    if any(s.get("rolling_element") == "roller" for s in r["seats"]):
+        legend += ("; roller seats: Q_max the largest roller load, p_max and s0 = "
+                   "(4000 MPa / p_max)^2 of the most loaded slice of the lamina model (ISO 76 "
+                   "bases C0r on 4000 MPa), beta shown as \"roller\" (the contact angle is the "
+                   "bearing's: 0, or the cup angle), L10r from the slice loads (ISO/TS 16281), "
+                   "ISO 281 L10 = (C/P)^(10/3), lives combined with e = 9/8")
     if r["loads"]:
         dscale = max([p["deflection"] for p in r["loads"]] + [0.0])
         tscale = max([p["slope"] for p in r["loads"]] + [0.0])
@@ -302,14 +371,33 @@ def _render(r: dict, units: str = "eng") -> None:
             "angular-contact "
             f"{math.degrees(ratings.PERMISSIBLE_MISALIGNMENT['angular-contact']) * 60:.0f} "
             "arcmin; ballrace.analytic.ratings)")
+    if rflagged:
+        from ballrace.analytic.roller import bearing as rb
+
+        lims = rb.PERMISSIBLE_MISALIGNMENT
+        notes.append(
+            "! roller seats: s0 < 1 (the lamina pressure exceeds the 4000 MPa of C0r, ISO 76) "
+            "or a tilt beyond the permissible misalignment (cylindrical "
+            f"{math.degrees(lims['cylindrical']) * 60:.0f} arcmin, tapered "
+            f"{math.degrees(lims['tapered']) * 60:.0f} arcmin; "
+            "ballrace.analytic.roller.bearing)")
     if r.get("duty"):
         d = r["duty"]
         rows = [(f"{s['name']}: L10r (Palmgren-Miner)", h, "=h")
                 for s, h in zip(r["seats"], d["seat_hours"])]
-        rows.append((f"system (e = {d['weibull_slope']:.4g})", d["system_hours"], "=h"))
+        rows.append((f"system ({_slope_text(d)})", d["system_hours"], "=h"))
         print_sections(con, [(f"Duty cycle ({len(d['fractions'])} cases)", rows)], units)
     for n in notes + r["notes"]:
         con.print(literal(f"note: {n}"), style="dim")
+
+
+def _slope_text(life: dict) -> str:
+    """"e = 1.111", or with ball and roller seats (different slopes, ``weibull_slope``
+    nan) "e = 1.111, 1.125 per seat"."""
+    e = life["weibull_slope"]
+    if e is not None and math.isfinite(e):
+        return f"e = {e:.4g}"
+    return "e = " + ", ".join(f"{v:.4g}" for v in life["seat_weibull_slopes"]) + " per seat"
 
 
 def plot(r: dict, path) -> float:
@@ -389,7 +477,8 @@ def register(app) -> None:
         plot_file: Annotated[Optional[str], typer.Option(
             "--plot", help="Write a picture of the shaft (PNG/SVG/PDF) to this file.")] = None,
     ):
-        """An elastic shaft on its ball bearings: reactions, ball loads, deflection, lives."""
+        """An elastic shaft on its ball or roller bearings: reactions, element loads,
+        deflection, lives."""
         from ballrace.commands import run_case_file
 
         result = run_case_file(case_file, units, "shaft", load_shaft_case, analyze,

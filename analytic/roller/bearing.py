@@ -65,7 +65,8 @@ from ..materials import BEARING_STEEL, Material, effective_modulus
 from . import lamina
 from .profile import ProfileContext, as_profile
 
-__all__ = ["RollerBearing", "KINDS", "STATIC_PRESSURE"]
+__all__ = ["RollerBearing", "KINDS", "STATIC_PRESSURE", "PERMISSIBLE_MISALIGNMENT",
+           "EDGE_LOAD_RATIO", "edge_load_ratio"]
 
 #: Kinds of roller bearing.
 KINDS = ("cylindrical", "tapered")
@@ -76,6 +77,32 @@ STATIC_PRESSURE = 4000e6
 
 #: Largest roller diameter / length that is not warned about as a unit slip [m].
 LARGEST_ROLLER = 0.3
+
+#: Permissible misalignment (tilt of the inner ring relative to the outer ring) of a
+#: single-row roller bearing [rad], above which a shaft seat warns
+#: (:meth:`RollerBearing.seat_warnings`):
+#:
+#: * ``"cylindrical"``: 4 arcmin = 1.16 mrad, "0.0012 radian (4 arcminutes) for cylindrical
+#:   roller bearings" (Pumps & Systems, *Prevent Bearing Misalignment*, as a general
+#:   acceptable alignment); manufacturers' guides give 1 to 4 arcmin depending on the series
+#:   (Autodesk Inventor's bearing generator uses 6 arcmin for the NU2, NU3, NU4 series);
+#: * ``"tapered"``: 2 arcmin = 0.58 mrad, the value of the table "Permissible bearing tilt"
+#:   of the Autodesk Inventor help for single-row tapered roller bearings.
+#:
+#: Guide values from secondary sources; the manufacturers' catalogues themselves were not
+#: read here.  Beyond them a roller runs edge loaded, which the lamina model shows in its
+#: end slices (:data:`EDGE_LOAD_RATIO`) but whose edge stress peak it does not resolve.
+PERMISSIBLE_MISALIGNMENT = {"cylindrical": float(np.radians(4.0 / 60.0)),
+                            "tapered": float(np.radians(2.0 / 60.0))}
+
+#: Edge loading a seat warns about [-]: an end slice of a roller carrying more than this
+#: multiple of the mean slice load Q_max / n_s of the most loaded roller (1 for straight
+#: rollers without tilt, below 1 for crowned ones; cf.
+#: :attr:`~ballrace.analytic.roller.loaddist.RollerLoadDistribution.edge_load_ratio`, per
+#: roller).  A screening value chosen
+#: here, not a standard's: the lamina model has no edge stress peak, so a loaded roller end
+#: means a real pressure above the lamina's there (``roller_contact`` solves it).
+EDGE_LOAD_RATIO = 1.5
 
 
 
@@ -551,12 +578,60 @@ class RollerBearing:
         return float(ratings.dynamic_equivalent_load(radial_load, axial_load,
                                                      self.contact_angle, 1))
 
+    @property
+    def permissible_misalignment(self) -> float:
+        """Tilt of the inner ring against the outer ring the bearing tolerates [rad]
+        (:data:`PERMISSIBLE_MISALIGNMENT` of its kind)."""
+        return PERMISSIBLE_MISALIGNMENT[self.kind]
+
     def seat_warnings(self, what, results, tilt) -> tuple:
-        """The static-safety message of the seat's rows (``results``: their
-        :class:`~ballrace.analytic.roller.loaddist.RollerLoadDistribution`), or None;
-        what names the seat, tilt [rad] (no tilt limit is checked: the slice loads show
-        the edge loading a tilt causes)."""
-        return (seat_safety_message(what, results),)
+        """Messages (str or None) for the seat's rows (``results``: their
+        :class:`~ballrace.analytic.roller.loaddist.RollerLoadDistribution`): static safety
+        below 1, a tilt beyond :attr:`permissible_misalignment`, edge-loaded rollers
+        (:func:`seat_tilt_messages`); ``what`` names the seat, tilt [rad]."""
+        return (seat_safety_message(what, results),
+                *seat_tilt_messages(what, self, results, tilt))
+
+
+def seat_tilt_messages(what: str, bearing, results, tilt) -> tuple:
+    """(tilt message, edge message), each str or None, for a roller seat: the ring tilt
+    [rad] beyond :data:`PERMISSIBLE_MISALIGNMENT` of ``bearing``'s kind (a
+    :class:`RollerBearing`), and the end slice of a roller (any of ``results``, roller load
+    distributions) carrying more than :data:`EDGE_LOAD_RATIO` times the mean slice load of
+    the most loaded roller; ``what`` names the seat."""
+    lim = PERMISSIBLE_MISALIGNMENT[bearing.kind]
+    t = float(np.max(tilt)) if np.size(tilt) else 0.0
+    ratio = max((edge_load_ratio(r.slice_loads) for r in results), default=0.0)
+    if t > lim:
+        return (f"{what}: the inner ring is tilted {t * 1e3:.3g} mrad "
+                f"({math.degrees(t) * 60:.3g} arcmin) against the outer ring, more than the "
+                f"{math.degrees(lim) * 60:.0f} arcmin ({lim * 1e3:.2f} mrad) a {bearing.kind} "
+                "roller bearing tolerates (roller.bearing.PERMISSIBLE_MISALIGNMENT, guide "
+                "values): expect a shorter life; roller end slices carry up to "
+                f"{ratio:.3g} times the most loaded roller's mean slice load (edge loading "
+                f"above {EDGE_LOAD_RATIO:g}, with an edge stress the lamina model does not "
+                "resolve)"), None
+    if ratio > EDGE_LOAD_RATIO:
+        return None, (f"{what}: edge-loaded rollers: an end slice carries {ratio:.3g} times "
+                      f"the most loaded roller's mean slice load (above {EDGE_LOAD_RATIO:g}) "
+                      f"at a tilt of {t * 1e3:.3g} mrad, within the permissible misalignment: the "
+                      "roller ends see an edge stress the lamina model does not resolve "
+                      "(check the profile, or solve the roller's line contact: "
+                      "RollerLoadDistribution.roller_contact)")
+    return None, None
+
+
+def edge_load_ratio(q) -> float:
+    """Edge loading of a roller set [-]: the largest end-slice load of any roller over the
+    mean slice load Q_max / n_s of the most loaded roller, of slice loads q (..., Z, n_s)
+    [N] (0 without load): 1 for straight rollers without tilt; a lightly loaded roller
+    touching at one end only counts no more than its load."""
+    q = np.asarray(q, float)
+    Qmax = float(q.sum(-1).max(initial=0.0))
+    if not Qmax > 0:
+        return 0.0
+    end = float(np.maximum(q[..., 0], q[..., -1]).max())
+    return end / (Qmax / q.shape[-1])
 
 
 def seat_safety_message(what: str, results) -> str | None:

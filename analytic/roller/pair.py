@@ -34,7 +34,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .._checks import check_choice, check_nonnegative
-from .bearing import RollerBearing, seat_safety_message
+from .bearing import RollerBearing, seat_safety_message, seat_tilt_messages
 from .loaddist import RollerRow
 
 __all__ = ["TaperedPair", "ARRANGEMENTS"]
@@ -188,7 +188,14 @@ class TaperedPair:
         16281 lives apply); radial_load, axial_load [N], contact_angle [rad] unused."""
         return None
 
+    @property
+    def permissible_misalignment(self) -> float:
+        """Tilt the rows tolerate [rad]: that of the single bearing."""
+        return self.bearing.permissible_misalignment
+
     def seat_warnings(self, what, results, tilt) -> tuple:
-        """The static-safety message of the pair's rows (4000 MPa, ISO 76), or None;
-        tilt [rad] unused."""
-        return (seat_safety_message(what, results),)
+        """Messages (str or None) for the pair's rows: static safety below 1 (4000 MPa,
+        ISO 76), a tilt [rad] beyond the bearing's permissible misalignment, edge-loaded
+        rollers (:func:`~ballrace.analytic.roller.bearing.seat_tilt_messages`)."""
+        return (seat_safety_message(what, results),
+                *seat_tilt_messages(what, self.bearing, results, tilt))
