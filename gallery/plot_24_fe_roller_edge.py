@@ -8,7 +8,8 @@ contact; a rigid roller on one elastic block of the contact modulus — line_con
 half-space idealisation — with the roller end a real sharp edge of the loaded region) and
 compares it with the strip method of :func:`ballrace.analytic.roller.line_contact`.  Here
 the 12 mm roller (R1 = 6 mm) on a flat raceway, steel, 5 kN, at the ``quick`` mesh level
-(a smoke level: some 10–20 s of CPU per roller with PARDISO):
+(a smoke level: some 10–20 s of CPU per roller with PARDISO, a few seconds more for the
+picture):
 
 * a circular crown (4 mm flat, 0.5 m crown radius): the pressure peaks where the flat
   part ends, the roller ends stay free, and FE and strips agree;
@@ -118,3 +119,22 @@ axes[0, 0].legend(fontsize=7, loc="lower left")
 fig.suptitle("12 mm roller on a flat raceway, 5 kN: FE (quick level, half-space mode) "
              "against line_contact and the lamina model")
 fig.tight_layout()
+
+# %%
+# The library's picture of the straight roller (pyvista, off-screen:
+# :func:`ballrace.fem.render.render_roller`): the raceway cut open under the roller axis,
+# the von Mises field below the middle and below the roller end (the axis along the
+# roller drawn compressed), and the pressure along the roller.
+import tempfile
+from pathlib import Path
+
+import matplotlib.image as mpimg
+
+from ballrace.fem.render import render_roller
+
+png = render_roller(results["straight"], Path(tempfile.mkdtemp()) / "straight.png",
+                    field="von_mises")
+fig2, ax2 = plt.subplots(figsize=(12, 8.6))
+ax2.imshow(mpimg.imread(png))
+ax2.axis("off")
+fig2.tight_layout()

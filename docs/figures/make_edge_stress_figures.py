@@ -24,11 +24,14 @@ Run from the repository root::
     .venv/bin/python docs/figures/make_edge_stress_figures.py            # all, FE quick
     .venv/bin/python docs/figures/make_edge_stress_figures.py --level standard
     .venv/bin/python docs/figures/make_edge_stress_figures.py --no-fe    # analytic only
+    ... --level standard --reuse /tmp/edge   # keep the FE results, redraw without solving
 
-Time (2 cores shared with other jobs, PARDISO): the analytic figures some 10 s of CPU;
-the FE at the quick level some 15 s of CPU per roller (three rollers, the meshes cached
-after the first run), at the standard level 45–95 s per roller and up to 3 GB (fem.roller's
-notes); the 3-D pictures a few seconds each.
+Time (2 cores shared with other jobs, load average 6–9, PARDISO; measured with
+/usr/bin/time): the analytic figures 4–6 s of CPU; everything at the quick level 40 s of
+CPU (100 s of wall time, 0.8 GB), at the standard level 196 s of CPU (450 s of wall time,
+3.2 GB peak: straight 207k DOFs, crowned 171k, Lundberg 139k), the meshes taken from the
+cache; the 3-D pictures (:func:`ballrace.fem.render.render_roller`, which rebuilds the
+raceway mesh) are included.
 """
 from __future__ import annotations
 
@@ -203,9 +206,19 @@ def refinement_figure(path, fe=None):
 
 
 # --------------------------------------------------------------------------- FE
-def run_fe(level):
-    """FE of the three rollers on a flat raceway (half-space mode), by label."""
+def run_fe(level, reuse=None):
+    """FE of the three rollers on a flat raceway (half-space mode), by label; with
+    ``reuse`` (a folder), the results are kept there as pickles and read back on the next
+    run with the same level (to redraw without solving again)."""
+    import pickle
+
     from ballrace import fem
+
+    store = Path(reuse) / f"edge-fe-{level}.pickle" if reuse else None
+    if store is not None and store.exists():
+        log.info("FE results read from %s", store)
+        with open(store, "rb") as f:
+            return pickle.load(f)
 
     st = _steel()
     chosen = {"straight": "straight",
@@ -220,6 +233,10 @@ def run_fe(level):
         log.info("FE %s, %s: %d DOFs, %.0f s wall, %.0f s CPU (this process)", name, level,
                  r.n_dofs, time.time() - t0, time.process_time() - c0)
         out[name] = r
+    if store is not None:
+        store.parent.mkdir(parents=True, exist_ok=True)
+        with open(store, "wb") as f:
+            pickle.dump(out, f)
     return out
 
 
@@ -244,8 +261,10 @@ def fe_pressure_figure(path, results):
                 label=f"line_contact, {N_SLICES} slices")
         ax.axhline(c.hertz_pressure / 1e9, color="k", lw=0.6, ls=":",
                    label="2-D Hertz at Q/L")
-        ax.set(title=name, xlabel="x along the roller [mm]", ylim=(0, 3.0))
+        ax.set(title=name, xlabel="x along the roller [mm]")
         ax.grid(alpha=0.3)
+    top = max(float(np.max(r.pressure)) for r in results.values()) / 1e9
+    axes[0].set_ylim(0.0, max(3.0, 1.05 * top))
     axes[0].set_ylabel("contact pressure [GPa]")
     axes[0].legend(fontsize=7, loc="lower left")
     fig.suptitle(f"Half roller (x = 0 centre, 6 mm end) on a flat raceway, {Q / 1e3:g} kN: "
@@ -255,14 +274,14 @@ def fe_pressure_figure(path, results):
 
 def fe_pictures(results, stem="edge-fe"):
     """3-D pictures of the FE von Mises field (ballrace.fem.render.render_roller)."""
-    from ballrace.fem import render
+    from ballrace.fem.render import render_roller
 
     names = {"straight": "straight", "circular crown (4 mm flat, R = 0.5 m)": "crowned",
              "Lundberg (for 5 kN)": "lundberg"}
     paths = []
     for name, r in results.items():
         p = OUT / f"{stem}-{names[name]}.png"
-        render.render_roller(r, p, field="von_mises")
+        render_roller(r, p, field="von_mises")
         paths.append(p)
     return paths
 
@@ -272,6 +291,8 @@ def main(argv=None):
     ap.add_argument("--level", default="quick", help="FE mesh level (quick | standard)")
     ap.add_argument("--no-fe", action="store_true", help="analytic figures only")
     ap.add_argument("--no-3d", action="store_true", help="no pyvista pictures")
+    ap.add_argument("--reuse", metavar="FOLDER",
+                    help="keep the FE results in FOLDER and reuse them when present")
     args = ap.parse_args(argv)
     logging.basicConfig(level=logging.INFO, format="%(message)s")
     OUT.mkdir(parents=True, exist_ok=True)
@@ -286,7 +307,7 @@ def main(argv=None):
     if args.no_fe:
         refinement_figure(OUT / "edge-straight-refinement.png")
         return
-    results = run_fe(args.level)
+    results = run_fe(args.level, args.reuse)
     fe_pressure_figure(OUT / "edge-fe-pressure.png", results)
     straight = {args.level: results["straight"]}
     refinement_figure(OUT / "edge-straight-refinement.png", straight)
