@@ -96,7 +96,7 @@ def profiles_figure(path):
     """Drops and pressures of the five profiles."""
     from matplotlib.figure import Figure
 
-    from ballrace.analytic.roller import line_contact
+    from ballrace.analytic.roller import ProfileContext, line_contact
 
     st = _steel()
     fig = Figure(figsize=(12, 4.4), layout="constrained")
@@ -105,11 +105,8 @@ def profiles_figure(path):
     rows = []
     for k, (name, prof) in enumerate(profiles().items()):
         c = line_contact(Q, R1, R2_ANALYTIC, L, st, st, profile=prof, n_slices=N_SLICES)
-        ctx = c.profile
-        from ballrace.analytic.roller import ProfileContext
-
         pc = ProfileContext(length=L, diameter=2 * R1, E_prime=c.E_prime, R=c.R, load=Q)
-        d = np.asarray(ctx.drop(xs, pc), dtype=float)
+        d = np.asarray(c.profile.drop(xs, pc), dtype=float)
         a_drop.plot(xs * 1e3, d * 1e6, color=f"C{k}", label=name)
         a_p.plot(c.x * 1e3, c.pressure / 1e9, ".-", color=f"C{k}", ms=3, lw=1, label=name)
         rows.append((name, c))
@@ -247,7 +244,7 @@ def fe_pressure_figure(path, results):
     fig = Figure(figsize=(13, 4.3), layout="constrained")
     axes = fig.subplots(1, len(results), sharey=True)
     w = L / N_SLICES * 1e3
-    for k, (ax, (name, r)) in enumerate(zip(axes, results.items())):
+    for ax, (name, r) in zip(axes, results.items()):
         c = r.analytic
         mid = (c.n_slices - 1) // 2
         xl, pl = lamina_pressure(c.profile, math.inf)
