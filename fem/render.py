@@ -26,7 +26,8 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["render", "render_3d", "FIELDS", "FIELDS_3D", "section_comparison", "nodal_stress",
+__all__ = ["render", "render_3d", "render_roller", "roller_raceway_state", "FIELDS",
+           "FIELDS_3D", "FIELDS_ROLLER", "section_comparison", "nodal_stress",
            "offscreen_vtk"]
 
 FIELDS = ("von_mises", "max_shear", "tau_xz", "tau_yz", "pressure")
@@ -531,3 +532,289 @@ def _nice_top(v: float) -> tuple[float, float]:
     e = 10.0 ** np.floor(np.log10(max(v, 1e-12)))
     step = next(m * e for m in (0.1, 0.2, 0.25, 0.4, 0.5, 1.0, 2.0) if np.ceil(v / (m * e)) <= 8)
     return float(np.ceil(v / step) * step), float(step)
+
+
+# --------------------------------------------------------------------------- roller (pyvista)
+FIELDS_ROLLER = ("von_mises", "max_shear")
+
+
+def roller_raceway_state(r, *, raceway_radius: float = np.inf, material=None):
+    """The raceway body of a :class:`~ballrace.fem.RollerFEResult`, rebuilt for drawing.
+
+    The result keeps the displacements (``fields["u"]``) but not the meshes; the raceway
+    block is rebuilt from the mesh cache (or remeshed: the meshes are deterministic) with
+    the parameters :func:`ballrace.fem.roller_contact` used, and checked twice: its digest
+    against ``info["mesh_digests"]`` and the von Mises stress it gives under the roller
+    centre against the result's own (``fields["von_mises"]``).
+
+    Parameters
+    ----------
+    r : RollerFEResult
+        A solved roller contact at a named level.
+    raceway_radius : float
+        The raceway radius R2 the result was solved with (it sets the block width) [m]:
+        ``inf`` flat, negative concave.
+    material : Material, optional
+        The raceway material (its Poisson's ratio) [-]; default bearing steel.
+
+    Returns
+    -------
+    state : SimpleNamespace
+        ``body`` (name, E [Pa], nu [-], surface), ``mesh``, ``scalar_basis``: what
+        :func:`nodal_stress` and :mod:`ballrace.fem.extract` read.
+    u : ndarray
+        The raceway's displacement vector [m].
+
+    Raises
+    ------
+    ValueError
+        A custom level, or a rebuilt mesh or stress that is not the result's (another
+        ``raceway_radius`` or ``material`` than the solve's).
+    """
+    import math
+    from types import SimpleNamespace
+
+    from skfem import Basis, ElementTetP2, ElementVector, MeshTet
+
+    from ballrace.analytic.materials import BEARING_STEEL
+    from ballrace.meshes import roller as mr
+
+    from . import extract as ex
+    from .roller import BLOCK_L, OVERHANG, ROLLER_LEVELS
+
+    if r.level not in ROLLER_LEVELS:
+        raise ValueError(f"level: no picture of a result at a custom level ({r.level!r}); "
+                         f"solve at one of {', '.join(ROLLER_LEVELS)}")
+    mat = material if material is not None else BEARING_STEEL
+    c, info, lv = r.analytic, r.info, ROLLER_LEVELS[r.level]
+    R2 = float(raceway_radius)
+    L = float(c.length)
+    Lh = 0.5 * L
+    b0, h = float(info["b_hertz"]), float(info["h"])
+    bmax = max(float(np.max(c.half_width)), b0)
+    Ly = float(r.fields["grid"].Ly)
+    kw = dict(strip=Ly + 2.0 * h, layer=0.5 * b0, depth=1.2 * bmax + 0.4 * b0, column=2.0 * b0,
+              edge_zone=1.5 * bmax, h=h, h_edge=lv.edge * h, growth=0.3,
+              stretch=float(info["stretch"]))
+    Yb = min(BLOCK_L * L, 0.5 * abs(R2)) if math.isfinite(R2) else BLOCK_L * L
+    Hb = BLOCK_L * L
+    blk = mr.raceway_mesh((Lh + OVERHANG * L, Yb, Hb), Lh, **kw)
+    surface = mr.RacewaySurface(R2 if r.mode == "two-body" else math.inf)
+    if r.mode == "two-body" and math.isfinite(R2):
+        blk = mr.bend_raceway(blk, surface, Hb)
+    if blk.digest() != info["mesh_digests"][-1]:
+        raise ValueError("raceway_radius: the rebuilt raceway mesh is not the result's; "
+                         "give the raceway radius R2 the contact was solved with [m]")
+    p = np.ascontiguousarray(blk.points.T)
+    t = np.ascontiguousarray(blk.tets.T)
+    a, b, cc, d = (p[:, t[i]] for i in range(4))       # positive orientation, as assembled
+    neg = np.einsum("ij,ij->j", np.cross(b - a, cc - a, axis=0), d - a) < 0
+    if np.any(neg):
+        t = t.copy()
+        t[[1, 2]] = np.where(neg, t[[2, 1]], t[[1, 2]])
+    mesh = MeshTet(p, t)
+    sbasis = Basis(mesh, ElementVector(ElementTetP2()), intorder=1).with_element(ElementTetP2())
+    if r.mode == "two-body":
+        E, nu, name = mat.E, mat.nu, "raceway"
+    else:
+        E, nu, name = 0.5 * c.E_prime * (1.0 - mat.nu ** 2), mat.nu, "half-space"
+    state = SimpleNamespace(body=SimpleNamespace(name=name, E=E, nu=nu, surface=surface),
+                            mesh=mesh, scalar_basis=sbasis)
+    u = np.asarray(r.fields["u"][-1])
+    if u.size != 3 * sbasis.N:
+        raise ValueError("raceway_radius: the rebuilt raceway mesh is not the result's")
+    # the result's own von Mises profile under the centre, recomputed on the rebuilt body
+    zs = np.asarray(r.fields["depth"])
+    eps = 1e-7 * h
+    pts = np.stack([np.full(zs.size, eps), np.full(zs.size, eps),
+                    surface.height(0.0, 0.0) - zs], axis=1)
+    vm = ex.tresca_von_mises(ex.to_depth_frame(ex.stresses(state, u, pts)))[1]
+    if not np.allclose(vm, r.fields["von_mises"][0], rtol=1e-6):
+        raise ValueError("material: the stress on the rebuilt raceway is not the result's; "
+                         "give the raceway material the contact was solved with")
+    return state, u
+
+
+def _roller_label(r) -> str:
+    c = r.analytic
+    prof = getattr(c.profile, "name", None) or type(c.profile).__name__
+    return (f"{prof} roller, Q = {c.load:g} N, L = {c.length * 1e3:g} mm "
+            f"({r.mode}, {r.level} level, {r.n_dofs:,} DOFs)")
+
+
+def render_roller(r, path: str = "roller.png", *, field: str = "von_mises",
+                  raceway_radius: float = np.inf, material=None,
+                  window_size=(1400, 1000)) -> str:
+    """Picture of an FE roller contact: the stress below the contact and the pressure
+    along the roller.
+
+    Top: an off-screen pyvista view of the raceway block under the roller (the roller a
+    grey segment above it), the quarter model mirrored to the whole roller length and cut
+    open over ``x > 0, y > 0`` so that the section ``y = 0`` under the roller axis — the
+    field under the middle and below the roller end, the edge region — and the section
+    ``x = 0`` across the rolling direction show the stress, recovered at the P2 nodes
+    (:func:`nodal_stress`) in MPa.  The axis along the roller is drawn compressed (the
+    contact is some 40 half-widths long): the scale is written on the picture.
+    Bottom: the pressure along the roller — the FE peak over the rolling direction at
+    the tent nodes, its average over each of line_contact's slices, and line_contact's
+    slice pressures — with the FE slice loads against line_contact's.
+
+    pyvista (VTK) and matplotlib are imported here only; VTK's off-screen window is
+    chosen first (:func:`offscreen_vtk`).
+
+    Parameters
+    ----------
+    r : RollerFEResult
+        A solved :func:`ballrace.fem.roller_contact` at a named level.
+    path : str
+        Output PNG path.
+    field : {"von_mises", "max_shear"}
+        von Mises or maximum shear (Tresca) stress.
+    raceway_radius : float
+        The raceway radius R2 of the solve [m] (``inf`` flat; the raceway mesh is
+        rebuilt, :func:`roller_raceway_state`).
+    material : Material, optional
+        The raceway material of the solve; default bearing steel.
+    window_size : (int, int)
+        Image size [px] (width, height).
+
+    Returns
+    -------
+    str
+        The path written.
+
+    Raises
+    ------
+    ImportError
+        If pyvista (VTK) or matplotlib is not installed.
+    """
+    from ballrace.analytic._checks import check_choice
+
+    from .extract import tresca_von_mises
+
+    check_choice(field, "field", FIELDS_ROLLER)
+    offscreen_vtk()
+    import pyvista as pv
+    from matplotlib.figure import Figure
+
+    state, u = roller_raceway_state(r, raceway_radius=raceway_radius, material=material)
+    pts, cells, S = nodal_stress(state, u)
+    tres, vm = tresca_von_mises(S)
+    val = (vm if field == "von_mises" else tres) / 1e6
+    c = r.analytic
+    mm = 1e3
+    Lh = 0.5 * float(c.length)
+    b0 = float(r.info["b_hertz"])
+    surf = state.body.surface
+    depth = np.asarray(surf.height(pts[:, 0], pts[:, 1]), dtype=float) - pts[:, 2]
+    # the box drawn: the roller and a little beyond its end, 3 half-widths across and deep
+    X, Y, D = Lh + 8.0 * b0, 3.0 * b0, 3.0 * b0
+    sx = min(1.0, 3.0 * Y / X)                       # axial compression of the picture
+    tets = state.scalar_basis.element_dofs[:4].T
+    near = np.all((pts[tets, 0] <= 1.2 * X) & (pts[tets, 1] <= 1.5 * Y)
+                  & (depth[tets] <= 1.5 * D), axis=1)
+    cells = cells.reshape(-1, 8, 4)[near].reshape(-1, 4)
+    P = pts * mm
+    P[:, 0] *= sx
+    zlo, zhi = float(P[:, 2].min()), float(P[:, 2].max())
+    box = (0.0, X * mm * sx, 0.0, Y * mm, zlo - 1.0, zhi + 1.0)
+    body = _cutaway(pv, cells, P, box, depth * mm, D * mm, val)
+    title = {"von_mises": "von Mises stress", "max_shear": "max shear stress (Tresca)"}[field]
+
+    pl = pv.Plotter(off_screen=True, window_size=(int(window_size[0]),
+                                                  int(0.62 * window_size[1])))
+    try:
+        pl.set_background("white")
+        hi, step = _nice_top(float(np.max(val[np.unique(cells)])))
+        pl.add_mesh(body, scalars="MPa", cmap="viridis", clim=(0.0, hi), ambient=0.6,
+                    diffuse=0.45, specular=0.0,
+                    scalar_bar_args={"title": f"{title} [MPa]", "color": "black",
+                                     "n_labels": int(round(hi / step)) + 1,
+                                     "vertical": True, "position_x": 0.9, "position_y": 0.2,
+                                     "height": 0.65, "width": 0.04, "fmt": "%.0f",
+                                     "title_font_size": 16, "label_font_size": 14})
+        # the roller: a grey, translucent segment of its profiled surface resting on the
+        # contact behind the section y = 0 (-Y <= y <= 0), over its whole length
+        from ballrace.analytic.roller import ProfileContext
+
+        R1 = _roller_radius(c, raceway_radius)
+        ctx = ProfileContext(length=c.length, diameter=2.0 * R1, E_prime=c.E_prime, R=c.R,
+                             load=c.load)
+        XX, YY = np.meshgrid(np.linspace(-Lh, Lh, 241), np.linspace(-Y, 0.0, 13), indexing="ij")
+        cap = 0.5 * D
+        dr = np.asarray(c.profile.drop(np.clip(XX, -Lh * (1 - 1e-9), Lh * (1 - 1e-9)), ctx),
+                        dtype=float)
+        dr = np.minimum(np.where(np.isfinite(dr), dr, cap), cap)
+        ZZ = dr + R1 - np.sqrt(np.clip(R1 * R1 - YY * YY, 0.0, None)) + float(surf.height(0, 0))
+        roller = pv.StructuredGrid(XX * mm * sx, YY * mm, ZZ * mm + 0.01 * D * mm)
+        pl.add_mesh(roller, color="silver", opacity=0.45, smooth_shading=True)
+        for xe in (-Lh, Lh):                      # the roller ends
+            yl = np.linspace(-Y, 0.0, 13)
+            dz = float(np.minimum(cap, np.nan_to_num(
+                float(c.profile.drop(xe * (1 - 1e-9), ctx)), nan=cap, posinf=cap)))
+            zl = dz + R1 - np.sqrt(R1 * R1 - yl * yl) + 0.01 * D
+            pl.add_mesh(pv.lines_from_points(np.stack([np.full(yl.size, xe * sx), yl, zl],
+                                                      axis=1) * mm), color="dimgray",
+                        line_width=2)
+        pl.add_text(f"{title}: {_roller_label(r)}\nraceway under the roller (grey), cut open "
+                    "at the sections y = 0 (under the roller axis) and x = 0 (mid-length); "
+                    f"x drawn at {sx:.2g} of scale, coordinates in mm",
+                    position="upper_left", font_size=11, color="black")
+        bb = np.array(body.bounds, dtype=float)
+        bb[:2] /= sx                                 # the labels in true mm
+        pl.show_bounds(location="outer", color="black", font_size=14,
+                       xtitle="x along the roller [mm]", axes_ranges=bb.tolist(),
+                       ytitle="y rolling [mm]", ztitle="z [mm]", n_xlabels=3, n_ylabels=2,
+                       n_zlabels=3, fmt="%.2f")
+        pl.camera_position = [(0.9, 1.6, 0.75), (0.0, 0.0, 0.0), (0.0, 0.0, 1.0)]
+        pl.reset_camera()
+        pl.camera.zoom(1.6)
+        img = pl.screenshot(return_img=True)
+    finally:
+        pl.close()
+
+    dpi = 100
+    fig = Figure(figsize=(window_size[0] / dpi, window_size[1] / dpi), dpi=dpi,
+                 layout="constrained")
+    ax3, axp = fig.subplots(2, 1, gridspec_kw={"height_ratios": [0.62, 0.38]})
+    ax3.imshow(img)
+    ax3.set_axis_off()
+    _roller_pressure_axes(axp, r)
+    fig.savefig(str(path), dpi=dpi, facecolor="white")
+    return str(path)
+
+
+def _roller_radius(c, R2: float) -> float:
+    """Roller radius R1 from line_contact's reduced radius and the raceway radius [m]."""
+    return float(c.R) if not np.isfinite(R2) else 1.0 / (1.0 / float(c.R) - 1.0 / float(R2))
+
+
+def _roller_pressure_axes(ax, r) -> None:
+    """Pressure along the roller: FE nodes, FE slice averages, line_contact's slices."""
+    c = r.analytic
+    mm = 1e3
+    x = np.asarray(r.x)
+    xa = np.asarray(c.x)
+    w = c.slice_width
+    ax.plot(np.concatenate([-x[:0:-1], x]) * mm,
+            np.concatenate([r.pressure[:0:-1], r.pressure]) / 1e6, "-", color="C0", lw=1.2,
+            marker=".", ms=4, label="FE: peak over y at the tent nodes")
+    sx = np.asarray(r.slice_x)
+    sp = np.asarray(r.slice_pressure) / 1e6
+    ax.step(np.concatenate([-sx[:0:-1], sx]) * mm, np.concatenate([sp[:0:-1], sp]),
+            where="mid", color="C1", lw=1.6, label="FE: averaged over each slice")
+    ax.step(xa * mm, np.asarray(c.pressure) / 1e6, where="mid", color="k", ls="--", lw=1.3,
+            label=f"line_contact ({c.n_slices} slices)")
+    ax.axvline(-0.5 * c.length * mm, color="grey", lw=0.8, ls=":")
+    ax.axvline(0.5 * c.length * mm, color="grey", lw=0.8, ls=":")
+    ax.set_xlabel("x along the roller [mm]", fontsize=10)
+    ax.set_ylabel("pressure [MPa]", fontsize=10)
+    ax.set_xlim(-(0.5 * c.length + w) * mm, (0.5 * c.length + w) * mm)
+    ax.set_ylim(bottom=0.0)
+    ax.grid(alpha=0.3)
+    ax.tick_params(labelsize=9)
+    e = r.row("edge_slice_load")
+    ax.set_title(f"pressure along the roller (end slice load: FE {e['fe']:.1f} N, "
+                 f"line_contact {e['analytic']:.1f} N; centre pressure "
+                 f"{100 * r.row('centre_pressure')['error']:+.1f} %)", fontsize=10)
+    ax.legend(fontsize=9, loc="lower center", ncol=3)

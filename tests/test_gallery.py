@@ -399,3 +399,63 @@ def test_tapered_pair_preload():
     # preload stiffens: under every external thrust the preloaded pair deflects less
     d = k["deflection"]
     assert np.all(d[4000.0][1:] < d[1000.0][1:]) and np.all(d[1000.0][1:] < d[0.0][1:])
+
+
+@pytest.mark.slow
+@pytest.mark.fem
+@pytest.mark.skipif(not _has_fem(), reason="needs the fem extra")
+def test_fe_roller_edge():
+    # The quick-level tolerances of ballrace.fem.roller.ROLLER_TOLERANCES (centre pressure
+    # 6 %, approach 3 %, von Mises under the centre 5 %; measured +2.3 / +0.3 / +2.7 %
+    # crowned, +5.2 / +0.1 / -0.2 % straight): every row within its own.
+    k = run(checks("plot_24_fe_roller_edge.py"))
+    from ballrace.fem.roller import ROLLER_TOLERANCES
+
+    for name, v in k.items():
+        for q, tol in ROLLER_TOLERANCES["quick"].items():
+            err, t = v["rows"][q]
+            assert t == tol and abs(err) <= tol, (name, q, err, tol)
+        assert v["within_tolerance"] is True
+    st = k["straight"]
+    # the straight roller's edge peak: the FE's nodal peak near the end well above its
+    # centre (measured 2.76 against 1.56 GPa at this level; it grows with refinement)
+    assert st["x_edge"] > 0.45 * 12e-3 and st["edge_pressure"] > 1.5 * st["centre_pressure"]
+    # the lamina's straight roller: every slice the 2-D Hertz pressure at Q/L (a uniform
+    # approach on independent slices; exact by construction)
+    assert st["lamina_pressure"] == pytest.approx(st["p0"], rel=1e-9)
+    cr = k["crowned (4 mm flat, R = 0.5 m)"]
+    # the crown keeps the roller ends free in both models; the slice loads away from the
+    # end of the contact agree within 1.5 % (measured within 1.2 %)
+    assert cr["line_contact_pressure"][0] == 0.0 and cr["line_contact_pressure"][-1] == 0.0
+    err = cr["slice_load_error"]
+    assert np.nanmax(np.abs(err[:15])) < 0.015
+
+
+def test_roller_tilt_edge_stress():
+    k = run(checks("plot_25_roller_tilt_edge_stress.py"))
+    lund = k["Lundberg (designed for 5 kN)"]
+    # Lundberg (1939): his profile at its design load, untilted, gives the 2-D Hertz
+    # pressure at Q/L along the roller (middle 80 %, 0.2 %; measured 0.03 %) ...
+    x, p = lund["x_0"], lund["pressure_0"]
+    mid = np.abs(x) <= 0.4 * 12e-3
+    assert np.max(np.abs(p[mid] / lund["p0"] - 1)) < 2e-3
+    # ... and below its middle McEwen's plane-strain field: von Mises 0.557 p0 at 0.70 b
+    # (2-D Hertz, nu = 0.3; measured 0.559 p0 at 0.71 b: the finite roller and the depth grid)
+    assert lund["vm_centre"] / lund["pressure_centre"] == pytest.approx(0.557, rel=0.01)
+    assert lund["vm_centre_depth"] / lund["half_width_centre"] == pytest.approx(0.70, abs=0.02)
+    for name, v in k.items():
+        # a tilt only adds load to one end: the largest pressure and von Mises stress grow
+        assert np.all(np.diff(v["p_max"]) > 0) and np.all(np.diff(v["vm_max"]) > 0), name
+        # at any point sqrt(3) tau <= sigma_vm <= 2 tau (tau = (s1 - s3)/2), so the maxima
+        # over the field obey the same bounds
+        assert np.all(np.sqrt(3) * v["tr_max"] <= v["vm_max"] * (1 + 1e-12)), name
+        assert np.all(v["vm_max"] <= 2 * v["tr_max"]), name
+    # the straight roller's end slice at 41 slices, untilted: 2.30 GPa (the measured value
+    # of the line_contact module notes; it grows with the slice count)
+    st = k["straight"]
+    assert st["p_max"][0] == pytest.approx(2.30e9, rel=2e-3)
+    assert np.all(st["x_p"] == st["x_p"].max())
+    # the crown keeps its peak inside the roller and below the straight roller's at every tilt
+    cr = k["crowned (4 mm flat, R = 0.5 m)"]
+    assert np.all(cr["p_max"] < st["p_max"]) and np.all(cr["x_p"] < 0.3 * 12e-3)
+    assert np.all(np.diff(cr["x_p"]) >= 0)
