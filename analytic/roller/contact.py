@@ -111,6 +111,17 @@ roller is a property of the slicing, not of the roller: read it as "an edge peak
 a pressure.  The same holds for a crowned roller loaded beyond its :attr:`edge_load
 <LineContactResult.edge_load>`.
 
+A bend of the profile that is sharp on the scale of the half-width behaves like an edge
+here too.  A straight roller with a 0.5 mm corner radius at each end (as an ``(x, drop)``
+table of 4000 points; the same roller on a 30 mm raceway, 5 kN, half-width about 0.35 mm
+at the corner) peaks where the rounding starts, 2.23, 3.47, 3.52 and 4.20 GPa at 41, 161,
+321 and 641 slices: the contact ends within about 0.1 mm of the start of the rounding,
+less than a half-width, which is where the strips' Hertzian shape across the rolling
+direction is only an approximation (above).  The pressure of a real rounded corner is
+bounded; this method does not resolve it, and no warning says so — read such a peak as
+"an edge peak" too, or check it with the FE model (:func:`ballrace.fem.roller_contact`),
+which has no such assumption.
+
 The edge load itself is the load at which the end slices' *centres* touch.  For a circular
 crown it converges as the slices narrow (6535, 6905, 7100 N at 41, 81, 161 slices for the
 crown above: linearly in the slice width); for the logarithmic profiles (ISO, Lundberg,

@@ -16,7 +16,12 @@ the outer raceway (arrays of shape (Z, n_s)).  From them, step by step:
                 \right)^{-9/2}\right]^{2/9}
 
    with λν = 0.83 and γ = D_we cos α / D_pw.  Dividing by λν removes the reduction for
-   edge stresses that ISO 281's f_c contains: the lamina model computes them.  0.378 and
+   edge stresses and uneven load along the roller that ISO 281's f_c contains, because
+   the lamina loads carry the profile, tilt and uneven load instead.  They do not carry an
+   edge *peak*: independent slices have none (the half-space line contact,
+   :meth:`RollerLoadDistribution.roller_contact
+   <ballrace.analytic.roller.loaddist.RollerLoadDistribution.roller_contact>`, shows it),
+   so an edge-loaded roller's L10r misses that peak's stress.  0.378 and
    0.364 are Lundberg & Palmgren's load-integral ratios J_r/J_1 and J_r/J_2 of a line
    contact at ε = 0.5 (exactly 0.37637 and 0.36304 with the load–deflection exponent
    10/9), and 1.038 = 0.378/0.364 is the ratio of the two ring ratings, so that the ring
