@@ -47,6 +47,7 @@ CALC_MODULES = (
     "ballrace.validation.calc_shaft",
     "ballrace.validation.calc_roller",
     "ballrace.validation.calc_fem",
+    "ballrace.validation.calc_fem_roller",
 )
 
 _REQUIRED = object()
