@@ -30,6 +30,32 @@ An FE case file (TOML, units parsed with pint; docs/casefiles.md)::
     # traction = 0.3         # q = traction * p along +x on the lower body (default 0)
     # traction_pressure = "fe"   # fe (the FE's own pressure) | hertz
 
+A roller on its raceway (:func:`ballrace.fem.roller_contact`, checked against
+:func:`ballrace.analytic.roller.line_contact`) takes ``contact = "roller"`` and its own
+``[case]`` keys (defaults: the roller of the measured table in :mod:`ballrace.fem.roller`)::
+
+    title = "Lundberg roller, 5 kN"
+    [case]
+    contact = "roller"
+    load = "5 kN"
+    roller_diameter = "12 mm"   # or roller_radius (radius in the rolling direction)
+    roller_length = "12 mm"     # effective length L_we
+    raceway_radius = "inf"      # "inf" flat; "-40 mm" concave (outer ring), "30 mm" convex
+    profile = "lundberg"        # as in roller bearing case files: "straight", "iso",
+                                # "lundberg", "johns-gohar", a crown
+    # profile = { flat_length = "4 mm", crown_radius = "0.5 m" }
+                                # or a table { x = [...], drop = [...] }
+    n_slices = 41               # slices of the line_contact compared with
+    [materials]                 # optional; default bearing steel
+    roller = { E = "200 GPa", nu = 0.3 }
+    ring = { E = "200 GPa", nu = 0.3 }     # the raceway
+    [fem]
+    level = "standard"          # quick | standard | fine
+    mode = "half-space"         # half-space | two-body
+
+The ball keys (``[bearing]``, ``contact_angle``, ``ball_diameter``, ``[fem]`` gap and
+traction) are refused for a roller, the roller keys for a ball.
+
 Like bearing case files, unknown keys are errors (a typo never runs a default case) and
 every message names the file and the ``[table].key``.  A bearing or validation case
 file given here is refused with a pointer to the right command.  Options given on the
@@ -48,7 +74,8 @@ import typer
 
 from ballrace.console import UNITS_HELP
 
-__all__ = ["register", "FECaseFile", "load_fe_case", "parse_fe_case", "CONTACTS"]
+__all__ = ["register", "FECaseFile", "FERollerCaseFile", "load_fe_case", "parse_fe_case",
+           "CONTACTS", "ROLLER_KEYS"]
 
 #: Contacts an FE case describes: a ball on the inner or outer race of a bearing, on a
 #: flat, or on another ball.
@@ -56,6 +83,15 @@ CONTACTS = ("inner", "outer", "plane", "ball")
 LEVELS = ("quick", "standard", "fine")
 MODES = ("half-space", "two-body")
 GAPS = ("hertz", "exact")
+#: The ``[case]`` keys of a roller contact (``contact = "roller"``), and of a ball one.
+ROLLER_KEYS = ("roller_diameter", "roller_radius", "roller_length", "raceway_radius",
+               "profile", "n_slices")
+BALL_KEYS = ("contact_angle", "ball_diameter")
+#: The ``[fem]`` keys that apply to ball contacts only.
+BALL_FEM_KEYS = ("gap", "traction", "traction_pressure")
+#: The roller of the measured table of :mod:`ballrace.fem.roller`: the defaults of a roller case.
+ROLLER_DEFAULTS = {"load": "5 kN", "roller_diameter": "12 mm", "roller_length": "12 mm",
+                   "raceway_radius": "inf", "profile": "lundberg", "n_slices": 41}
 DEFAULT_OUT = Path("ballrace-out") / "fem"
 
 _BEARING_209 = {"ball_diameter": "12.7 mm", "n_balls": 9, "pitch_diameter": "65 mm",
@@ -92,6 +128,171 @@ class FECaseFile:
 #: (:func:`ballrace.casefiles.schema.bearing_keys`), in this order.
 BEARING_KEYS = ("name", "ball_diameter", "n_balls", "pitch_diameter", "f_inner", "f_outer",
                 "free_contact_angle", "diametral_clearance")
+
+
+@dataclass(frozen=True)
+class FERollerCaseFile:
+    """A validated FE roller case (SI), ready for :func:`ballrace.fem.roller_contact`.
+
+    Attributes
+    ----------
+    title : str
+    load : float
+        Normal roller load Q [N].
+    roller_radius : float
+        Roller radius R1 in the rolling direction [m].
+    raceway_radius : float
+        Raceway radius R2 [m]: ``inf`` flat, negative concave.
+    length : float
+        Effective roller length L_we [m].
+    roller_material, raceway_material : Material
+    profile : str or Profile
+        As :func:`ballrace.analytic.roller.as_profile` takes it.
+    n_slices : int
+        Slices of the line_contact compared with [-].
+    level, mode : run settings.
+    solver : sparse solver or None (automatic).
+    """
+
+    title: str
+    load: float
+    roller_radius: float
+    raceway_radius: float
+    length: float
+    roller_material: object
+    raceway_material: object
+    profile: object
+    n_slices: int
+    level: str
+    mode: str
+    solver: Optional[str]
+    contact: str = "roller"
+
+    def inputs(self) -> dict:
+        """The case in SI for result.json (a flat raceway's radius as null)."""
+        import math
+
+        prof = self.profile if isinstance(self.profile, str) else repr(self.profile)
+        return {"contact": "roller", "load": self.load, "roller_radius": self.roller_radius,
+                "raceway_radius": (self.raceway_radius if math.isfinite(self.raceway_radius)
+                                   else None),
+                "length": self.length, "profile": prof, "n_slices": self.n_slices,
+                "roller_material": {"E": self.roller_material.E, "nu": self.roller_material.nu},
+                "raceway_material": {"E": self.raceway_material.E,
+                                     "nu": self.raceway_material.nu}}
+
+
+@functools.cache
+def _roller_models():
+    """Pydantic model of an FE roller case (``contact = "roller"``)."""
+    from typing import Literal, Union
+
+    from pydantic import Field
+
+    from ballrace.casefiles import schema
+
+    _Strict = schema.strict()
+    d = ROLLER_DEFAULTS
+
+    class RollerCaseSpec(_Strict):
+        contact: Literal["roller"]
+        load: str = d["load"]
+        roller_diameter: Optional[str] = None
+        roller_radius: Optional[str] = None
+        roller_length: str = d["roller_length"]
+        raceway_radius: str = d["raceway_radius"]
+        profile: Union[str, dict] = d["profile"]
+        n_slices: int = Field(default=d["n_slices"], ge=5, le=2001)
+
+    MaterialSpec = schema.subset(schema.material_keys(), "MaterialSpec", ("E", "nu", "name"))
+
+    class RollerMaterials(_Strict):
+        roller: Optional[MaterialSpec] = None
+        ring: Optional[MaterialSpec] = None
+
+    class RollerFem(_Strict):
+        level: Literal["quick", "standard", "fine"] = "standard"
+        mode: Literal["half-space", "two-body"] = "half-space"
+        solver: Optional[Literal["cholmod", "pardiso", "amg", "superlu"]] = None
+
+    class Spec(_Strict):
+        title: str = ""
+        case: RollerCaseSpec
+        materials: RollerMaterials = RollerMaterials()
+        fem: RollerFem = RollerFem()
+
+    return Spec
+
+
+def _parse_roller(data: dict, source: str) -> FERollerCaseFile:
+    """The roller branch of :func:`parse_fe_case` (``data`` merged, ``contact = "roller"``)."""
+    import math
+
+    import ballrace
+    from ballrace.casefiles.bearing import (CaseFileError, parse_inf, quantity_reader,
+                                            read_profile, validate_spec)
+    from ballrace.casefiles.schema import read_materials
+
+    case = data.get("case", {})
+    for key in BALL_KEYS:
+        if key in case:
+            raise CaseFileError(f"{source}: [case].{key} applies to ball contacts only (this "
+                                "case is contact = 'roller'; give roller_diameter, "
+                                "roller_length, raceway_radius, profile)")
+    if "bearing" in data:
+        raise CaseFileError(f"{source}: [bearing] applies to ball-race contacts only (a "
+                            "roller case gives its geometry in [case]: roller_diameter, "
+                            "roller_length, raceway_radius)")
+    fem_t = data.get("fem")
+    for key in BALL_FEM_KEYS:
+        if isinstance(fem_t, dict) and key in fem_t:
+            raise CaseFileError(f"{source}: [fem].{key} applies to ball contacts only (this "
+                                "case is contact = 'roller')")
+    spec = validate_spec(_roller_models(), data, source)
+    q = quantity_reader(source)
+    c = spec.case
+    if c.roller_diameter is not None and c.roller_radius is not None:
+        raise CaseFileError(f"{source}: [case].roller_radius: give roller_diameter or "
+                            "roller_radius, not both")
+    if c.roller_radius is not None:
+        R1 = q(c.roller_radius, "[length]", "[case].roller_radius")
+        where = "[case].roller_radius"
+    else:
+        R1 = 0.5 * q(c.roller_diameter or ROLLER_DEFAULTS["roller_diameter"], "[length]",
+                     "[case].roller_diameter")
+        where = "[case].roller_diameter"
+    if not R1 > 0:
+        raise CaseFileError(f"{source}: {where} must be > 0; e.g. roller_diameter = \"12 mm\"")
+    L = q(c.roller_length, "[length]", "[case].roller_length")
+    if not L > 0:
+        raise CaseFileError(f"{source}: [case].roller_length must be > 0; e.g. "
+                            "roller_length = \"12 mm\"")
+    text = str(c.raceway_radius).strip().lower()
+    R2 = math.inf if text == "flat" else parse_inf(q, c.raceway_radius, "[case].raceway_radius")
+    if R2 == 0 or (math.isfinite(R2) and 1.0 / R1 + 1.0 / R2 <= 0):
+        raise CaseFileError(f"{source}: [case].raceway_radius = {c.raceway_radius!r}: a concave "
+                            f"raceway must be larger than the roller (|R2| > R1 = "
+                            f"{R1 * 1e3:g} mm); e.g. raceway_radius = \"-40 mm\" (outer ring) "
+                            "or \"inf\" (flat)")
+    load = q(c.load, "[force]", "[case].load")
+    if not load > 0:
+        raise CaseFileError(f"{source}: [case].load must be > 0; e.g. load = \"5 kN\"")
+    prof = read_profile(c.profile, q, source, "[case].profile", L, 2.0 * R1)
+    mats = read_materials(spec.materials, q, source, ballrace.Material,
+                          parts=("roller", "ring"))
+    m1 = mats.get("roller", ballrace.BEARING_STEEL)
+    m2 = mats.get("ring", ballrace.BEARING_STEEL)
+    try:                                     # the analytic side checks the rest up front
+        from ballrace.analytic.roller import line_contact
+
+        line_contact(load, R1, R2, L, m1, m2, profile=prof, n_slices=c.n_slices)
+    except (ValueError, TypeError) as exc:
+        raise CaseFileError(f"{source}: [case]: {exc}") from None
+    f = spec.fem
+    return FERollerCaseFile(title=spec.title, load=load, roller_radius=R1, raceway_radius=R2,
+                            length=L, roller_material=m1, raceway_material=m2, profile=prof,
+                            n_slices=int(c.n_slices), level=f.level, mode=f.mode,
+                            solver=f.solver)
 
 
 @functools.cache
@@ -155,8 +356,13 @@ def parse_fe_case(data: dict, source: str = "<case>", **overrides) -> FECaseFile
         Name used in error messages (the file name).
     **overrides
         ``contact``, ``load`` (unit string), ``level``, ``mode``, ``gap``, ``solver``,
-        ``traction``, ``traction_pressure``: values given on the command line; ``None``
-        keeps the file's value.
+        ``traction``, ``traction_pressure``, and for a roller ``profile`` (a name),
+        ``roller_diameter``, ``roller_length``, ``raceway_radius`` (unit strings): values
+        given on the command line; ``None`` keeps the file's value.
+
+    Returns
+    -------
+    FECaseFile, or FERollerCaseFile for ``contact = "roller"``.
 
     Raises
     ------
@@ -183,6 +389,15 @@ def parse_fe_case(data: dict, source: str = "<case>", **overrides) -> FECaseFile
     if msg:
         raise CaseFileError(msg)
     data = _merge(data, overrides)
+    case_t = data.get("case")
+    if isinstance(case_t, dict) and case_t.get("contact") == "roller":
+        return _parse_roller(data, source)
+    if isinstance(case_t, dict):
+        for key in ROLLER_KEYS:
+            if key in case_t:
+                raise CaseFileError(f"{source}: [case].{key} applies to contact = 'roller' "
+                                    f"only (this case is contact = "
+                                    f"{case_t.get('contact', 'inner')!r})")
     spec = validate_spec(_models(), data, source)
     q = quantity_reader(source)
 
@@ -242,12 +457,16 @@ def _merge(data: dict, overrides: dict) -> dict:
     out = {k: (dict(v) if isinstance(v, dict) else v) for k, v in data.items()}
     for key, table in (("contact", "case"), ("load", "case"), ("level", "fem"),
                        ("mode", "fem"), ("gap", "fem"), ("solver", "fem"),
-                       ("traction", "fem"), ("traction_pressure", "fem")):
+                       ("traction", "fem"), ("traction_pressure", "fem"),
+                       ("profile", "case"), ("roller_diameter", "case"),
+                       ("roller_length", "case"), ("raceway_radius", "case")):
         if overrides.get(key) is not None:
             t = out.setdefault(table, {})
             if not isinstance(t, dict):
                 continue                 # reported by the validation
             t[key] = overrides[key]
+            if key == "roller_diameter":     # the command line's diameter replaces a radius
+                t.pop("roller_radius", None)
     return out
 
 
@@ -350,10 +569,11 @@ def register(app: typer.Typer) -> None:
                  "mesh-convergence study.")] = None,
         case: Annotated[Optional[str], typer.Option(
             "--case", "--contact",
-            help="inner | outer (ball on the 209 bearing's race) | plane | ball "
-                 "[default: inner]")] = None,
+            help="inner | outer (ball on the 209 bearing's race) | plane | ball | roller "
+                 "(a profiled roller on its raceway) [default: inner]")] = None,
         load: Annotated[Optional[str], typer.Option(
-            help='Ball load, e.g. "4450 N", "1000 lbf" [default: 4450 N].')] = None,
+            help='Ball or roller load, e.g. "4450 N", "1000 lbf" [default: 4450 N; '
+                 'roller 5 kN].')] = None,
         level: Annotated[Optional[str], typer.Option(
             help="quick | standard | fine [default: standard]")] = None,
         mode: Annotated[Optional[str], typer.Option(
@@ -374,8 +594,19 @@ def register(app: typer.Typer) -> None:
                  "[default: 0].")] = None,
         traction_pressure: Annotated[Optional[str], typer.Option(
             help="fe | hertz: the pressure the traction follows [default: fe].")] = None,
+        profile: Annotated[Optional[str], typer.Option(
+            help="Roller: straight | iso | lundberg | johns-gohar (a crown or table: in a "
+                 "case file) [default: lundberg].")] = None,
+        roller_diameter: Annotated[Optional[str], typer.Option(
+            help='Roller: its diameter, e.g. "12 mm" [default: 12 mm].')] = None,
+        roller_length: Annotated[Optional[str], typer.Option(
+            help='Roller: effective length L_we, e.g. "12 mm" [default: 12 mm].')] = None,
+        raceway_radius: Annotated[Optional[str], typer.Option(
+            help='Roller: raceway radius in the rolling direction, "inf" flat, negative '
+                 'concave, e.g. "-40 mm" [default: inf].')] = None,
     ):
-        """FE check of a Hertz ball contact (mesh, assemble, solve, compare, render).
+        """FE check of a Hertz ball contact or a profiled roller's line contact (mesh,
+        assemble, solve, compare, render).
 
         Options given beside a case file take precedence over the file's values.
         """
@@ -391,7 +622,7 @@ def register(app: typer.Typer) -> None:
             except ValueError as exc:
                 fail(str(exc))
         check_units(units)
-        _check_choice(case, "--case", CONTACTS)
+        _check_choice(case, "--case", CONTACTS + ("roller",))
         _check_choice(level, "--level", LEVELS)
         _check_choice(mode, "--mode", MODES)
         _check_choice(gap, "--gap", GAPS)
@@ -409,14 +640,34 @@ def register(app: typer.Typer) -> None:
             except ValueError:
                 fail(f"--sizes must be comma-separated integers, e.g. 4,6,8; got {sizes!r}")
         overrides = dict(contact=case, load=load, level=level, mode=mode, gap=gap, solver=solver,
-                         traction=traction, traction_pressure=traction_pressure)
-        try:
+                         traction=traction, traction_pressure=traction_pressure,
+                         profile=profile, roller_diameter=roller_diameter,
+                         roller_length=roller_length, raceway_radius=raceway_radius)
+        ball_flags = {"--gap": gap, "--traction": traction,
+                      "--traction-pressure": traction_pressure}
+        roller_flags = {"--profile": profile, "--roller-diameter": roller_diameter,
+                        "--roller-length": roller_length, "--raceway-radius": raceway_radius}
+        def parse(**kw):
             if case_file and case_file != "convergence":
-                fc = load_fe_case(case_file, **overrides)
-            else:
-                fc = parse_fe_case({}, "command line", **overrides)
+                return load_fe_case(case_file, **kw)
+            return parse_fe_case({}, "command line", **kw)
+
+        neutral = {k: None for k in ("gap", "traction", "traction_pressure", "profile",
+                                     "roller_diameter", "roller_length", "raceway_radius")}
+        try:
+            fc = parse(**{**overrides, **neutral})       # which kind of contact, first
+            is_roller = isinstance(fc, FERollerCaseFile)
+            for flag, v in (ball_flags if is_roller else roller_flags).items():
+                if v is not None:
+                    fail(f"{flag} applies to "
+                         + ("ball contacts only (this case is a roller)" if is_roller else
+                            "--contact roller only (this case is a ball contact)"))
+            fc = parse(**overrides)
         except CaseFileError as exc:
             fail(str(exc))
+        if is_roller and case_file == "convergence":
+            fail("convergence: the mesh-convergence study is of ball contacts; compare a "
+                 "roller's levels with --level quick | standard | fine")
         miss = missing_fem()      # options checked, no work done: no output folder, no solver hint
         if miss:
             fail(f"the FE check needs the fem extra ({', '.join(miss)} not installed): "
@@ -433,6 +684,9 @@ def register(app: typer.Typer) -> None:
             fail(str(exc))
         if case_file == "convergence":
             _convergence(fc, n_sizes, out)
+            return
+        if is_roller:
+            _run_roller(fc, out, render, units)
             return
         from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
@@ -461,6 +715,132 @@ def register(app: typer.Typer) -> None:
         # tolerances and exits 0
         if r.passed is False or not r.valid:
             raise typer.Exit(code=1)
+
+
+#: Rows of the roller table, in this order: (comparison quantity, label, display kind).
+ROLLER_ROWS = (("centre_pressure", "centre pressure (slice)", "stress"),
+               ("max_pressure", "max pressure (slice)", "stress"),
+               ("edge_pressure", "edge peak (node)", "stress"),
+               ("peak_slice_load", "load of peak slice", "force"),
+               ("edge_slice_load", "load of end slice", "force"),
+               ("approach", "approach", "small"),
+               ("von_mises_centre", "von Mises, centre", "stress"),
+               ("von_mises_centre_depth", "  its depth", "length"),
+               ("von_mises_edge", "von Mises, edge", "stress"),
+               ("von_mises_edge_depth", "  its depth", "length"))
+
+
+def _profile_text(prof) -> str:
+    if isinstance(prof, str):
+        return prof
+    from ballrace.analytic.roller import profile as rp
+
+    if isinstance(prof, rp.Crowned):
+        return (f"crowned (flat {prof.flat_length * 1e3:g} mm, crown radius "
+                f"{prof.crown_radius:g} m)")
+    return getattr(prof, "name", type(prof).__name__)
+
+
+def _roller_table(r, fc, units: str) -> None:
+    """The FE-versus-line_contact table of a roller result (engineering units, 80 columns)."""
+    import math
+
+    from ballrace.console import convert, fmt, literal, make_console, print_columns, unit_label
+
+    rows = []
+    for q, label, kind in ROLLER_ROWS:
+        try:
+            row = r.row(q)
+        except KeyError:
+            continue
+        rows.append([label, fmt(convert(row["fe"], kind, units), 5),
+                     fmt(convert(row["analytic"], kind, units), 5), unit_label(kind, units),
+                     _check_cell(row["error"], row["tol"], row["ok"])])
+    R2 = fc.raceway_radius
+    race = ("flat raceway" if not math.isfinite(R2) else
+            f"raceway R2 = {fmt(convert(R2, 'length', units), 5)} {unit_label('length', units)}")
+    total = r.timings.get("total")
+    lu = unit_label("length", units)
+    title = (f"{_profile_text(fc.profile)} roller, Q = {fmt(convert(fc.load, 'force', units))} "
+             f"{unit_label('force', units)}, D = "
+             f"{fmt(convert(2 * fc.roller_radius, 'length', units), 5)} {lu}, L = "
+             f"{fmt(convert(fc.length, 'length', units), 5)} {lu}, {race}\n"
+             f"{r.mode}, {r.level}, {r.n_dofs:,} DOFs"
+             + (f", {total:.1f} s" if total is not None else "") + f", {r.solver}")
+    con = make_console()
+    if fc.title:
+        con.print(literal(fc.title), style="bold")
+    print_columns(con, title, ["quantity", "FE", "line_contact", "unit", "error / tolerance"],
+                  rows, justify=["left", "right", "right", "left", "left"])
+    if fc.profile == "straight" or (hasattr(fc.profile, "name") and fc.profile.name == "straight"):
+        con.print(literal("note: a straight roller's end pressure is singular on a half-space: "
+                          "the edge peak grows with refinement in the FE and with the slice "
+                          "count in line_contact; neither value is converged"))
+    if r.mode == "two-body":
+        con.print(literal("note: two bodies (the finite elastic roller) depart from "
+                          "line_contact's half-spaces by design; no tolerances apply"))
+
+
+def _run_roller(fc, out: Path, render: bool, units: str) -> None:
+    """Solve an FE roller case with a progress display; table, result.json, renders."""
+    import logging
+
+    from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
+
+    from ballrace.cli import fail
+
+    from .roller import roller_contact
+
+    logger = logging.getLogger("ballrace")
+    shown = logger.getEffectiveLevel()           # what the user asked to see (-v)
+
+    class _Stage(logging.Handler):
+        """The library's log lines as progress stages; those the user would have seen
+        passed on as before."""
+
+        def __init__(self, update):
+            super().__init__(logging.INFO)
+            self.update = update
+
+        def emit(self, record):
+            msg = record.getMessage().splitlines()[0]
+            self.update(msg if len(msg) <= 70 else msg[:67] + "...")
+            if record.levelno >= shown:
+                logging.getLogger().handle(record)
+
+    cols = (SpinnerColumn(), TextColumn("{task.description}"), TimeElapsedColumn())
+    saved = (logger.level, logger.propagate)
+    try:
+        with Progress(*cols, transient=True) as prog:
+            task = prog.add_task(f"roller contact, {fc.level} level: meshing", total=None)
+            h = _Stage(lambda m: prog.update(task, description=m))
+            logger.addHandler(h)
+            logger.setLevel(min(shown, logging.INFO))
+            logger.propagate = False
+            try:
+                r = roller_contact(fc.load, fc.roller_radius, fc.raceway_radius, fc.length,
+                                   fc.roller_material, fc.raceway_material,
+                                   profile=fc.profile, level=fc.level, mode=fc.mode,
+                                   n_slices=fc.n_slices, solver=fc.solver)
+            finally:
+                logger.removeHandler(h)
+                logger.level, logger.propagate = saved
+    except (ValueError, TypeError, ImportError) as exc:
+        fail(str(exc))
+    _roller_table(r, fc, units)
+    doc = r.to_dict()
+    doc["case"] = fc.inputs()
+    doc["passed"] = r.within_tolerance
+    (out / "result.json").write_text(json.dumps(doc, indent=2))
+    if render:
+        from .render import render_roller
+
+        for field in ("von_mises", "max_shear"):
+            render_roller(r, str(out / f"roller_{field}.png"), field=field,
+                          raceway_radius=fc.raceway_radius, material=fc.raceway_material)
+    typer.echo(f"wrote {out / 'result.json'}" + (" and renders" if render else ""))
+    if r.within_tolerance is False:           # a row outside its tolerance
+        raise typer.Exit(code=1)
 
 
 def _convergence(fc, n: tuple, out: Path) -> None:

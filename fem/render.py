@@ -728,9 +728,10 @@ def render_roller(r, path: str = "roller.png", *, field: str = "von_mises",
         hi, step = _nice_top(float(np.max(val[np.unique(cells)])))
         pl.add_mesh(body, scalars="MPa", cmap="viridis", clim=(0.0, hi), ambient=0.6,
                     diffuse=0.45, specular=0.0,
-                    scalar_bar_args={"title": f"{title} [MPa]", "color": "black",
-                                     "n_labels": int(round(hi / step)) + 1,
-                                     "vertical": True, "position_x": 0.9, "position_y": 0.2,
+                    scalar_bar_args={"title": {"von_mises": "von Mises [MPa]",
+                                               "max_shear": "Tresca [MPa]"}[field],
+                                     "color": "black", "n_labels": int(round(hi / step)) + 1,
+                                     "vertical": True, "position_x": 0.88, "position_y": 0.2,
                                      "height": 0.65, "width": 0.04, "fmt": "%.0f",
                                      "title_font_size": 16, "label_font_size": 14})
         # the roller: a grey, translucent segment of its profiled surface resting on the

@@ -395,14 +395,17 @@ def fem_figures(run) -> list[Figure]:
         return []
     figs = []
     for r in run.results:
-        if not r.artifacts:
-            continue
+        if not r.artifacts or getattr(r, "calculation", "") == "fem.roller_contact":
+            continue                                              # figures_fem draws it
         imgs = tuple(tuple(a) for a in r.artifacts if a[1])
         note = "; ".join(a[0] for a in r.artifacts if not a[1])   # a picture not drawn
         caption = _FEM_TRACTION_CAPTION if _is_traction(r) else _FEM_CAPTION
         figs.append(Figure(f"fem-{r.id}", "fem", f"FE against analytic: {r.title}",
                            caption=caption, images=imgs, note=note))
     if not figs:
+        fem_cases = [getattr(r, "calculation", "") for r in run.results if r.area == "fem"]
+        if fem_cases and set(fem_cases) == {"fem.roller_contact"}:
+            return []                         # roller cases only: figures_fem draws them
         fem_ran = any(r.area == "fem" and r.status in ("pass", "fail") for r in run.results)
         why = ("the FE cases wrote no pictures" if fem_ran else
                "no FE case ran (--fem none, module missing or not selected)")

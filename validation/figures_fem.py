@@ -32,7 +32,7 @@ import numpy as np
 from .figures import Figure
 
 __all__ = ["fem_figures", "sweep_series", "limits_figures", "limits_series",
-           "one_percent_limit"]
+           "one_percent_limit", "roller_figures", "roller_panels"]
 
 #: (output key, panel title) of the error panels; keys missing from a run are skipped.
 QUANTITIES = (("a_vs_hertz", "a"), ("b_vs_hertz", "b"), ("p_max_vs_hertz", "p0"),
@@ -85,8 +85,9 @@ def sweep_series(points, key: str) -> list[dict]:
 
 def fem_figures(run=None) -> list[Figure]:
     """Error maps of the FE sweep cases in ``run`` (a :class:`validation.runner.Run`): the
-    ``fem.ball_on_race`` sweeps, then the Hertz-limits figures (:func:`limits_figures`)."""
-    return _sweep_figures(run) + limits_figures(run)
+    ``fem.ball_on_race`` sweeps, then the Hertz-limits figures (:func:`limits_figures`),
+    then one figure per FE roller case (:func:`roller_figures`)."""
+    return _sweep_figures(run) + limits_figures(run) + roller_figures(run)
 
 
 def _sweep_figures(run) -> list[Figure]:
@@ -277,3 +278,105 @@ def limits_figures(run=None) -> list[Figure]:
                        "the self-similar Hertz-gap problem keeps independent of the load; "
                        f"grey: the {level} level's tolerance (fem.TOLERANCES)."),
     ]
+
+
+# --------------------------------------------------------------------------- rollers
+_ROLLER_CAPTION = (
+    "A profiled roller on a flat raceway, FE (ballrace.fem.roller_contact, half-space mode: "
+    "a rigid roller on one elastic block longer than the roller, so its end is a real "
+    "edge) against line_contact (the strip method on the half-space).  Left: the pressure "
+    "along the half roller from its centre - the FE peak over the rolling direction at "
+    "the pressure nodes (graded towards the end), the FE pressure averaged over each of "
+    "line_contact's slices, and line_contact's slice pressures; right: the load each "
+    "slice carries.  The picture (pyvista, off-screen) shows the raceway under the roller "
+    "cut open at the section under the roller axis and at mid-length, coloured by the FE "
+    "von Mises stress (the axis along the roller drawn compressed), above the pressure "
+    "along the whole roller.")
+
+
+def _steps(x, y, width):
+    """Step-line coordinates of slice values ``y`` centred at ``x`` of ``width`` [any]."""
+    xs, ys = [], []
+    for xc, v in zip(x, y):
+        lo = max(xc - 0.5 * width, 0.0)
+        xs += [lo, xc + 0.5 * width]
+        ys += [v, v]
+    return xs, ys
+
+
+def roller_panels(series: dict) -> tuple:
+    """The two panels of a roller case's figure from its ``series`` (SI; the outputs of
+    :func:`ballrace.validation.calc_fem_roller.roller_outputs`): the pressure along the roller
+    [MPa] and the slice loads [N] against x [mm].
+
+    Examples
+    --------
+    >>> s = {"x": [0.0, 1e-3, 2e-3], "pressure": [1e9, 1e9, 1.2e9], "slice_x": [0.0, 1e-3],
+    ...      "slice_pressure": [1e9, 1.1e9], "slice_loads": [100.0, 90.0],
+    ...      "line_x": [0.0, 1e-3], "line_pressure": [1e9, 1.05e9],
+    ...      "line_slice_loads": [101.0, 91.0], "length": [4e-3], "slice_width": [1e-3]}
+    >>> p, q = roller_panels(s)
+    >>> [x["label"].split(":")[0] for x in p["series"]], p["vlines"][0]["x"]
+    (['FE', 'FE', 'line_contact (slices)'], 2.0)
+    >>> q["series"][1]["y"]
+    [101.0, 91.0]
+    """
+    mm, mpa = 1e3, 1e-6
+    w = float(series["slice_width"][0]) * mm
+    half = 0.5 * float(series["length"][0]) * mm
+    sx = [v * mm for v in series["slice_x"]]
+    lx = [v * mm for v in series["line_x"]]
+    fx, fy = _steps(sx, [v * mpa for v in series["slice_pressure"]], w)
+    ax_, ay_ = _steps(lx, [v * mpa for v in series["line_pressure"]], w)
+    pressure = {"kind": "lines", "title": "pressure along the roller", "width": 1.4,
+                "xlabel": "x from the roller centre [mm]", "ylabel": "pressure [MPa]",
+                "series": [{"x": [v * mm for v in series["x"]],
+                            "y": [v * mpa for v in series["pressure"]],
+                            "label": "FE: peak over y at the nodes", "style": "markers"},
+                           {"x": fx, "y": fy, "label": "FE: slice average", "color": "C1"},
+                           {"x": ax_, "y": ay_, "label": "line_contact (slices)",
+                            "style": "dashed", "color": "k"}],
+                "vlines": [{"x": half}], "legend": "below"}
+    loads = {"kind": "lines", "title": "slice loads", "xlabel": "slice centre x [mm]",
+             "ylabel": "load per slice [N]",
+             "series": [{"x": sx, "y": [float(v) for v in series["slice_loads"]],
+                         "label": "FE", "style": "markers"},
+                        {"x": lx, "y": [float(v) for v in series["line_slice_loads"]],
+                         "label": "line_contact", "style": "dashed-markers", "color": "k"}],
+             "vlines": [{"x": half}], "legend": "below"}
+    return pressure, loads
+
+
+def roller_figures(run=None) -> list[Figure]:
+    """One figure per FE roller case of ``run`` (calculation ``fem.roller_contact``,
+    validation/cases/fem_roller.toml): :func:`roller_panels` and the case's picture
+    (:func:`ballrace.fem.render.render_roller`); the edge peak of the run is written in the
+    caption, checked or not as the case says.  No roller case in the run: no figure."""
+    figs, seen = [], False
+    for r in getattr(run, "results", ()) or ():
+        if r.calculation != "fem.roller_contact":
+            continue
+        seen = True
+        s = getattr(r, "series", None) or {}
+        if "x" not in s:
+            continue
+        o = r.outputs
+        edge = ""
+        if "edge_pressure" in o:
+            edge = (f"  This run's edge peak: the largest nodal FE pressure in the outer half "
+                    f"{o['edge_pressure'] / 1e9:.3g} GPa at x = {o.get('x_edge', math.nan) * 1e3:.3g}"
+                    f" mm; line_contact's largest slice pressure "
+                    f"{o.get('max_pressure_line', math.nan) / 1e9:.3g} GPa"
+                    + (" - reported, not checked (see the case notes)."
+                       if "straight" in r.id else "."))
+        imgs = tuple(tuple(a) for a in r.artifacts if a[1])
+        note = "; ".join(a[0] for a in r.artifacts if not a[1])
+        figs.append(Figure(f"fem-roller-{r.id}", _SECTION,
+                           f"FE roller against line_contact: {r.title}",
+                           caption=_ROLLER_CAPTION + edge, panels=roller_panels(s),
+                           images=imgs, note=note, size=(11.0, 3.6)))
+    if seen and not figs:
+        return [Figure("fem-roller", _SECTION, "FE roller against line_contact",
+                       note="omitted: no FE roller case ran (--fem none, module missing or "
+                            "another level)")]
+    return figs

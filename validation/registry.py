@@ -48,6 +48,7 @@ CALC_MODULES = (
     "ballrace.validation.calc_roller",
     "ballrace.validation.calc_roller_published",
     "ballrace.validation.calc_fem",
+    "ballrace.validation.calc_fem_roller",
 )
 
 _REQUIRED = object()
