@@ -824,7 +824,8 @@ def _run_roller(fc, out: Path, render: bool, units: str) -> None:
                                    n_slices=fc.n_slices, solver=fc.solver)
             finally:
                 logger.removeHandler(h)
-                logger.level, logger.propagate = saved
+                logger.setLevel(saved[0])         # setLevel: clears the loggers' level caches
+                logger.propagate = saved[1]
     except (ValueError, TypeError, ImportError) as exc:
         fail(str(exc))
     _roller_table(r, fc, units)

@@ -157,6 +157,10 @@ def test_quick_roller_run_end_to_end(tmp_path, api_result):
     args = ["fem", str(EXAMPLE), "--out", str(out)] + ([] if can_draw else ["--no-render"])
     res = runner.invoke(app, args)
     assert res.exit_code == 0, res.output
+    # the progress display's log handler leaves the levels as it found them (without -v
+    # the library's INFO lines, e.g. the mesh cache's, stay hidden after the table)
+    import logging
+    assert not logging.getLogger("ballrace.meshes.contact").isEnabledFor(logging.INFO)
     # the table: engineering units, every row within 80 columns
     assert "Lundberg roller on a flat raceway, 5 kN" in res.stdout
     assert "lundberg roller, Q = 5000 N, D = 12 mm, L = 12 mm, flat raceway" in res.stdout
