@@ -211,6 +211,10 @@ class Body:
     z_fixed : the plane z = z_fixed is held in z (block bottom, ball equator) [m].
     contact_nodes : boolean mask of the vertices on the candidate contact surface.
     surface : object with ``height(x, y)`` for the body's surface (depth reference).
+    symmetric_x : True (default): the plane x = 0 is a symmetry plane of the model
+        (u_x = 0 on it).  False: the body spans both sides of x = 0 (a half model); its
+        x-translation is held by the one u_x DOF nearest ``(0, 0, z_fixed)``, which
+        carries no load (frictionless normal tractions, supports normal to their planes).
     """
 
     name: str
@@ -222,6 +226,7 @@ class Body:
     z_fixed: float
     contact_nodes: np.ndarray
     surface: object = None
+    symmetric_x: bool = True
 
 
 @dataclass
@@ -372,7 +377,9 @@ def assemble_body(body: Body, grid: PressureGrid, solver: str | None = None) -> 
     """Assemble the stiffness and load matrices of a body and solve for every tent.
 
     Boundary conditions: ``u_x = 0`` on x = 0, ``u_y = 0`` on y = 0 (symmetry) and
-    ``u_z = 0`` on ``z = z_fixed``; no rigid-body mode remains.
+    ``u_z = 0`` on ``z = z_fixed``; no rigid-body mode remains.  A body with
+    ``symmetric_x=False`` (a half model) has its u_x held at one DOF instead
+    (:class:`Body`).
 
     Parameters
     ----------
@@ -426,12 +433,19 @@ def assemble_body(body: Body, grid: PressureGrid, solver: str | None = None) -> 
     tm["load_matrix"] = time.perf_counter() - t0
 
     # Dirichlet DOFs
-    sym_x = mesh.facets_satisfying(lambda x: x[0] == 0.0, boundaries_only=True)
     sym_y = mesh.facets_satisfying(lambda x: x[1] == 0.0, boundaries_only=True)
     zf = body.z_fixed
     tol = 1e-9 * float(np.ptp(mesh.p))
     far = mesh.facets_satisfying(lambda x: np.abs(x[2] - zf) < tol, boundaries_only=True)
-    D = np.unique(np.concatenate([basis.get_dofs(sym_x).all(["u^1"]),
+    if body.symmetric_x:
+        sym_x = mesh.facets_satisfying(lambda x: x[0] == 0.0, boundaries_only=True)
+        held_x = basis.get_dofs(sym_x).all(["u^1"])
+    else:                   # a half model: hold the x-translation at one point
+        sym_x = far
+        fx = basis.get_dofs(far).all(["u^1"])
+        loc = basis.doflocs[:, fx]
+        held_x = fx[[int(np.argmin(np.abs(loc[0]) + np.abs(loc[1])))]] if fx.size else fx
+    D = np.unique(np.concatenate([held_x,
                                   basis.get_dofs(sym_y).all(["u^2"]),
                                   basis.get_dofs(far).all(["u^3"])]))
     if sym_x.size == 0 or sym_y.size == 0 or far.size == 0:

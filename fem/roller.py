@@ -9,7 +9,11 @@ half-space) with a 3-D model of the real bodies:
   or bent onto a cylinder of radius ``R2``, negative concave), so the roller end is a
   real edge.  Symmetry planes: the mid-length plane ``x = 0`` (symmetric profile, no
   tilt) and the plane ``y = 0`` through the contact normal and the roller axis; the
-  roller is held in z on the plane through its axis, the block on its bottom.
+  roller is held in z on the plane through its axis, the block on its bottom.  A tilt
+  (or a profile whose drop is not even in x) takes the *half model*: the full length
+  ``-L/2 <= x <= L/2``, only ``y = 0`` a symmetry plane, each quarter mesh joined to its
+  mirror image (refined at both roller ends; :func:`ballrace.meshes.roller.mirror_x`),
+  the x-translation held at one point (it carries nothing: no load along x acts);
   ``mode="half-space"`` replaces the two bodies by one elastic block under a rigid
   roller (modulus ``E'/2 (1 - nu^2)``): line_contact's own idealisation, with the roller
   end still a sharp edge of the loaded region;
@@ -17,7 +21,9 @@ half-space) with a 3-D model of the real bodies:
   bilinear tents on a tensor grid along the roller ``x`` (graded towards the roller end,
   where the edge peak lives) times across it ``y`` (some nodes per half-width ``b``),
   compliance matrix and non-negative least squares with the load ``Q/4`` on the
-  quarter; the initial gap is ``P(x) + y^2/(2R)`` (the gap line_contact solves);
+  quarter (``Q/2`` on the half); the initial gap is ``P(x) - x tan(psi) + y^2/(2R)``
+  (the gap line_contact solves, ``psi`` the tilt, its sign convention: positive, the
+  end at +x goes in; the tilt is imposed and ``Q`` given, the moment is a reaction);
 * **extraction**: the pressure along the roller is the peak over ``y`` of the tent
   pressure at each grid ``x`` (``pressure``; the centre and the largest value in the
   outer half, the *edge peak*); the load of each of line_contact's slices from the FE
@@ -92,6 +98,62 @@ roller softer there than the half-space Lundberg's profile is designed on; the c
 pressure is +1.65 %, the approach +1.6 %.  That is the real roller "beyond the
 half-space", a result, not an error.
 
+Tilted roller: the half model (measured; half-space mode, same roller and load)
+-------------------------------------------------------------------------------
+``tilt=psi`` (line_contact's convention: positive, the end at +x goes in) takes the half
+model: both roller ends resolved, twice the quarter model's DOFs and some 2-3 times its
+CPU time and memory.  The standard level's 4.4-5.7 GB is beyond the 4 GB budget of the
+quarter model's standard level; measured once each with ``/usr/bin/time -v`` on the
+shared machine (load average 5-8: the wall times, 0.4 / 8.6 / 0.5 / 3.9 minutes, say
+little).  Errors FE / line_contact - 1 on line_contact's 41 slices; "crown": the circular
+crown tilted by 0.5 mrad, "Lundberg": Lundberg's roller tilted by 0.2 mrad; "peak p" the
+largest slice-averaged pressure (and the x [mm] of the FE's largest; line_contact's:
+2.34 mm for the crown, 5.85 mm, the end slice, for Lundberg's), "peak Q" the load of
+line_contact's most loaded slice, "end qtr" the load on the outer quarter (|x| >= L/4)
+at the loaded end (the row ``end_quarter_load``):
+
+=================  =====  ======  =====  ========  ========  =============  =======  =======
+case / level       DOFs   RAM     CPU    centre p  approach  peak p (x FE)  peak Q   end qtr
+=================  =====  ======  =====  ========  ========  =============  =======  =======
+crown quick        114k   1.4 GB  21 s   +0.88 %   +0.18 %   +2.25 % (2.6)  +0.71 %  -0.47 %
+crown standard     357k   5.7 GB  181 s  +0.52 %   +0.14 %   +1.00 % (2.3)  +0.12 %  -0.22 %
+Lundberg quick     100k   1.2 GB  19 s   +1.53 %   +0.17 %   +4.43 % (5.6)  -11.5 %  -0.76 %
+Lundberg standard  306k   4.4 GB  120 s  +0.18 %   +0.13 %   -1.02 % (5.6)  -9.4 %   -0.42 %
+=================  =====  ======  =====  ========  ========  =============  =======  =======
+
+* Circular crown (4 mm flat, 0.5 m crown radius) tilted by 0.5 mrad: line_contact moves
+  the peak to where the flat part ends on the +x side (x = 2.34 mm, 1.934 GPa against
+  1.882 GPa at -2.34 mm; 1.855 GPa untilted) and leaves three slices at -x and one at
+  +x unloaded (the contact inside the roller).  The FE puts the peak there too: at the
+  standard level every slice carrying more than 20 N is within 2.1 % (-2.0 % on the
+  34 N slice at -4.68 mm; the slice of largest load +0.12 %, the largest difference at
+  the loaded end 0.84 % of the mean slice load Q/n); the quick level within 2.3 % of Q/n at the loaded end (-6.4 % on the
+  22 N slice where the contact ends).  The approach within 0.2 %, the von Mises maximum
+  under the centre +1.3 / +1.0 % (quick / standard).
+* Lundberg's roller tilted by 0.2 mrad (line_contact: the end slices carry 91.0 N at
+  -x and 148.1 N at +x against 118.7 N each untilted): every slice but the two end ones
+  within 1.5 % (quick) and 1.2 % (standard); the end slices -12.6 / -11.5 % (quick) and
+  -9.6 / -9.4 % (standard) at -x / +x, as the -9.5 % without tilt (the logarithmic
+  drop grows without bound at the end; the strips average what the FE resolves).  So
+  the tilt's shift of load between the ends (line_contact: 57.2 N between the end
+  slices) is 52.0 N in the FE, -9 %; the loaded end's outer quarter -0.42 %.  The nodal
+  "edge_pressure" (2.05 GPa at x = 5.89 mm, +19 %) is the end feature of the untilted
+  Lundberg roller, not checked.
+* The half model reproduces the quarter model: with a tilt of 1e-9 rad (Lundberg's roller,
+  quick level) the slice loads agree with the quarter model's within 0.3 % (the
+  curvature penalty weighs the tents at x = 0 differently) and are even in x within
+  2e-6 of a slice load; the approach within 0.03 %.
+* A profile table that is not even in x takes the half model too (quick level, a crown
+  whose flat part runs from -3 to +1 mm: the centre pressure +0.55 %, the approach
+  +0.27 %, the most loaded slice +0.06 %, the outer quarter at +x -0.11 %).  ``mode="two-body"`` takes it as well (the circular
+  crown tilted by 0.5 mrad, quick level: 186k DOFs, 2.1 GB, 36 s CPU; the loaded end's
+  outer quarter carries 4.3 % less than line_contact's, the finite roller's free end face
+  as without tilt; a result, not checked; the standard level not run).
+* The tolerance of a tilted roller (:data:`TILT_TOLERANCE`): the row
+  ``end_quarter_load`` within 2 % (quick) and 1 % (standard), about twice the largest
+  difference measured; the slices of that quarter within 4 % / 2 % of Q/n (a circular
+  crown).  The other rows keep the quarter model's tolerances (all within them above).
+
 >>> from ballrace import fem                                       # doctest: +SKIP
 >>> f = fem.roller_contact(5000.0, 6e-3, np.inf, 12e-3, st, st, level="quick")  # doctest: +SKIP
 >>> f.x, f.pressure, f.approach, f.n_dofs                          # doctest: +SKIP
@@ -112,8 +174,8 @@ from ballrace.analytic.roller import ProfileContext, line_contact, subsurface_st
 
 from . import model
 
-__all__ = ["RollerLevel", "ROLLER_LEVELS", "ROLLER_TOLERANCES", "RollerFEResult",
-           "TensorGrid", "roller_contact"]
+__all__ = ["RollerLevel", "ROLLER_LEVELS", "ROLLER_TOLERANCES", "TILT_TOLERANCE",
+           "RollerFEResult", "TensorGrid", "roller_contact"]
 
 log = logging.getLogger(__name__)
 
@@ -133,7 +195,8 @@ class RollerLevel:
     edge : float
         Element size at the roller end relative to h [-] (< 1: finer).
     nx : int
-        Pressure-tent nodes along the half roller, graded towards the end [-].
+        Pressure-tent nodes along the half roller, graded towards the end [-] (the
+        half model, over the full length: 2 nx - 1, graded towards both ends).
     dy : float
         Tent spacing across the strip in half-widths b [-].
     dx_end : float
@@ -175,6 +238,18 @@ MODES = ("half-space", "two-body")
 #: was +1.94 % and +3.68 % off on two meshes of the level (the tents' +-2-4 % scatter
 #: along the roller), the load of that slice +0.29 %.
 EDGE_TOLERANCE = {"crowned": 0.05, "crowned_slice_load": 0.01}
+#: Relative tolerances of a tilted roller (the half model, half-space mode) per level:
+#: ``end_quarter_load``, the load on the outer quarter of the roller at the more loaded
+#: end (the comparison row of that name); ``end_slices``, the largest difference of one
+#: of that quarter's slice loads over the mean slice load Q/n (``info
+#: ["end_slice_load_deviation"]``; a profile whose drop stays finite at the end, such as
+#: a circular crown: the end slice of a logarithmic profile differs by some 10 %, as
+#: without tilt).  Measured (module notes, 12 mm roller, 5 kN): end quarter -0.47 / -0.22 %
+#: (crown, 0.5 mrad; quick / standard) and -0.76 / -0.42 % (Lundberg, 0.2 mrad); end
+#: slices 2.3 / 0.84 % of the mean slice load (crown).
+TILT_TOLERANCE = {"quick": {"end_quarter_load": 0.02, "end_slices": 0.04},
+                  "standard": {"end_quarter_load": 0.01, "end_slices": 0.02}}
+TILT_TOLERANCE["fine"] = TILT_TOLERANCE["standard"]
 
 #: Raceway block beyond the roller end, in roller lengths L [-]; width (rolling
 #: direction) and depth, in L [-].  The pressure along the roller is coupled through the
@@ -191,7 +266,9 @@ DEPTH_POINT = 3.0
 class TensorGrid:
     """Bilinear tents on a tensor grid ``xn x yn`` (x graded), the interface of
     :class:`ballrace.fem.model.PressureGrid` (``Lx, Ly, n_tents, weights, evaluate,
-    integrals, boundary_tents``).  Tent index ``k = i * ny + j``.
+    integrals, boundary_tents``).  Tent index ``k = i * ny + j``.  ``xn`` starts at 0
+    (the quarter model: x = 0 a symmetry plane) or below it (the half model: both ends of
+    the grid are roller ends).
 
     Examples
     --------
@@ -204,6 +281,7 @@ class TensorGrid:
         self.xn = np.asarray(xn, dtype=float)
         self.yn = np.asarray(yn, dtype=float)
         self.Lx, self.Ly = float(self.xn[-1]), float(self.yn[-1])
+        self.X0 = float(self.xn[0])
 
     @property
     def n_tents(self) -> int:
@@ -219,7 +297,7 @@ class TensorGrid:
         """(point index, tent index, weight), 4 per point; zero outside the grid."""
         x = np.asarray(x, dtype=float).ravel()
         y = np.asarray(y, dtype=float).ravel()
-        inside = (x >= 0) & (x <= self.Lx) & (y >= 0) & (y <= self.Ly)
+        inside = (x >= self.X0) & (x <= self.Lx) & (y >= 0) & (y <= self.Ly)
         i, fu = self._cell(x, self.xn)
         j, fv = self._cell(y, self.yn)
         return model.bilinear_weights(i, j, fu, fv, inside, self.yn.size)
@@ -255,21 +333,23 @@ class TensorGrid:
 
     def curvature_penalty(self) -> np.ndarray:
         """``R = Dx^T Dx + Dy^T Dy``: squared second differences of the tents along x and
-        y (index differences, mirrored at x = 0 and y = 0, one-sided at the far edges)
+        y (index differences, mirrored at x = 0 and y = 0, one-sided at the far edges;
+        one-sided at both ends along x when the grid spans both sides of x = 0)
         [-] — the stabilisation of :meth:`ballrace.fem.model.PressureGrid.curvature_penalty`
         on this grid."""
-        def d2(n, mirror_end):
+        def d2(n, mirror_end, mirror_start=True):
             D = np.zeros((n, n))
             for i in range(n):
                 D[i, i] -= 2.0
-                D[i, abs(i - 1)] += 1.0
+                if i > 0 or mirror_start:
+                    D[i, abs(i - 1)] += 1.0
                 if i + 1 < n:
                     D[i, i + 1] += 1.0
                 elif mirror_end:
                     D[i, i - 1] += 1.0
             return D
         nx, ny = self.xn.size, self.yn.size
-        Dx = np.kron(d2(nx, False), np.eye(ny))
+        Dx = np.kron(d2(nx, False, self.X0 == 0.0), np.eye(ny))
         Dy = np.kron(np.eye(nx), d2(ny, True))
         return Dx.T @ Dx + Dy.T @ Dy
 
@@ -279,7 +359,7 @@ class TensorGrid:
         return np.flatnonzero((j == self.yn.size - 1).ravel())
 
     def strip_loads(self, lam, x_lo, x_hi, n: int = 8):
-        """Load of the quarter model between x_lo and x_hi (arrays) [N]:
+        """Load of the grid's side y >= 0 between x_lo and x_hi (arrays) [N]:
         ``int int p dx dy`` by Gauss-Legendre along x (``n`` per strip) and the
         trapezoid rule of the exact bilinear profile across."""
         lam = np.asarray(lam).reshape(self.xn.size, self.yn.size)
@@ -291,9 +371,9 @@ class TensorGrid:
         wy[1:] += 0.5 * d
         for a, b in zip(np.atleast_1d(x_lo), np.atleast_1d(x_hi)):
             xs = 0.5 * (a + b) + 0.5 * (b - a) * tx
-            i, f = self._cell(np.clip(xs, 0.0, self.Lx), self.xn)
+            i, f = self._cell(np.clip(xs, self.X0, self.Lx), self.xn)
             row = (1 - f)[:, None] * lam[i] + f[:, None] * lam[i + 1]     # (n, ny)
-            row = np.where((xs <= self.Lx)[:, None], row, 0.0)
+            row = np.where(((xs <= self.Lx) & (xs >= self.X0))[:, None], row, 0.0)
             out.append(float(0.5 * (b - a) * wx @ (row @ wy)))
         return np.array(out)
 
@@ -342,7 +422,8 @@ class RollerFEResult:
     Attributes
     ----------
     x : ndarray
-        Axial positions of the pressure nodes, 0 (roller centre) to L/2 (roller end) [m].
+        Axial positions of the pressure nodes, 0 (roller centre) to L/2 (roller end) in
+        the quarter model, -L/2 to L/2 in the half model (a tilt; ``info["model"]``) [m].
     pressure : ndarray
         Peak over the rolling direction of the FE pressure at each x [Pa].
     approach : float
@@ -357,12 +438,14 @@ class RollerFEResult:
         FE peak pressure averaged over line_contact's centre slice [Pa] (the comparison
         row "centre_pressure"; "centre_pressure_node" is the value at x = 0).
     edge_pressure : float
-        The largest nodal pressure in the outer half (x >= L/4) [Pa]: the edge peak.
+        The largest nodal pressure in the outer halves (|x| >= L/4) [Pa]: the edge peak
+        (in the half model, that of the more loaded end).
     x_edge : float
         Where that edge peak lies [m].
     slice_x, slice_loads : ndarray
-        line_contact's slice centres (x >= 0) and the FE load on each slice [m], [N]
-        (the centre slice whole: both halves).
+        line_contact's slice centres (x >= 0 in the quarter model, all in the half
+        model) and the FE load on each slice [m], [N] (the centre slice whole: both
+        halves).
     slice_pressure : ndarray
         FE peak pressure (over y) averaged over each slice [Pa]; its largest value is the
         row "max_pressure" ("max_pressure_node": the largest nodal value).
@@ -421,15 +504,15 @@ class RollerFEResult:
         raise KeyError(quantity)
 
     def side_by_side(self) -> list:
-        """Per slice of line_contact (x >= 0): ``x`` [m], FE and line_contact slice
-        pressure [Pa] and slice load [N], as dicts."""
+        """Per slice of line_contact (x >= 0; every slice in the half model): ``x`` [m],
+        FE and line_contact slice pressure [Pa] and slice load [N], as dicts."""
         c = self.analytic
-        mid = (c.n_slices - 1) // 2
+        s0 = c.n_slices - len(self.slice_x)         # 0 in the half model: every slice
         return [{"x": float(x), "pressure_fe": float(pf), "pressure_line_contact": float(pa),
                  "load_fe": float(lf), "load_line_contact": float(la)}
                 for x, pf, pa, lf, la in zip(self.slice_x, self.slice_pressure,
-                                             c.pressure[mid:], self.slice_loads,
-                                             c.slice_loads[mid:])]
+                                             c.pressure[s0:], self.slice_loads,
+                                             c.slice_loads[s0:])]
 
     def to_dict(self) -> dict:
         """JSON-ready summary (SI units)."""
@@ -486,7 +569,8 @@ def halfspace_w(contact, z: float, E: float, nu: float, n_x: int = 8, n_y: int =
 # --------------------------------------------------------------------------- model
 def roller_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="lundberg",
                    level="standard", *, mode: str = "half-space", n_slices: int = 41,
-                   solver: str | None = None, use_cache: bool = True) -> RollerFEResult:
+                   tilt: float = 0.0, solver: str | None = None,
+                   use_cache: bool = True) -> RollerFEResult:
     """FE check of a profiled roller on its raceway against
     :func:`ballrace.analytic.roller.line_contact` (module notes).
 
@@ -503,8 +587,9 @@ def roller_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="l
     mat1, mat2 : Material
         Roller and raceway materials.
     profile : str, Profile or (x, drop)
-        Roller profile (:func:`ballrace.analytic.roller.as_profile`), symmetric about the
-        mid-length; "lundberg" by name is designed for ``Q``.
+        Roller profile (:func:`ballrace.analytic.roller.as_profile`); "lundberg" by name
+        is designed for ``Q``.  A profile whose drop is not even in x takes the half
+        model (as a tilt does).
     level : {"quick", "standard", "fine"} or RollerLevel
         Mesh level (:data:`ROLLER_LEVELS`).
     mode : {"half-space", "two-body"}
@@ -514,6 +599,13 @@ def roller_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="l
         half-space": its free end face shifts load to the middle; module notes).
     n_slices : int
         Slices of the line_contact compared with [-].
+    tilt : float
+        Tilt of the roller about the rolling direction [rad], as in
+        :func:`ballrace.analytic.roller.line_contact` (positive: the end at +x goes in;
+        the tilt imposed, ``Q`` given, the moment a reaction): the gap gains line_contact's
+        ``- x tan(tilt)``.  Its checks apply (the ValueError beyond (-pi/2, pi/2) or when
+        one slice only touches, the warning beyond 0.1 rad: degrees typed as radians).
+        A nonzero tilt takes the half model (module notes); 0 keeps the quarter model.
     solver : str, optional
         Force a sparse solver (:data:`ballrace.fem.solvers.SOLVERS`).
     use_cache : bool
@@ -530,7 +622,8 @@ def roller_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="l
     from .solvers import slow_solver_hint
 
     t_all = time.perf_counter()
-    c = line_contact(Q, R1, R2, length, mat1, mat2, profile=profile, n_slices=n_slices)
+    c = line_contact(Q, R1, R2, length, mat1, mat2, profile=profile, tilt=tilt,
+                     n_slices=n_slices)
     if not Q > 0:
         raise ValueError(f"Q must be > 0 [N] for the FE check; got {Q!r}")
     if isinstance(level, RollerLevel):
@@ -543,10 +636,11 @@ def roller_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="l
     ctx = ProfileContext(length=c.length, diameter=2.0 * float(R1), E_prime=c.E_prime, R=c.R,
                          load=float(Q))
     probe = np.linspace(-0.45, 0.45, 19) * c.length
-    if not np.allclose(prof.drop(probe, ctx), prof.drop(-probe, ctx),
-                       rtol=1e-9, atol=1e-15):
-        raise ValueError("profile must be symmetric about the roller's mid-length for the "
-                         "quarter model (x = 0 is a symmetry plane)")
+    psi = float(c.tilt)
+    # the quarter model needs x = 0 as a symmetry plane: no tilt and an even profile
+    half = psi != 0.0 or not np.allclose(prof.drop(probe, ctx), prof.drop(-probe, ctx),
+                                         rtol=1e-9, atol=1e-15)
+    n_parts = 2 if half else 4          # the model is a half or a quarter of the contact
     hint = slow_solver_hint(solver)
     if hint:
         log.warning(hint)
@@ -565,6 +659,8 @@ def roller_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="l
     ny = max(3, int(math.ceil(Ly / (lv.dy * b0))))
     yn = np.linspace(0.0, Ly, ny + 1)
     xn = graded_nodes(Lh, lv.nx, lv.dx_end * b0)
+    if half:                            # graded towards both ends
+        xn = np.concatenate([-xn[:0:-1], xn])
     grid = TensorGrid(xn, yn)
 
     # meshes: elements along the roller no longer than the tent spacing allows
@@ -579,7 +675,7 @@ def roller_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="l
     X = Lh + OVERHANG * L
     Yb = min(BLOCK_L * L, 0.5 * abs(R2)) if np.isfinite(R2) else BLOCK_L * L
     Hb = BLOCK_L * L
-    blk = mr.raceway_mesh((X, Yb, Hb), Lh, **kw)
+    blk = mr.raceway_mesh((X, Yb, Hb), Lh, half=half, **kw)
     race_surface = mr.RacewaySurface(R2 if mode == "two-body" else math.inf)
     cn = blk.points[:, 2] == 0.0
     if mode == "two-body" and np.isfinite(R2):
@@ -587,23 +683,25 @@ def roller_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="l
     meshes = [blk]
     bodies = []
     if mode == "two-body":
-        xs = np.linspace(0.0, Lh, 801)
-        dr = np.asarray(prof.drop(np.minimum(xs, Lh * (1 - 1e-9)), ctx), dtype=float)
+        xs = np.linspace(-Lh if half else 0.0, Lh, 1601 if half else 801)
+        xe = Lh * (1 - 1e-9)
+        dr = np.asarray(prof.drop(np.clip(xs, -xe, xe), ctx), dtype=float)
         dr = np.minimum(np.where(np.isfinite(dr), dr, np.inf), 0.3 * b0)
-        rol = mr.roller_mesh(R1, Lh, drop=(xs, dr), **kw)
+        rol = mr.roller_mesh(R1, Lh, drop=(xs, dr), half=half, **kw)
         p = rol.points
         r = np.hypot(p[:, 1], R1 - p[:, 2])
         target = R1 - np.interp(p[:, 0], xs, dr)
         on = (np.abs(r - target) < 1e-6 * R1) & (p[:, 2] < 0.5 * R1)
         bodies.append(Body("roller", p, rol.tets, mat1.E, mat1.nu, +1, R1, on,
-                           mr.RollerSurface(R1, tuple(xs), tuple(dr))))
+                           mr.RollerSurface(R1, tuple(xs), tuple(dr)),
+                           symmetric_x=not half))
         meshes.insert(0, rol)
         bodies.append(Body("raceway", blk.points, blk.tets, mat2.E, mat2.nu, -1, -Hb, cn,
-                           race_surface))
+                           race_surface, symmetric_x=not half))
     else:
         E_hs = 0.5 * Ep * (1.0 - mat2.nu**2)
         bodies.append(Body("half-space", blk.points, blk.tets, E_hs, mat2.nu, -1, -Hb, cn,
-                           race_surface))
+                           race_surface, symmetric_x=not half))
     timings["mesh"] = time.perf_counter() - t0
 
     states = []
@@ -614,11 +712,22 @@ def roller_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="l
             timings[k] = timings.get(k, 0.0) + v
     n_dofs = int(sum(s.n_dofs for s in states))
 
-    # gap: the profile drop (seen once) and the quadratic gap across
+    # gap: the profile drop (seen once) and the quadratic gap across; the half model
+    # adds line_contact's tilt term - x tan(psi), shifted by its least value g_min <= 0
+    # so that the gap is >= 0 at zero approach (the approach is then Delta + g_min)
     t0 = time.perf_counter()
     cap = 50.0 * max(c.approach, b0 * b0 / R)
 
+    def g_axial(x):
+        d = np.asarray(prof.drop(np.clip(x, -Lh * (1 - 1e-12), Lh * (1 - 1e-12)), ctx),
+                       dtype=float)
+        return np.minimum(np.where(np.isfinite(d), d, cap), cap) - x * math.tan(psi)
+
+    g_min = min(0.0, float(np.min(g_axial(np.linspace(-Lh, Lh, 4001))))) if half else 0.0
+
     def g0(x, y):
+        if half:
+            return g_axial(x) - g_min + y * y / (2.0 * R)
         d = np.asarray(prof.drop(np.minimum(x, Lh * (1 - 1e-12)), ctx), dtype=float)
         d = np.minimum(np.where(np.isfinite(d), d, cap), cap)
         return d + y * y / (2.0 * R)
@@ -631,8 +740,9 @@ def roller_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="l
     pen = None
     if lv.smoothing > 0:
         pen = lv.smoothing * float(np.mean(np.diag(C))) / 16.0 * grid.curvature_penalty()
-    sol = solve_contact(C, I["G0"], I["m"], load=Q / 4.0, p_ref=p2d, delta_ref=c.approach,
-                        penalty=pen)
+    sol = solve_contact(C, I["G0"], I["m"], load=Q / n_parts, p_ref=p2d,
+                        delta_ref=c.approach, penalty=pen)
+    Delta = sol.Delta + g_min
     timings["contact"] = time.perf_counter() - t0
 
     # ---- extraction
@@ -643,21 +753,25 @@ def roller_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="l
     at_edge = bool(np.any(lam[:, -1] > 1e-6 * lam.max()))
     if at_edge:
         log.warning("roller contact reaches the edge of the pressure grid across the strip")
-    p_c = float(P[0])
-    outer = xn >= 0.5 * Lh
+    i_0 = int(np.flatnonzero(xn == 0.0)[0])            # the roller centre
+    p_c = float(P[i_0])
+    outer = np.abs(xn) >= 0.5 * Lh                      # the edge peak: the larger end
     k_e = int(np.flatnonzero(outer)[np.argmax(P[outer])])
     p_e, x_e = float(P[k_e]), float(xn[k_e])
-    # line_contact's side
+    # line_contact's side: the slices x >= 0 (quarter model) or all (half model)
     mid = (c.n_slices - 1) // 2
-    cx = np.asarray(c.x)[mid:]
-    cp = np.asarray(c.pressure)[mid:]
-    outer_c = cx >= 0.25 * L
+    s0 = 0 if half else mid
+    i_c = mid - s0                                      # the centre slice
+    cx = np.asarray(c.x)[s0:]
+    cp = np.asarray(c.pressure)[s0:]
+    outer_c = np.abs(cx) >= 0.25 * L
     k_ce = int(np.flatnonzero(outer_c)[np.argmax(cp[outer_c])])
     w = c.slice_width
-    lo = np.maximum(cx - 0.5 * w, 0.0)
+    lo = cx - 0.5 * w if half else np.maximum(cx - 0.5 * w, 0.0)
     hi = cx + 0.5 * w
     fl = 2.0 * grid.strip_loads(sol.lam, lo, hi)        # both sides of y = 0
-    fl[0] *= 2.0                                        # the centre slice: both sides of x = 0
+    if not half:
+        fl[0] *= 2.0                                    # the centre slice: both sides of x = 0
     # the FE peak pressure averaged over each of line_contact's slices (the strip
     # method's slice pressure is that of the slice's mean load): the tents' scatter
     # along the roller (+-2 %) averages out
@@ -670,7 +784,7 @@ def roller_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="l
     us = [ex.displacement(s, sol.lam) for s in states]
     eps = 1e-7 * h
     zq = DEPTH_POINT * b0
-    d_fe = sol.Delta
+    d_fe = Delta
     w_sum = 0.0
     low = states[-1]
     for s, u in zip(states, us):
@@ -700,6 +814,9 @@ def roller_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="l
     # notes) -- its differences are results, no tolerances apply
     tol = ROLLER_TOLERANCES.get(name, ROLLER_TOLERANCES["standard"]) if mode == "half-space" \
         else {}
+    if half and mode == "half-space":
+        tol = dict(tol, end_quarter_load=TILT_TOLERANCE.get(
+            name, TILT_TOLERANCE["standard"])["end_quarter_load"])
     rows = []
 
     def row(q, unit, fe, an_):
@@ -708,16 +825,29 @@ def roller_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="l
         rows.append({"quantity": q, "unit": unit, "fe": float(fe), "analytic": float(an_),
                      "error": float(err), "tol": t, "ok": bool(t is None or abs(err) <= t)})
 
-    row("centre_pressure", "Pa", float(sp[0]), float(cp[0]))
-    row("centre_pressure_node", "Pa", p_c, float(cp[0]))
+    row("centre_pressure", "Pa", float(sp[i_c]), float(cp[i_c]))
+    row("centre_pressure_node", "Pa", p_c, float(cp[i_c]))
     row("edge_pressure", "Pa", p_e, float(cp[k_ce]))
     row("max_pressure", "Pa", float(sp.max()), float(cp.max()))
     row("max_pressure_node", "Pa", float(P.max()), float(cp.max()))
     k_pk = int(np.argmax(cp))
-    row("peak_slice_load", "N", float(fl[k_pk]), float(c.slice_loads[mid + k_pk]))
+    row("peak_slice_load", "N", float(fl[k_pk]), float(c.slice_loads[s0 + k_pk]))
     row("approach", "m", approach_fe, float(c.approach))
     row("approach_depth_point", "m", d_fe, float(c.approach) - w_sum)
-    row("edge_slice_load", "N", float(fl[-1]), float(c.slice_loads[-1]))
+    # the end slice at the more loaded end (line_contact's outer quarters compared; +x in
+    # the quarter model and on a tie)
+    cl = np.asarray(c.slice_loads)
+    k_end = 0 if half and cl[c.x <= -0.25 * L].sum() > cl[c.x >= 0.25 * L].sum() else -1
+    row("edge_slice_load", "N", float(fl[k_end]), float(c.slice_loads[k_end]))
+    if half:
+        # the load on the outer quarter of the roller at the more loaded end (|x| >= L/4,
+        # line_contact's slices), and its slices' largest difference over the mean
+        # slice load Q/n: where a tilt puts the load
+        sgn = -1.0 if k_end == 0 else 1.0
+        q_end = sgn * cx >= 0.25 * L
+        an_end = np.asarray(c.slice_loads)[q_end]
+        row("end_quarter_load", "N", float(fl[q_end].sum()), float(an_end.sum()))
+        end_dev = float(np.max(np.abs(fl[q_end] - an_end))) / (Q / c.n_slices)
     row("von_mises_centre", "Pa", vc, float(an.von_mises_max[0]))
     row("von_mises_centre_depth", "m", zc, float(an.von_mises_depth[0]))
     row("von_mises_edge", "Pa", ve, float(an.von_mises_max[1]))
@@ -728,12 +858,17 @@ def roller_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="l
             "complementarity": sol.complementarity, "pressure_at_grid_edge": at_edge,
             "x_stress_edge": x_se, "x_edge_analytic": x_se,
             "mesh_nodes": [int(m.n_nodes) for m in meshes],
-            "mesh_digests": [m.digest() for m in meshes], "load_check": 4.0 * sol.load}
+            "mesh_digests": [m.digest() for m in meshes], "load_check": n_parts * sol.load,
+            "model": "half" if half else "quarter", "tilt": psi,
+            "slice_load_sum": float(fl.sum() if half else 2.0 * fl.sum() - fl[0]),
+            "x_edge_slice": float(cx[k_end])}
+    if half:
+        info["end_slice_load_deviation"] = end_dev
     for s in states:
         s.release()
     res = RollerFEResult(
         level=name, mode=mode, x=xn, pressure=P, approach=approach_fe,
-        approach_depth_point=d_fe, approach_rigid=sol.Delta, centre_pressure=float(sp[0]),
+        approach_depth_point=d_fe, approach_rigid=Delta, centre_pressure=float(sp[i_c]),
         edge_pressure=p_e, x_edge=x_e, slice_x=cx, slice_loads=fl, slice_pressure=sp,
         von_mises_centre=vc,
         von_mises_centre_depth=zc, von_mises_edge=ve, von_mises_edge_depth=ze,

@@ -15,6 +15,13 @@ symmetry planes.
 * :func:`raceway_mesh` — the raceway: a block ``[0, X] x [0, Y] x [-H, 0]`` longer than
   the roller (``X > L/2``), its top bent onto a cylinder of radius ``R2`` in the rolling
   direction (``inf`` flat, negative concave) by :func:`bend_raceway`.
+* the half model (a tilted roller or a profile that is not even in x: only ``y = 0`` is
+  a symmetry plane): ``half=True`` joins each quarter mesh to its mirror image in the
+  plane ``x = 0`` (:func:`mirror_x`) — the full length ``-L/2 <= x <= L/2`` with the
+  refinement at both roller ends, a mesh symmetric about ``x = 0`` node for node.  The
+  cache holds the quarter mesh (its key covers every parameter of it); the mirror is made
+  from it on every call, and the roller's profile (any drop over ``-L/2 ... L/2``) is
+  applied after mirroring.
 
 Resolution.  The contact is a strip some half-widths ``b`` wide and ``L/(2b)`` (tens)
 half-widths long; the pressure varies along the roller on the scale of ``L`` in the
@@ -43,7 +50,7 @@ import numpy as np
 from .contact import TetMesh, build_cached, deterministic_options, extract_tets
 
 __all__ = ["RollerMeshSpec", "roller_mesh", "raceway_mesh", "bend_raceway", "RacewaySurface",
-           "RollerSurface", "AxialStretch", "MESHER_VERSION"]
+           "RollerSurface", "AxialStretch", "MESHER_VERSION", "mirror_x"]
 
 log = logging.getLogger(__name__)
 
@@ -183,7 +190,10 @@ class RacewaySurface:
 
 @dataclass(frozen=True)
 class RollerSurface:
-    """Roller surface ``z = h(x, y)``: radius ``R1 - P(x)`` about the axis z = R1 [m]."""
+    """Roller surface ``z = h(x, y)``: radius ``R1 - P(x)`` about the axis z = R1 [m].
+
+    The drop table ``(drop_x, drop_v)`` covers ``x >= 0`` (an even profile, mirrored) or,
+    when its first x is negative, the signed x of a half model."""
 
     R1: float
     drop_x: tuple = ()
@@ -191,9 +201,11 @@ class RollerSurface:
 
     def drop(self, x):
         """Profile drop used by the mesh at x [m] (interpolated, capped)."""
-        x = np.abs(np.asarray(x, dtype=float))
+        x = np.asarray(x, dtype=float)
         if not self.drop_x:
             return np.zeros(x.shape)
+        if self.drop_x[0] >= 0.0:
+            x = np.abs(x)
         return np.interp(x, self.drop_x, self.drop_v)
 
     def height(self, x, y):
@@ -276,6 +288,31 @@ def _build(spec: RollerMeshSpec, use_cache: bool) -> TetMesh:
     return build_cached(spec, use_cache, _generate)
 
 
+def mirror_x(mesh: TetMesh) -> TetMesh:
+    """The mesh joined to its mirror image in the plane ``x = 0`` (nodes with x exactly 0
+    shared, the mirrored tetrahedra reoriented): a quarter mesh ``x >= 0`` becomes the
+    half mesh ``-X <= x <= X``, symmetric node for node [m].
+
+    Examples
+    --------
+    >>> m = TetMesh(np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]),
+    ...             np.array([[0, 1, 2, 3]]))
+    >>> h = mirror_x(m)
+    >>> h.n_nodes, h.tets.tolist()
+    (5, [[0, 1, 2, 3], [0, 2, 4, 3]])
+    """
+    p = np.asarray(mesh.points, dtype=float)
+    n = p.shape[0]
+    new = np.flatnonzero(p[:, 0] != 0.0)
+    idx = np.arange(n)
+    idx[new] = n + np.arange(new.size)
+    pm = p[new].copy()
+    pm[:, 0] = -pm[:, 0]
+    tm = idx[np.asarray(mesh.tets)][:, [0, 2, 1, 3]]      # a mirror flips the orientation
+    return TetMesh(points=np.vstack([p, pm]), tets=np.vstack([mesh.tets, tm]),
+                   spec=mesh.spec, seconds=mesh.seconds)
+
+
 def _common(half_length, strip, layer, depth, column, edge_zone, h, h_edge, h_far, growth,
             stretch, ramp):
     return dict(half_length=float(half_length), strip=float(strip), layer=float(layer),
@@ -287,8 +324,10 @@ def _common(half_length, strip, layer, depth, column, edge_zone, h, h_edge, h_fa
 def roller_mesh(R1: float, half_length: float, *, strip: float, layer: float, depth: float,
                 column: float, edge_zone: float, h: float, h_edge: float,
                 h_far: float | None = None, growth: float = 0.3, stretch: float = 1.0,
-                ramp: float = 0.0, drop=None, use_cache: bool = True) -> TetMesh:
-    """Quarter roller ``0 <= x <= L/2``, ``y >= 0``, ``z <= R1`` touching the origin.
+                ramp: float = 0.0, drop=None, half: bool = False,
+                use_cache: bool = True) -> TetMesh:
+    """Quarter roller ``0 <= x <= L/2``, ``y >= 0``, ``z <= R1`` touching the origin
+    (with ``half``: the half roller ``-L/2 <= x <= L/2``).
 
     Parameters
     ----------
@@ -306,7 +345,11 @@ def roller_mesh(R1: float, half_length: float, *, strip: float, layer: float, de
         Length of the elongation's step [m] (default 4 ``edge_zone``).
     drop : (x, drop) arrays, optional
         The profile drop [m] at x >= 0 [m] (finite; cap a logarithmic profile's end);
-        the surface radius becomes ``R1 - drop(x)``.
+        the surface radius becomes ``R1 - drop(x)``.  With ``half``, x may run over
+        ``-L/2 ... L/2`` (a profile that is not even in x).
+    half : bool
+        The half model: the quarter mesh joined to its mirror image (:func:`mirror_x`),
+        the profile applied after mirroring.
     use_cache : bool
         Read from / write to the mesh cache.
 
@@ -318,11 +361,17 @@ def roller_mesh(R1: float, half_length: float, *, strip: float, layer: float, de
     R1 = float(R1)
     dr = () if drop is None else (tuple(float(v) for v in np.asarray(drop[0]).ravel()),
                                   tuple(float(v) for v in np.asarray(drop[1]).ravel()))
-    spec = RollerMeshSpec("roller", (float(half_length), R1, R1), drop=dr,
+    # the quarter mesh (cached) does not depend on the drop, which is applied below; a
+    # signed drop table of a half model keys it by its x >= 0 part as before
+    keep = [i for i, v in enumerate(dr[0]) if v >= 0.0] if dr else []
+    dq = (tuple(dr[0][i] for i in keep), tuple(dr[1][i] for i in keep)) if dr else ()
+    spec = RollerMeshSpec("roller", (float(half_length), R1, R1), drop=dq,
                           **_common(half_length, strip, layer, depth, column, edge_zone, h,
                                     h_edge, h_far if h_far is not None else R1 / 3, growth,
                                     stretch, ramp))
     m = _build(spec, use_cache)
+    if half:
+        m = mirror_x(m)
     p = m.points.copy()
     r = np.hypot(p[:, 1], R1 - p[:, 2])
     on = (np.abs(r - R1) < 1e-5 * R1) & (p[:, 2] < R1 * (1 - 1e-9))
@@ -339,8 +388,9 @@ def roller_mesh(R1: float, half_length: float, *, strip: float, layer: float, de
 def raceway_mesh(size, half_length: float, *, strip: float, layer: float, depth: float,
                  column: float, edge_zone: float, h: float, h_edge: float,
                  h_far: float | None = None, growth: float = 0.3, stretch: float = 1.0,
-                 ramp: float = 0.0, use_cache: bool = True) -> TetMesh:
-    """Quarter raceway block ``[0, X] x [0, Y] x [-H, 0]``, X beyond the roller end.
+                 ramp: float = 0.0, half: bool = False, use_cache: bool = True) -> TetMesh:
+    """Quarter raceway block ``[0, X] x [0, Y] x [-H, 0]``, X beyond the roller end
+    (with ``half``: ``[-X, X] x [0, Y] x [-H, 0]``, :func:`mirror_x`).
 
     Parameters are as in :func:`roller_mesh`; ``size = (X, Y, H)`` [m].
     """
@@ -352,7 +402,8 @@ def raceway_mesh(size, half_length: float, *, strip: float, layer: float, depth:
                           **_common(half_length, strip, layer, depth, column, edge_zone, h,
                                     h_edge, h_far if h_far is not None else min(size) / 4,
                                     growth, stretch, ramp))
-    return _build(spec, use_cache)
+    m = _build(spec, use_cache)
+    return mirror_x(m) if half else m
 
 
 def bend_raceway(mesh: TetMesh, surface: RacewaySurface, depth: float) -> TetMesh:
