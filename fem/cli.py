@@ -837,8 +837,7 @@ def _run_roller(fc, out: Path, render: bool, units: str) -> None:
         from .render import render_roller
 
         for field in ("von_mises", "max_shear"):
-            render_roller(r, str(out / f"roller_{field}.png"), field=field,
-                          raceway_radius=fc.raceway_radius, material=fc.raceway_material)
+            render_roller(r, str(out / f"roller_{field}.png"), field=field)
     typer.echo(f"wrote {out / 'result.json'}" + (" and renders" if render else ""))
     if r.within_tolerance is False:           # a row outside its tolerance
         raise typer.Exit(code=1)

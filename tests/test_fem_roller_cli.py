@@ -187,18 +187,44 @@ def test_quick_roller_run_end_to_end(tmp_path, api_result):
 
 
 @needs_fe
-@pytest.mark.skipif(not can_draw, reason="pyvista or matplotlib missing")
-def test_render_roller_rebuilds_only_the_solved_raceway(tmp_path, api_result):
-    from ballrace.fem.render import render_roller, roller_raceway_state
+def test_roller_raceway_state_is_the_results_own_body(api_result):
+    from ballrace.fem.render import roller_raceway_state
 
+    # the result keeps its raceway (mesh, E, nu, surface) and R1, R2: no rebuild, no
+    # stiffness matrix, no keywords
+    body = api_result.fields["raceway"]
+    assert (api_result.info["roller_radius"], api_result.info["raceway_radius"]) == (6e-3, None)
+    assert not hasattr(body, "C") and not hasattr(body, "factor")
     state, u = roller_raceway_state(api_result)
-    assert u.size == 3 * state.scalar_basis.N
-    # another raceway radius makes another block: refused, naming the argument
-    with pytest.raises(ValueError, match="raceway_radius"):
-        render_roller(api_result, str(tmp_path / "x.png"), raceway_radius=-0.02)   # a narrower block
-    # another Poisson's ratio gives another stress from the same displacements
-    with pytest.raises(ValueError, match="material"):
+    assert u.size == 3 * state.scalar_basis.N and np.isfinite(u).all()
+    assert state.mesh.p.shape[1] == body.points.shape[0]
+    # half-space mode: one block for both bodies' compliance, of modulus E'/2 (1 - nu^2)
+    # = E/2 for two equal steels (E' = 2 E* = E / (1 - nu^2), Hamrock-Dowson)
+    assert state.body.E == pytest.approx(0.5 * ballrace.BEARING_STEEL.E, rel=1e-12)
+    assert state.body.nu == ballrace.BEARING_STEEL.nu
+
+
+@needs_fe
+def test_roller_raceway_state_old_keywords_are_deprecated(api_result):
+    from ballrace.fem.render import roller_raceway_state
+
+    st = ballrace.BEARING_STEEL
+    with pytest.warns(DeprecationWarning, match="raceway_radius is no longer needed") as rec:
+        roller_raceway_state(api_result, raceway_radius=math.inf)
+    assert rec[0].filename == __file__                    # attributed to the caller's line
+    with pytest.warns(DeprecationWarning, match="material is no longer needed"):
+        roller_raceway_state(api_result, material=st)
+    # a value that is not the solve's is refused, naming the keyword
+    with pytest.warns(DeprecationWarning), pytest.raises(ValueError, match="raceway_radius"):
+        roller_raceway_state(api_result, raceway_radius=-0.02)
+    with pytest.warns(DeprecationWarning), pytest.raises(ValueError, match="material"):
         roller_raceway_state(api_result, material=ballrace.Material(E=200e9, nu=0.25))
+
+
+@needs_fe
+@pytest.mark.skipif(not can_draw, reason="pyvista or matplotlib missing")
+def test_render_roller_refuses_a_field_it_does_not_draw(tmp_path, api_result):
+    from ballrace.fem.render import render_roller
+
     with pytest.raises(ValueError, match="field"):
         render_roller(api_result, str(tmp_path / "x.png"), field="tau_xz")
-    assert np.isfinite(u).all()

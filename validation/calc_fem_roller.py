@@ -87,14 +87,14 @@ def roller_outputs(r) -> dict:
     return out
 
 
-def _render(r, render_dir, case_id, raceway_radius, material) -> tuple:
+def _render(r, render_dir, case_id) -> tuple:
     """("label", path) of the render_roller picture, or ("why not", "")."""
     from ballrace.fem.render import render_roller
 
     path = os.path.join(render_dir, f"{case_id}-roller.png")
     try:
         return ("3-D von Mises under the roller, pressure along it",
-                render_roller(r, path, raceway_radius=raceway_radius, material=material))
+                render_roller(r, path))
     except ImportError as exc:
         log.warning("no roller picture of %s: pyvista or matplotlib missing (%s)", case_id, exc)
         return ("picture omitted: pyvista (VTK) or matplotlib is not installed", "")
@@ -127,6 +127,6 @@ def roller_contact(load, roller_diameter, roller_length, raceway_radius, profile
         r = fem.roller_contact(load, 0.5 * roller_diameter, raceway_radius, roller_length, m, m,
                                profile=prof, level=level, mode=mode, n_slices=int(n_slices))
         out = roller_outputs(r)
-        out["_artifacts"] = ([_render(r, render_dir, case_id, raceway_radius, m)]
+        out["_artifacts"] = ([_render(r, render_dir, case_id)]
                              if render_dir else [])
     return out
