@@ -585,7 +585,6 @@ def roller_raceway_state(r, *, raceway_radius=None, material=None):
         A result without its raceway body, or a deprecated ``raceway_radius`` or
         ``material`` that is not the solve's.
     """
-    import math
     from types import SimpleNamespace
 
     from skfem import Basis, ElementTetP2, ElementVector, MeshTet
