@@ -589,6 +589,8 @@ def _unit_example(loc, x: float = 1.0) -> str:
         return "N/um"
     if last == "viscosity" and "lubricant" in keys:
         return "Pa*s" if x < 1 else "mPa*s"    # [lubricant]: dynamic viscosity
+    if last == "tilt" and keys[0] == "case":   # an FE roller's tilt: an angle, not a moment
+        return "rad" if x < 0.01 else "mrad"
     unit = _UNIT_BY_KEY.get(last, "mm")        # the other keys are lengths
     if unit == "GPa" and x >= 1e4:
         return "Pa"

@@ -46,6 +46,8 @@ A roller on its raceway (:func:`ballrace.fem.roller_contact`, checked against
     # profile = { flat_length = "4 mm", crown_radius = "0.5 m" }
                                 # or a table { x = [...], drop = [...] }
     n_slices = 41               # slices of the line_contact compared with
+    # tilt = "0.5 mrad"         # about the rolling direction (+: the end at +x goes in);
+                                # a tilt takes the half model (ballrace.fem.roller)
     [materials]                 # optional; default bearing steel
     roller = { E = "200 GPa", nu = 0.3 }
     ring = { E = "200 GPa", nu = 0.3 }     # the raceway
@@ -85,13 +87,14 @@ MODES = ("half-space", "two-body")
 GAPS = ("hertz", "exact")
 #: The ``[case]`` keys of a roller contact (``contact = "roller"``), and of a ball one.
 ROLLER_KEYS = ("roller_diameter", "roller_radius", "roller_length", "raceway_radius",
-               "profile", "n_slices")
+               "profile", "n_slices", "tilt")
 BALL_KEYS = ("contact_angle", "ball_diameter")
 #: The ``[fem]`` keys that apply to ball contacts only.
 BALL_FEM_KEYS = ("gap", "traction", "traction_pressure")
 #: The roller of the measured table of :mod:`ballrace.fem.roller`: the defaults of a roller case.
 ROLLER_DEFAULTS = {"load": "5 kN", "roller_diameter": "12 mm", "roller_length": "12 mm",
-                   "raceway_radius": "inf", "profile": "lundberg", "n_slices": 41}
+                   "raceway_radius": "inf", "profile": "lundberg", "n_slices": 41,
+                   "tilt": "0 rad"}
 DEFAULT_OUT = Path("ballrace-out") / "fem"
 
 _BEARING_209 = {"ball_diameter": "12.7 mm", "n_balls": 9, "pitch_diameter": "65 mm",
@@ -152,6 +155,9 @@ class FERollerCaseFile:
         Slices of the line_contact compared with [-].
     level, mode : run settings.
     solver : sparse solver or None (automatic).
+    tilt : float
+        Tilt of the roller about the rolling direction [rad] (line_contact's sign:
+        positive, the end at +x goes in); nonzero takes the half model.
     """
 
     title: str
@@ -167,6 +173,7 @@ class FERollerCaseFile:
     mode: str
     solver: Optional[str]
     contact: str = "roller"
+    tilt: float = 0.0
 
     def inputs(self) -> dict:
         """The case in SI for result.json (a flat raceway's radius as null)."""
@@ -177,6 +184,7 @@ class FERollerCaseFile:
                 "raceway_radius": (self.raceway_radius if math.isfinite(self.raceway_radius)
                                    else None),
                 "length": self.length, "profile": prof, "n_slices": self.n_slices,
+                "tilt": self.tilt,
                 "roller_material": {"E": self.roller_material.E, "nu": self.roller_material.nu},
                 "raceway_material": {"E": self.raceway_material.E,
                                      "nu": self.raceway_material.nu}}
@@ -203,6 +211,7 @@ def _roller_models():
         raceway_radius: str = d["raceway_radius"]
         profile: Union[str, dict] = d["profile"]
         n_slices: int = Field(default=d["n_slices"], ge=5, le=2001)
+        tilt: str = d["tilt"]
 
     MaterialSpec = schema.subset(schema.material_keys(), "MaterialSpec", ("E", "nu", "name"))
 
@@ -278,6 +287,7 @@ def _parse_roller(data: dict, source: str) -> FERollerCaseFile:
     if not load > 0:
         raise CaseFileError(f"{source}: [case].load must be > 0; e.g. load = \"5 kN\"")
     prof = read_profile(c.profile, q, source, "[case].profile", L, 2.0 * R1)
+    tilt = q(c.tilt, "[angle]", "[case].tilt")
     mats = read_materials(spec.materials, q, source, ballrace.Material,
                           parts=("roller", "ring"))
     m1 = mats.get("roller", ballrace.BEARING_STEEL)
@@ -285,14 +295,16 @@ def _parse_roller(data: dict, source: str) -> FERollerCaseFile:
     try:                                     # the analytic side checks the rest up front
         from ballrace.analytic.roller import line_contact
 
-        line_contact(load, R1, R2, L, m1, m2, profile=prof, n_slices=c.n_slices)
+        line_contact(load, R1, R2, L, m1, m2, profile=prof, tilt=tilt, n_slices=c.n_slices)
     except (ValueError, TypeError) as exc:
+        if str(exc).startswith("tilt"):
+            raise CaseFileError(f"{source}: [case].tilt = {c.tilt!r}: {exc}") from None
         raise CaseFileError(f"{source}: [case]: {exc}") from None
     f = spec.fem
     return FERollerCaseFile(title=spec.title, load=load, roller_radius=R1, raceway_radius=R2,
                             length=L, roller_material=m1, raceway_material=m2, profile=prof,
                             n_slices=int(c.n_slices), level=f.level, mode=f.mode,
-                            solver=f.solver)
+                            solver=f.solver, tilt=float(tilt))
 
 
 @functools.cache
@@ -357,8 +369,8 @@ def parse_fe_case(data: dict, source: str = "<case>", **overrides) -> FECaseFile
     **overrides
         ``contact``, ``load`` (unit string), ``level``, ``mode``, ``gap``, ``solver``,
         ``traction``, ``traction_pressure``, and for a roller ``profile`` (a name),
-        ``roller_diameter``, ``roller_length``, ``raceway_radius`` (unit strings): values
-        given on the command line; ``None`` keeps the file's value.
+        ``roller_diameter``, ``roller_length``, ``raceway_radius``, ``tilt`` (unit
+        strings): values given on the command line; ``None`` keeps the file's value.
 
     Returns
     -------
@@ -459,7 +471,8 @@ def _merge(data: dict, overrides: dict) -> dict:
                        ("mode", "fem"), ("gap", "fem"), ("solver", "fem"),
                        ("traction", "fem"), ("traction_pressure", "fem"),
                        ("profile", "case"), ("roller_diameter", "case"),
-                       ("roller_length", "case"), ("raceway_radius", "case")):
+                       ("roller_length", "case"), ("raceway_radius", "case"),
+                       ("tilt", "case")):
         if overrides.get(key) is not None:
             t = out.setdefault(table, {})
             if not isinstance(t, dict):
@@ -510,7 +523,7 @@ def _check_cell(err, tol, ok):
 
     from ballrace.console import fmt
 
-    if err is None:
+    if err is None or err != err:            # none, or NaN (a zero reference value)
         return Text("-")
     cell = Text(f"{100 * err:+.2f}%")
     if tol is not None:
@@ -604,6 +617,9 @@ def register(app: typer.Typer) -> None:
         raceway_radius: Annotated[Optional[str], typer.Option(
             help='Roller: raceway radius in the rolling direction, "inf" flat, negative '
                  'concave, e.g. "-40 mm" [default: inf].')] = None,
+        tilt: Annotated[Optional[str], typer.Option(
+            help='Roller: tilt about the rolling direction, e.g. "0.5 mrad" (+: the end '
+                 'at +x goes in; takes the half model) [default: 0].')] = None,
     ):
         """FE check of a Hertz ball contact or a profiled roller's line contact (mesh,
         assemble, solve, compare, render).
@@ -614,13 +630,14 @@ def register(app: typer.Typer) -> None:
         from ballrace.cli import check_units, fail
         from ballrace.validation.cli import FEM_INSTALL, missing_modules, missing_fem
 
-        if load is not None:                  # named as the option, not as [case].load
-            from ballrace.units import parse_quantity
+        from ballrace.units import parse_quantity
 
-            try:
-                parse_quantity(load, "[force]", "--load")
-            except ValueError as exc:
-                fail(str(exc))
+        for value, dim, option in ((load, "[force]", "--load"), (tilt, "[angle]", "--tilt")):
+            if value is not None:             # named as the option, not as [case].load
+                try:
+                    parse_quantity(value, dim, option)
+                except ValueError as exc:
+                    fail(str(exc))
         check_units(units)
         _check_choice(case, "--case", CONTACTS + ("roller",))
         _check_choice(level, "--level", LEVELS)
@@ -642,18 +659,21 @@ def register(app: typer.Typer) -> None:
         overrides = dict(contact=case, load=load, level=level, mode=mode, gap=gap, solver=solver,
                          traction=traction, traction_pressure=traction_pressure,
                          profile=profile, roller_diameter=roller_diameter,
-                         roller_length=roller_length, raceway_radius=raceway_radius)
+                         roller_length=roller_length, raceway_radius=raceway_radius,
+                         tilt=tilt)
         ball_flags = {"--gap": gap, "--traction": traction,
                       "--traction-pressure": traction_pressure}
         roller_flags = {"--profile": profile, "--roller-diameter": roller_diameter,
-                        "--roller-length": roller_length, "--raceway-radius": raceway_radius}
+                        "--roller-length": roller_length, "--raceway-radius": raceway_radius,
+                        "--tilt": tilt}
         def parse(**kw):
             if case_file and case_file != "convergence":
                 return load_fe_case(case_file, **kw)
             return parse_fe_case({}, "command line", **kw)
 
         neutral = {k: None for k in ("gap", "traction", "traction_pressure", "profile",
-                                     "roller_diameter", "roller_length", "raceway_radius")}
+                                     "roller_diameter", "roller_length", "raceway_radius",
+                                     "tilt")}
         try:
             fc = parse(**{**overrides, **neutral})       # which kind of contact, first
             is_roller = isinstance(fc, FERollerCaseFile)
@@ -723,6 +743,7 @@ ROLLER_ROWS = (("centre_pressure", "centre pressure (slice)", "stress"),
                ("edge_pressure", "edge peak (node)", "stress"),
                ("peak_slice_load", "load of peak slice", "force"),
                ("edge_slice_load", "load of end slice", "force"),
+               ("end_quarter_load", "load of end quarter", "force"),
                ("approach", "approach", "small"),
                ("von_mises_centre", "von Mises, centre", "stress"),
                ("von_mises_centre_depth", "  its depth", "length"),
@@ -765,7 +786,9 @@ def _roller_table(r, fc, units: str) -> None:
              f"{unit_label('force', units)}, D = "
              f"{fmt(convert(2 * fc.roller_radius, 'length', units), 5)} {lu}, L = "
              f"{fmt(convert(fc.length, 'length', units), 5)} {lu}, {race}\n"
-             f"{r.mode}, {r.level}, {r.n_dofs:,} DOFs"
+             + (f"tilt {fmt(fc.tilt * 1e3, 4)} mrad, " if fc.tilt else "")
+             + f"{r.mode}, {r.info.get('model', 'quarter')} model, {r.level}, "
+             f"{r.n_dofs:,} DOFs"
              + (f", {total:.1f} s" if total is not None else "") + f", {r.solver}")
     con = make_console()
     if fc.title:
@@ -779,6 +802,10 @@ def _roller_table(r, fc, units: str) -> None:
     if r.mode == "two-body":
         con.print(literal("note: two bodies (the finite elastic roller) depart from "
                           "line_contact's half-spaces by design; no tolerances apply"))
+    if r.info.get("model") == "half":
+        side = "+x" if float(r.info.get("x_edge_slice", 1.0)) > 0 else "-x"
+        con.print(literal(f"note: the half model (the whole length); the end slice and the end "
+                          f"quarter (|x| >= L/4) are those of the more loaded end, {side}"))
 
 
 def _run_roller(fc, out: Path, render: bool, units: str) -> None:
@@ -821,7 +848,7 @@ def _run_roller(fc, out: Path, render: bool, units: str) -> None:
                 r = roller_contact(fc.load, fc.roller_radius, fc.raceway_radius, fc.length,
                                    fc.roller_material, fc.raceway_material,
                                    profile=fc.profile, level=fc.level, mode=fc.mode,
-                                   n_slices=fc.n_slices, solver=fc.solver)
+                                   n_slices=fc.n_slices, tilt=fc.tilt, solver=fc.solver)
             finally:
                 logger.removeHandler(h)
                 logger.setLevel(saved[0])         # setLevel: clears the loggers' level caches
@@ -832,13 +859,16 @@ def _run_roller(fc, out: Path, render: bool, units: str) -> None:
     doc = r.to_dict()
     doc["case"] = fc.inputs()
     doc["passed"] = r.within_tolerance
-    (out / "result.json").write_text(json.dumps(doc, indent=2))
+    from ballrace.commands.bearing import jsonable
+
+    # valid JSON: a relative error against a zero reference (line_contact's unloaded end
+    # slice of a tilted roller) is NaN in the result, null in the file
+    (out / "result.json").write_text(json.dumps(jsonable(doc), indent=2))
     if render:
         from .render import render_roller
 
         for field in ("von_mises", "max_shear"):
-            render_roller(r, str(out / f"roller_{field}.png"), field=field,
-                          raceway_radius=fc.raceway_radius, material=fc.raceway_material)
+            render_roller(r, str(out / f"roller_{field}.png"), field=field)
     typer.echo(f"wrote {out / 'result.json'}" + (" and renders" if render else ""))
     if r.within_tolerance is False:           # a row outside its tolerance
         raise typer.Exit(code=1)

@@ -24,6 +24,8 @@ nothing on machines without X either.
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 __all__ = ["render", "render_3d", "render_roller", "roller_raceway_state", "FIELDS",
@@ -500,9 +502,12 @@ def render_3d(r, path: str = "out-3d.png", *, field: str = "von_mises",
     return str(path)
 
 
-def _cutaway(pv, cells, pts, box, depth, dmax, values=None):
+def _cutaway(pv, cells, pts, box, depth, dmax, values=None, open_quadrant=(1, 1)):
     """Surface of the quarter-model mesh cut to ``box`` and ``depth <= dmax``, mirrored to
-    the three quadrants x < 0 or y < 0 (the quadrant x, y > 0 towards the viewer left open)."""
+    the three quadrants but the one towards the viewer, ``open_quadrant`` (the signs of x
+    and y: (1, 1) leaves x, y > 0 open; (1, -1), x > 0, y < 0).  ``open_quadrant = (0,
+    -1)``: a half model's mesh (both signs of x, y >= 0), not mirrored (the side y < 0
+    open)."""
     import warnings
 
     grid = pv.UnstructuredGrid({pv.CellType.TETRA: np.asarray(cells)}, np.asarray(pts))
@@ -512,11 +517,18 @@ def _cutaway(pv, cells, pts, box, depth, dmax, values=None):
     grid = grid.clip_box(box, invert=False, crinkle=False)
     grid = grid.clip_scalar(scalars="depth", invert=True, value=dmax)
     o = (0.0, 0.0, 0.0)
-    parts = [grid.reflect((1, 0, 0), point=o), grid.reflect((0, 1, 0), point=o)]
-    parts.append(parts[0].reflect((0, 1, 0), point=o))
+    if tuple(open_quadrant) == (0, -1):
+        parts = [grid]
+    else:
+        mx, my = grid.reflect((1, 0, 0), point=o), grid.reflect((0, 1, 0), point=o)
+        quads = {(1, 1): grid, (-1, 1): mx, (1, -1): my,
+                 (-1, -1): mx.reflect((0, 1, 0), point=o)}
+        parts = [g for q, g in quads.items() if q != tuple(open_quadrant)]
     with warnings.catch_warnings():      # pyvista's notice of a future default
         warnings.filterwarnings("ignore", message="The default value of `algorithm`")
-        return parts[0].merge(parts[1:]).extract_surface()
+        warnings.filterwarnings("ignore", message=".*extract_surface` will change")
+        merged = parts[0].merge(parts[1:]) if len(parts) > 1 else parts[0]
+        return merged.extract_surface()
 
 
 def _peak(c, nu: float, field: str) -> float:
@@ -538,24 +550,26 @@ def _nice_top(v: float) -> tuple[float, float]:
 FIELDS_ROLLER = ("von_mises", "max_shear")
 
 
-def roller_raceway_state(r, *, raceway_radius: float = np.inf, material=None):
-    """The raceway body of a :class:`~ballrace.fem.RollerFEResult`, rebuilt for drawing.
+def roller_raceway_state(r, *, raceway_radius=None, material=None):
+    """The raceway body of a :class:`~ballrace.fem.RollerFEResult`, ready for drawing.
 
-    The result keeps the displacements (``fields["u"]``) but not the meshes; the raceway
-    block is rebuilt from the mesh cache (or remeshed: the meshes are deterministic) with
-    the parameters :func:`ballrace.fem.roller_contact` used, and checked twice: its digest
-    against ``info["mesh_digests"]`` and the von Mises stress it gives under the roller
-    centre against the result's own (``fields["von_mises"]``).
+    The result keeps the raceway's mesh, elastic constants and surface
+    (``fields["raceway"]``) and its displacements (``fields["u"]``); this builds the
+    scikit-fem mesh and P2 basis on them (no stiffness matrix: a second or two) and
+    checks the von Mises stress they give under the roller centre against the result's
+    own (``fields["von_mises"]``).  Quarter and half models (a tilted roller) alike, at
+    any level.
 
     Parameters
     ----------
     r : RollerFEResult
-        A solved roller contact at a named level.
-    raceway_radius : float
-        The raceway radius R2 the result was solved with (it sets the block width) [m]:
-        ``inf`` flat, negative concave.
+        A solved :func:`ballrace.fem.roller_contact`.
+    raceway_radius : float, optional
+        Deprecated, not needed: the result keeps its raceway (``info["raceway_radius"]``)
+        [m].  Given, a DeprecationWarning; another value than the solve's, a ValueError.
     material : Material, optional
-        The raceway material (its Poisson's ratio) [-]; default bearing steel.
+        Deprecated, not needed: the result keeps the raceway's E and nu [-].  Given, a
+        DeprecationWarning; another Poisson's ratio than the solve's, a ValueError.
 
     Returns
     -------
@@ -568,45 +582,40 @@ def roller_raceway_state(r, *, raceway_radius: float = np.inf, material=None):
     Raises
     ------
     ValueError
-        A custom level, or a rebuilt mesh or stress that is not the result's (another
-        ``raceway_radius`` or ``material`` than the solve's).
+        A result without its raceway body, or a deprecated ``raceway_radius`` or
+        ``material`` that is not the solve's.
     """
-    import math
     from types import SimpleNamespace
 
     from skfem import Basis, ElementTetP2, ElementVector, MeshTet
 
-    from ballrace.analytic.materials import BEARING_STEEL
-    from ballrace.meshes import roller as mr
+    from ballrace.errors import warn
 
     from . import extract as ex
-    from .roller import BLOCK_L, OVERHANG, ROLLER_LEVELS
 
-    if r.level not in ROLLER_LEVELS:
-        raise ValueError(f"level: no picture of a result at a custom level ({r.level!r}); "
-                         f"solve at one of {', '.join(ROLLER_LEVELS)}")
-    mat = material if material is not None else BEARING_STEEL
-    c, info, lv = r.analytic, r.info, ROLLER_LEVELS[r.level]
-    R2 = float(raceway_radius)
-    L = float(c.length)
-    Lh = 0.5 * L
-    b0, h = float(info["b_hertz"]), float(info["h"])
-    bmax = max(float(np.max(c.half_width)), b0)
-    Ly = float(r.fields["grid"].Ly)
-    kw = dict(strip=Ly + 2.0 * h, layer=0.5 * b0, depth=1.2 * bmax + 0.4 * b0, column=2.0 * b0,
-              edge_zone=1.5 * bmax, h=h, h_edge=lv.edge * h, growth=0.3,
-              stretch=float(info["stretch"]))
-    Yb = min(BLOCK_L * L, 0.5 * abs(R2)) if math.isfinite(R2) else BLOCK_L * L
-    Hb = BLOCK_L * L
-    blk = mr.raceway_mesh((Lh + OVERHANG * L, Yb, Hb), Lh, **kw)
-    surface = mr.RacewaySurface(R2 if r.mode == "two-body" else math.inf)
-    if r.mode == "two-body" and math.isfinite(R2):
-        blk = mr.bend_raceway(blk, surface, Hb)
-    if blk.digest() != info["mesh_digests"][-1]:
-        raise ValueError("raceway_radius: the rebuilt raceway mesh is not the result's; "
-                         "give the raceway radius R2 the contact was solved with [m]")
-    p = np.ascontiguousarray(blk.points.T)
-    t = np.ascontiguousarray(blk.tets.T)
+    body = r.fields.get("raceway")
+    if body is None:
+        raise ValueError("r: the result keeps no raceway body to draw (fields['raceway']); "
+                         "solve it again with ballrace.fem.roller_contact")
+    R2 = r.info.get("raceway_radius")
+    R2 = math.inf if R2 is None else float(R2)
+    if raceway_radius is not None:
+        warn("render_roller / roller_raceway_state: raceway_radius is no longer needed "
+             "(the result keeps its raceway) and will be removed; leave it out",
+             DeprecationWarning)
+        if not (float(raceway_radius) == R2
+                or math.isclose(float(raceway_radius), R2, rel_tol=1e-12)):
+            raise ValueError(f"raceway_radius = {raceway_radius!r} m: the contact was solved "
+                             f"with R2 = {R2!r} m; leave raceway_radius out")
+    if material is not None:
+        warn("render_roller / roller_raceway_state: material is no longer needed (the "
+             "result keeps the raceway's E and nu) and will be removed; leave it out",
+             DeprecationWarning)
+        if not math.isclose(float(material.nu), float(body.nu), rel_tol=1e-12):
+            raise ValueError(f"material: nu = {material.nu!r}, the raceway was solved with "
+                             f"nu = {body.nu!r}; leave material out")
+    p = np.ascontiguousarray(np.asarray(body.points).T)
+    t = np.ascontiguousarray(np.asarray(body.tets).T)
     a, b, cc, d = (p[:, t[i]] for i in range(4))       # positive orientation, as assembled
     neg = np.einsum("ij,ij->j", np.cross(b - a, cc - a, axis=0), d - a) < 0
     if np.any(neg):
@@ -614,50 +623,69 @@ def roller_raceway_state(r, *, raceway_radius: float = np.inf, material=None):
         t[[1, 2]] = np.where(neg, t[[2, 1]], t[[1, 2]])
     mesh = MeshTet(p, t)
     sbasis = Basis(mesh, ElementVector(ElementTetP2()), intorder=1).with_element(ElementTetP2())
-    if r.mode == "two-body":
-        E, nu, name = mat.E, mat.nu, "raceway"
-    else:
-        E, nu, name = 0.5 * c.E_prime * (1.0 - mat.nu ** 2), mat.nu, "half-space"
-    state = SimpleNamespace(body=SimpleNamespace(name=name, E=E, nu=nu, surface=surface),
+    surface = body.surface
+    state = SimpleNamespace(body=SimpleNamespace(name=body.name, E=float(body.E),
+                                                 nu=float(body.nu), surface=surface),
                             mesh=mesh, scalar_basis=sbasis)
     u = np.asarray(r.fields["u"][-1])
     if u.size != 3 * sbasis.N:
-        raise ValueError("raceway_radius: the rebuilt raceway mesh is not the result's")
-    # the result's own von Mises profile under the centre, recomputed on the rebuilt body
+        raise ValueError("r: the raceway's displacements do not fit its mesh "
+                         f"({u.size} values for {sbasis.N} P2 nodes)")
+    # the result's own von Mises profile under the centre, recomputed on the body
     zs = np.asarray(r.fields["depth"])
-    eps = 1e-7 * h
+    eps = 1e-7 * float(r.info["h"])
     pts = np.stack([np.full(zs.size, eps), np.full(zs.size, eps),
                     surface.height(0.0, 0.0) - zs], axis=1)
     vm = ex.tresca_von_mises(ex.to_depth_frame(ex.stresses(state, u, pts)))[1]
     if not np.allclose(vm, r.fields["von_mises"][0], rtol=1e-6):
-        raise ValueError("material: the stress on the rebuilt raceway is not the result's; "
-                         "give the raceway material the contact was solved with")
+        raise ValueError("r: the stress on the raceway body is not the result's own")
     return state, u
+
+
+def _roller_half(r) -> bool:
+    """True for a result of the half model (a tilt or an uneven profile)."""
+    return r.info.get("model") == "half"
+
+
+def _roller_loaded_end(r) -> float:
+    """+1 when the more loaded end of a half-model result is at +x, -1 at -x (+1 for the
+    quarter model) [-]."""
+    if not _roller_half(r):
+        return 1.0
+    return -1.0 if float(r.info.get("x_edge_slice", 1.0)) < 0.0 else 1.0
 
 
 def _roller_label(r) -> str:
     c = r.analytic
     prof = getattr(c.profile, "name", None) or type(c.profile).__name__
-    return (f"{prof} roller, Q = {c.load:g} N, L = {c.length * 1e3:g} mm "
-            f"({r.mode}, {r.level} level, {r.n_dofs:,} DOFs)")
+    tilt = float(r.info.get("tilt", 0.0) or 0.0)
+    tilted = f", tilt {tilt * 1e3:.3g} mrad" if tilt else ""
+    return (f"{prof} roller, Q = {c.load:g} N, L = {c.length * 1e3:g} mm{tilted} "
+            f"({r.mode}, {r.info.get('model', 'quarter')} model, {r.level} level, "
+            f"{r.n_dofs:,} DOFs)")
 
 
 def render_roller(r, path: str = "roller.png", *, field: str = "von_mises",
-                  raceway_radius: float = np.inf, material=None,
-                  window_size=(1400, 1000)) -> str:
+                  raceway_radius=None, material=None, window_size=(1400, 1000)) -> str:
     """Picture of an FE roller contact: the stress below the contact and the pressure
     along the roller.
 
     Top: an off-screen pyvista view of the raceway block under the roller (the roller a
-    grey segment above it), the quarter model mirrored to the whole roller length and cut
-    open over ``x > 0, y > 0`` so that the section ``y = 0`` under the roller axis — the
-    field under the middle and below the roller end, the edge region — and the section
-    ``x = 0`` across the rolling direction show the stress, recovered at the P2 nodes
-    (:func:`nodal_stress`) in MPa.  The axis along the roller is drawn compressed (the
-    contact is some 40 half-widths long): the scale is written on the picture.
+    grey segment above it), coloured by the stress recovered at the P2 nodes
+    (:func:`nodal_stress`) in MPa.  The quarter model (no tilt) is mirrored to the
+    whole roller length and cut open over ``x > 0, y < 0``, so that the section ``y = 0``
+    under the roller axis — the field under the middle and below the roller end, the
+    edge region — and the section ``x = 0`` across the rolling direction show the
+    stress.  The half model (a tilted roller, or an uneven profile) spans the whole
+    length already and is drawn as solved, its mirror image ``y < 0`` left open: the
+    section ``y = 0`` shows the field under the whole length, seen from the more loaded
+    end.  The axis along the
+    roller is drawn compressed (the contact is some 40 half-widths long): the scale is
+    written on the picture, the tick labels are true millimetres.
     Bottom: the pressure along the roller — the FE peak over the rolling direction at
     the tent nodes, its average over each of line_contact's slices, and line_contact's
-    slice pressures — with the FE slice loads against line_contact's.
+    slice pressures; the title gives the end slice's load (FE and line_contact) and,
+    for a tilted roller, the tilt and the load of the loaded end's outer quarter.
 
     pyvista (VTK) and matplotlib are imported here only; VTK's off-screen window is
     chosen first (:func:`offscreen_vtk`).
@@ -665,16 +693,17 @@ def render_roller(r, path: str = "roller.png", *, field: str = "von_mises",
     Parameters
     ----------
     r : RollerFEResult
-        A solved :func:`ballrace.fem.roller_contact` at a named level.
+        A solved :func:`ballrace.fem.roller_contact` (it keeps its raceway body,
+        :func:`roller_raceway_state`).
     path : str
         Output PNG path.
     field : {"von_mises", "max_shear"}
         von Mises or maximum shear (Tresca) stress.
-    raceway_radius : float
-        The raceway radius R2 of the solve [m] (``inf`` flat; the raceway mesh is
-        rebuilt, :func:`roller_raceway_state`).
+    raceway_radius : float, optional
+        Deprecated, not needed (the result keeps R1 and R2) [m]; given, a
+        DeprecationWarning (:func:`roller_raceway_state`).
     material : Material, optional
-        The raceway material of the solve; default bearing steel.
+        Deprecated, not needed; given, a DeprecationWarning.
     window_size : (int, int)
         Image size [px] (width, height).
 
@@ -703,22 +732,27 @@ def render_roller(r, path: str = "roller.png", *, field: str = "von_mises",
     val = (vm if field == "von_mises" else tres) / 1e6
     c = r.analytic
     mm = 1e3
+    half = _roller_half(r)
+    end = _roller_loaded_end(r)
     Lh = 0.5 * float(c.length)
     b0 = float(r.info["b_hertz"])
     surf = state.body.surface
     depth = np.asarray(surf.height(pts[:, 0], pts[:, 1]), dtype=float) - pts[:, 2]
-    # the box drawn: the roller and a little beyond its end, 3 half-widths across and deep
-    X, Y, D = Lh + 8.0 * b0, 3.0 * b0, 3.0 * b0
+    # the box drawn: the roller and a little beyond its end (to a round length, the step
+    # of the labels along it), 3 half-widths across and deep
+    step_x = _nice_step(mm * (Lh + 8.0 * b0) / 3.0) / mm
+    X, Y, D = math.ceil((Lh + 8.0 * b0) / step_x - 1e-9) * step_x, 3.0 * b0, 3.0 * b0
     sx = min(1.0, 3.0 * Y / X)                       # axial compression of the picture
     tets = state.scalar_basis.element_dofs[:4].T
-    near = np.all((pts[tets, 0] <= 1.2 * X) & (pts[tets, 1] <= 1.5 * Y)
+    near = np.all((np.abs(pts[tets, 0]) <= 1.2 * X) & (pts[tets, 1] <= 1.5 * Y)
                   & (depth[tets] <= 1.5 * D), axis=1)
     cells = cells.reshape(-1, 8, 4)[near].reshape(-1, 4)
     P = pts * mm
     P[:, 0] *= sx
     zlo, zhi = float(P[:, 2].min()), float(P[:, 2].max())
-    box = (0.0, X * mm * sx, 0.0, Y * mm, zlo - 1.0, zhi + 1.0)
-    body = _cutaway(pv, cells, P, box, depth * mm, D * mm, val)
+    box = (-X * mm * sx if half else 0.0, X * mm * sx, 0.0, Y * mm, zlo - 1.0, zhi + 1.0)
+    body = _cutaway(pv, cells, P, box, depth * mm, D * mm, val,
+                    open_quadrant=(0, -1) if half else (1, -1))
     title = {"von_mises": "von Mises stress", "max_shear": "max shear stress (Tresca)"}[field]
 
     pl = pv.Plotter(off_screen=True, window_size=(int(window_size[0]),
@@ -735,13 +769,13 @@ def render_roller(r, path: str = "roller.png", *, field: str = "von_mises",
                                      "height": 0.65, "width": 0.04, "fmt": "%.0f",
                                      "title_font_size": 16, "label_font_size": 14})
         # the roller: a grey, translucent segment of its profiled surface resting on the
-        # contact behind the section y = 0 (-Y <= y <= 0), over its whole length
+        # contact behind the section y = 0 (0 <= y <= Y), over its whole length
         from ballrace.analytic.roller import ProfileContext
 
-        R1 = _roller_radius(c, raceway_radius)
+        R1 = float(r.info["roller_radius"])
         ctx = ProfileContext(length=c.length, diameter=2.0 * R1, E_prime=c.E_prime, R=c.R,
                              load=c.load)
-        XX, YY = np.meshgrid(np.linspace(-Lh, Lh, 241), np.linspace(-Y, 0.0, 13), indexing="ij")
+        XX, YY = np.meshgrid(np.linspace(-Lh, Lh, 241), np.linspace(0.0, Y, 13), indexing="ij")
         cap = 0.5 * D
         dr = np.asarray(c.profile.drop(np.clip(XX, -Lh * (1 - 1e-9), Lh * (1 - 1e-9)), ctx),
                         dtype=float)
@@ -750,26 +784,28 @@ def render_roller(r, path: str = "roller.png", *, field: str = "von_mises",
         roller = pv.StructuredGrid(XX * mm * sx, YY * mm, ZZ * mm + 0.01 * D * mm)
         pl.add_mesh(roller, color="silver", opacity=0.45, smooth_shading=True)
         for xe in (-Lh, Lh):                      # the roller ends
-            yl = np.linspace(-Y, 0.0, 13)
+            yl = np.linspace(0.0, Y, 13)
             dz = float(np.minimum(cap, np.nan_to_num(
                 float(c.profile.drop(xe * (1 - 1e-9), ctx)), nan=cap, posinf=cap)))
             zl = dz + R1 - np.sqrt(R1 * R1 - yl * yl) + 0.01 * D
             pl.add_mesh(pv.lines_from_points(np.stack([np.full(yl.size, xe * sx), yl, zl],
                                                       axis=1) * mm), color="dimgray",
                         line_width=2)
-        pl.add_text(f"{title}: {_roller_label(r)}\nraceway under the roller (grey), cut open "
-                    "at the sections y = 0 (under the roller axis) and x = 0 (mid-length); "
+        if half:
+            cut = ("cut open at the section y = 0 (under the roller axis) over the whole "
+                   f"length, seen from the more loaded end (x {'>' if end > 0 else '<'} 0)")
+        else:
+            cut = ("cut open at the sections y = 0 (under the roller axis) and x = 0 "
+                   "(mid-length)")
+        pl.add_text(f"{title}: {_roller_label(r)}\nraceway under the roller (grey), {cut}; "
                     f"x drawn at {sx:.2g} of scale, coordinates in mm",
                     position="upper_left", font_size=11, color="black")
-        bb = np.array(body.bounds, dtype=float)
-        bb[:2] /= sx                                 # the labels in true mm
-        pl.show_bounds(location="outer", color="black", font_size=14,
-                       xtitle="x along the roller [mm]", axes_ranges=bb.tolist(),
-                       ytitle="y rolling [mm]", ztitle="z [mm]", n_xlabels=3, n_ylabels=2,
-                       n_zlabels=3, fmt="%.2f")
-        pl.camera_position = [(0.9, 1.6, 0.75), (0.0, 0.0, 0.0), (0.0, 0.0, 1.0)]
+        axes = _roller_bounds(pl, body, sx, X * mm, step_x * mm, Y * mm)
+        # seen from y < 0 (x grows to the right), from the loaded end's side of x = 0
+        pl.camera_position = [(0.9 * end, -1.6, 0.75), (0.0, 0.0, 0.0), (0.0, 0.0, 1.0)]
         pl.reset_camera()
         pl.camera.zoom(1.6)
+        axes()
         img = pl.screenshot(return_img=True)
     finally:
         pl.close()
@@ -785,25 +821,61 @@ def render_roller(r, path: str = "roller.png", *, field: str = "von_mises",
     return str(path)
 
 
-def _roller_radius(c, R2: float) -> float:
-    """Roller radius R1 from line_contact's reduced radius and the raceway radius [m]."""
-    return float(c.R) if not np.isfinite(R2) else 1.0 / (1.0 / float(c.R) - 1.0 / float(R2))
+def _nice_step(v: float) -> float:
+    """The largest of 1, 2, 2.5, 5 x 10^k at or below ``v`` (> 0)."""
+    e = 10.0 ** math.floor(math.log10(v))
+    return max(m * e for m in (1.0, 2.0, 2.5, 5.0) if m * e <= v * (1 + 1e-12))
+
+
+def _roller_bounds(pl, body, sx: float, X: float, step: float, Y: float):
+    """Cube axes of the roller picture; returns the function that writes its labels
+    (called once the camera is set: pyvista rewrites them when the bounds change).
+
+    Along the roller, drawn compressed by ``sx``, the labels are true mm at every
+    ``step`` over ``-X <= x <= X`` [mm], the two end ones left blank (they met the z and
+    y labels at the corners); the short y axis, seen nearly end-on, carries its range in
+    its title instead of tick labels that overlapped it."""
+    from vtkmodules.vtkCommonCore import vtkStringArray
+
+    bb = np.array(body.bounds, dtype=float)
+    bb[:2] /= sx                                 # the ranges in true mm
+    actor = pl.show_bounds(location="outer", color="black", font_size=14,
+                           xtitle="x along the roller [mm]", axes_ranges=bb.tolist(),
+                           ytitle=f"y rolling, {bb[2]:.2f} to {bb[3]:.2f} mm",
+                           ztitle="z [mm]", n_xlabels=3, n_ylabels=2, n_zlabels=3,
+                           fmt="%.2f", show_ylabels=False)
+    n = int(round(2.0 * X / step))
+
+    def labels():
+        arr = vtkStringArray()
+        for i in range(n + 1):
+            v = -X + i * step
+            arr.InsertNextValue("" if i in (0, n) else f"{0.0 if abs(v) < 1e-9 * X else v:g}")
+        actor.SetAxisLabels(0, arr)
+    return labels
 
 
 def _roller_pressure_axes(ax, r) -> None:
-    """Pressure along the roller: FE nodes, FE slice averages, line_contact's slices."""
+    """Pressure along the roller: FE nodes, FE slice averages, line_contact's slices.
+
+    The quarter model's half roller (x >= 0) is mirrored to the whole length; the half
+    model's results span it already."""
     c = r.analytic
     mm = 1e3
+    half = _roller_half(r)
     x = np.asarray(r.x)
+    p = np.asarray(r.pressure)
+    sx = np.asarray(r.slice_x)
+    sp = np.asarray(r.slice_pressure)
+    if not half:
+        x, p = np.concatenate([-x[:0:-1], x]), np.concatenate([p[:0:-1], p])
+        sx, sp = np.concatenate([-sx[:0:-1], sx]), np.concatenate([sp[:0:-1], sp])
     xa = np.asarray(c.x)
     w = c.slice_width
-    ax.plot(np.concatenate([-x[:0:-1], x]) * mm,
-            np.concatenate([r.pressure[:0:-1], r.pressure]) / 1e6, "-", color="C0", lw=1.2,
-            marker=".", ms=4, label="FE: peak over y at the tent nodes")
-    sx = np.asarray(r.slice_x)
-    sp = np.asarray(r.slice_pressure) / 1e6
-    ax.step(np.concatenate([-sx[:0:-1], sx]) * mm, np.concatenate([sp[:0:-1], sp]),
-            where="mid", color="C1", lw=1.6, label="FE: averaged over each slice")
+    ax.plot(x * mm, p / 1e6, "-", color="C0", lw=1.2, marker=".", ms=4,
+            label="FE: peak over y at the tent nodes")
+    ax.step(sx * mm, sp / 1e6, where="mid", color="C1", lw=1.6,
+            label="FE: averaged over each slice")
     ax.step(xa * mm, np.asarray(c.pressure) / 1e6, where="mid", color="k", ls="--", lw=1.3,
             label=f"line_contact ({c.n_slices} slices)")
     ax.axvline(-0.5 * c.length * mm, color="grey", lw=0.8, ls=":")
@@ -815,7 +887,17 @@ def _roller_pressure_axes(ax, r) -> None:
     ax.grid(alpha=0.3)
     ax.tick_params(labelsize=9)
     e = r.row("edge_slice_load")
-    ax.set_title(f"pressure along the roller (end slice load: FE {e['fe']:.1f} N, "
-                 f"line_contact {e['analytic']:.1f} N; centre pressure "
-                 f"{100 * r.row('centre_pressure')['error']:+.1f} %)", fontsize=10)
+    cp = 100 * r.row("centre_pressure")["error"]
+    if half:
+        tilt = float(r.info.get("tilt", 0.0) or 0.0)
+        side = "+x" if _roller_loaded_end(r) > 0 else "-x"
+        q = r.row("end_quarter_load")
+        ax.set_title(f"pressure along the roller, tilt {tilt * 1e3:.3g} mrad (the loaded "
+                     f"end at {side}: end slice FE {e['fe']:.1f} N, line_contact "
+                     f"{e['analytic']:.1f} N; outer quarter FE {q['fe']:.0f} N, "
+                     f"{100 * q['error']:+.1f} %; centre pressure {cp:+.1f} %)", fontsize=10)
+    else:
+        ax.set_title(f"pressure along the roller (end slice load: FE {e['fe']:.1f} N, "
+                     f"line_contact {e['analytic']:.1f} N; centre pressure {cp:+.1f} %)",
+                     fontsize=10)
     ax.legend(fontsize=9, loc="lower center", ncol=3)

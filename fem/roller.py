@@ -462,6 +462,17 @@ class RollerFEResult:
         line_contact for the same inputs.
     comparison : list of dict
         Rows ``quantity, unit, fe, analytic, error, tol, ok``.
+    fields : dict
+        What a picture needs (:func:`ballrace.fem.render.render_roller`): the pressure
+        grid and tent pressures (``grid``, ``lam`` [Pa]), the displacements of each body
+        (``u`` [m]), the raceway body (``raceway``: a :class:`ballrace.fem.model.Body`,
+        its mesh points [m] and tetrahedra, E [Pa], nu [-] and surface; no stiffness or
+        factor is kept) and the von Mises profiles under the centre and the edge peak
+        (``depth`` [m], ``von_mises``, ``analytic_von_mises`` [Pa]).
+    info : dict
+        Mesh and run details; ``roller_radius`` R1 and ``raceway_radius`` R2 [m] of the
+        solve (``None``: a flat raceway), ``model`` ("quarter" or "half") and ``tilt``
+        [rad].
     """
 
     level: str
@@ -861,7 +872,8 @@ def roller_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="l
             "mesh_digests": [m.digest() for m in meshes], "load_check": n_parts * sol.load,
             "model": "half" if half else "quarter", "tilt": psi,
             "slice_load_sum": float(fl.sum() if half else 2.0 * fl.sum() - fl[0]),
-            "x_edge_slice": float(cx[k_end])}
+            "x_edge_slice": float(cx[k_end]), "roller_radius": R1,
+            "raceway_radius": R2 if math.isfinite(R2) else None}
     if half:
         info["end_slice_load_deviation"] = end_dev
     for s in states:
@@ -875,7 +887,7 @@ def roller_contact(Q, R1, R2, length, mat1: Material, mat2: Material, profile="l
         n_dofs=n_dofs, timings=timings, peak_rss=int(peak), solver=states[0].solver,
         analytic=c, comparison=rows,
         fields={"grid": grid, "lam": sol.lam, "depth": zs, "von_mises": vm_fe,
-                "analytic_von_mises": an.von_mises, "u": us},
+                "analytic_von_mises": an.von_mises, "u": us, "raceway": bodies[-1]},
         info=info)
     log.info("roller contact (%s, %s): %d DOFs in %.1f s", mode, name, n_dofs,
              timings["total"])

@@ -73,6 +73,73 @@ def test_command_line_values_replace_the_files():
     assert isinstance(parse_fe_case({}, contact="roller"), FERollerCaseFile)
 
 
+def test_tilt_reads_to_radians_and_the_command_line_replaces_it():
+    # [case].tilt in any angle unit, to SI (rad); line_contact's sign (+: the +x end in)
+    assert parse_fe_case(roller()).tilt == 0.0
+    fc = parse_fe_case(roller(tilt="0.5 mrad", profile={"flat_length": "4 mm",
+                                                        "crown_radius": "0.5 m"}))
+    assert fc.tilt == pytest.approx(5e-4, rel=1e-12) and fc.inputs()["tilt"] == fc.tilt
+    assert parse_fe_case(roller(tilt="-0.03 deg")).tilt == pytest.approx(
+        -math.radians(0.03), rel=1e-12)
+    assert parse_fe_case(roller(tilt="2 arcmin")).tilt == pytest.approx(
+        2 / 60 * math.pi / 180, rel=1e-12)
+    assert parse_fe_case(roller(tilt="0.5 mrad"), "x.toml", tilt="-1 mrad").tilt == \
+        pytest.approx(-1e-3, rel=1e-12)
+
+
+@pytest.mark.parametrize("tilt, message", [
+    ("0.5", "give the angle's unit"),                      # a number without its unit
+    (0.0005, 'give the value with its unit as a string, e.g. "0.0005 rad"'),   # bare
+    (0.5, '"0.5 mrad"'),
+    ("0.5 mm", "expected an angle"),
+    ("2 rad", "tilt must be in (-pi/2, pi/2)"),            # line_contact's range
+    ("-100 deg", "tilt must be in (-pi/2, pi/2)"),
+])
+def test_bad_tilts_name_the_key(tilt, message):
+    with pytest.raises(CaseFileError) as e:
+        parse_fe_case(roller(tilt=tilt), "r.toml")
+    msg = str(e.value)
+    assert msg.startswith("r.toml: [case].tilt") and message in msg and "\n" not in msg
+
+
+def test_degrees_typed_as_radians_warn_and_fail_naming_the_key():
+    # "0.3 rad" is likely 0.3 degrees meant: line_contact's unit-slip warning, then its
+    # error (one slice touches), named as the case file's key
+    with pytest.warns(UserWarning, match="degrees"):
+        with pytest.raises(CaseFileError, match=r"r.toml: \[case\].tilt = '0.3 rad': .*one "
+                                                r"slice"):
+            parse_fe_case(roller(tilt="0.3 rad"), "r.toml")
+
+
+def test_roller_table_shows_the_tilt_and_the_end_quarter_row(capsys):
+    from types import SimpleNamespace
+
+    from ballrace.fem.cli import _roller_table
+
+    def row(q, fe, an, tol=None):
+        err = fe / an - 1 if an else float("nan")
+        return {"quantity": q, "unit": "N", "fe": fe, "analytic": an, "error": err,
+                "tol": tol, "ok": True}
+    rows = [row("edge_slice_load", 1.04, 0.0), row("end_quarter_load", 1022.17, 1027.03, 0.02)]
+    r = SimpleNamespace(row=lambda q: next((x for x in rows if x["quantity"] == q), None)
+                        or (_ for _ in ()).throw(KeyError(q)),
+                        timings={"total": 21.0}, mode="half-space", level="quick",
+                        n_dofs=113_712, solver="pardiso",
+                        info={"model": "half", "x_edge_slice": 5.85e-3})
+    fc = parse_fe_case(roller(tilt="0.5 mrad", profile={"flat_length": "4 mm",
+                                                        "crown_radius": "0.5 m"}))
+    _roller_table(r, fc, "eng")
+    out = capsys.readouterr().out
+    assert "tilt 0.5 mrad, half-space, half model, quick, 113,712 DOFs" in out
+    line = next(x for x in out.splitlines() if "load of end quarter" in x)
+    assert "1022.2" in line and "-0.47% / 2% ok" in line
+    # line_contact's end slice is unloaded (0 N): no relative error, a dash
+    line = next(x for x in out.splitlines() if "load of end slice" in x)
+    assert line.rstrip().endswith("-") and "nan" not in out
+    assert "the more loaded end, +x" in out
+    assert max(len(x) for x in out.splitlines()) <= 80
+
+
 @pytest.mark.parametrize("doc, key", [
     (roller(ball_diameter="12 mm"), "[case].ball_diameter"),
     (roller(contact_angle="10 deg"), "[case].contact_angle"),
@@ -111,6 +178,9 @@ def test_bad_roller_cases_name_the_file_and_key(doc, key):
                                              "ball contacts"),
     (["--contact", "roller", "--roller-diameter", "12"], "[case].roller_diameter: give a unit"),
     (["--contact", "rollr"], "--case must be one of inner, outer, plane, ball, roller"),
+    (["--contact", "inner", "--tilt", "1 mrad"], "--tilt applies to --contact roller only"),
+    (["--contact", "roller", "--tilt", "0.5"], "--tilt: give the angle's unit"),
+    (["--contact", "roller", "--tilt", "2 rad"], "[case].tilt = '2 rad': tilt must be in"),
 ])
 def test_bad_roller_commands_are_one_line_errors(args, message):
     res = runner.invoke(app, ["fem", *args])
@@ -187,18 +257,44 @@ def test_quick_roller_run_end_to_end(tmp_path, api_result):
 
 
 @needs_fe
-@pytest.mark.skipif(not can_draw, reason="pyvista or matplotlib missing")
-def test_render_roller_rebuilds_only_the_solved_raceway(tmp_path, api_result):
-    from ballrace.fem.render import render_roller, roller_raceway_state
+def test_roller_raceway_state_is_the_results_own_body(api_result):
+    from ballrace.fem.render import roller_raceway_state
 
+    # the result keeps its raceway (mesh, E, nu, surface) and R1, R2: no rebuild, no
+    # stiffness matrix, no keywords
+    body = api_result.fields["raceway"]
+    assert (api_result.info["roller_radius"], api_result.info["raceway_radius"]) == (6e-3, None)
+    assert not hasattr(body, "C") and not hasattr(body, "factor")
     state, u = roller_raceway_state(api_result)
-    assert u.size == 3 * state.scalar_basis.N
-    # another raceway radius makes another block: refused, naming the argument
-    with pytest.raises(ValueError, match="raceway_radius"):
-        render_roller(api_result, str(tmp_path / "x.png"), raceway_radius=-0.02)   # a narrower block
-    # another Poisson's ratio gives another stress from the same displacements
-    with pytest.raises(ValueError, match="material"):
+    assert u.size == 3 * state.scalar_basis.N and np.isfinite(u).all()
+    assert state.mesh.p.shape[1] == body.points.shape[0]
+    # half-space mode: one block for both bodies' compliance, of modulus E'/2 (1 - nu^2)
+    # = E/2 for two equal steels (E' = 2 E* = E / (1 - nu^2), Hamrock-Dowson)
+    assert state.body.E == pytest.approx(0.5 * ballrace.BEARING_STEEL.E, rel=1e-12)
+    assert state.body.nu == ballrace.BEARING_STEEL.nu
+
+
+@needs_fe
+def test_roller_raceway_state_old_keywords_are_deprecated(api_result):
+    from ballrace.fem.render import roller_raceway_state
+
+    st = ballrace.BEARING_STEEL
+    with pytest.warns(DeprecationWarning, match="raceway_radius is no longer needed") as rec:
+        roller_raceway_state(api_result, raceway_radius=math.inf)
+    assert rec[0].filename == __file__                    # attributed to the caller's line
+    with pytest.warns(DeprecationWarning, match="material is no longer needed"):
+        roller_raceway_state(api_result, material=st)
+    # a value that is not the solve's is refused, naming the keyword
+    with pytest.warns(DeprecationWarning), pytest.raises(ValueError, match="raceway_radius"):
+        roller_raceway_state(api_result, raceway_radius=-0.02)
+    with pytest.warns(DeprecationWarning), pytest.raises(ValueError, match="material"):
         roller_raceway_state(api_result, material=ballrace.Material(E=200e9, nu=0.25))
+
+
+@needs_fe
+@pytest.mark.skipif(not can_draw, reason="pyvista or matplotlib missing")
+def test_render_roller_refuses_a_field_it_does_not_draw(tmp_path, api_result):
+    from ballrace.fem.render import render_roller
+
     with pytest.raises(ValueError, match="field"):
         render_roller(api_result, str(tmp_path / "x.png"), field="tau_xz")
-    assert np.isfinite(u).all()

@@ -8,6 +8,7 @@ side (x = 2.34 mm) and leaves the end slices unloaded, the contact inside the ro
 The tolerances are the differences measured at each level (ballrace.fem.roller notes,
 :data:`ballrace.fem.roller.TILT_TOLERANCE`).
 """
+import importlib.util
 import math
 import warnings
 
@@ -127,3 +128,47 @@ def test_untilted_roller_keeps_the_quarter_model(untilted, tilted):
     # the half model's meshes are the quarter's joined to their mirror images
     nq, nh = q0.info["mesh_nodes"][0], tilted.info["mesh_nodes"][0]
     assert 1.8 * nq < nh < 2 * nq and tilted.n_dofs > 1.8 * q0.n_dofs
+
+
+# ----------------------------------------------------------------------------- pictures
+can_draw = all(importlib.util.find_spec(m) is not None for m in ("pyvista", "matplotlib"))
+
+
+def test_pressure_along_a_tilted_roller_is_drawn_over_the_whole_length(tilted, untilted):
+    pytest.importorskip("matplotlib")
+    from matplotlib.figure import Figure
+
+    import importlib
+
+    render = importlib.import_module("ballrace.fem.render")   # fem.render is a function
+
+    # the half model: its nodes and slices as solved (-L/2 .. L/2), not mirrored; the
+    # title says the tilt and the loaded end
+    ax = Figure().subplots()
+    render._roller_pressure_axes(ax, tilted)
+    fe_nodes, fe_slices, lc = ax.get_lines()[:3]
+    assert np.array_equal(fe_nodes.get_xdata(), tilted.x * 1e3)
+    assert np.array_equal(fe_slices.get_xdata(), tilted.slice_x * 1e3)
+    assert np.array_equal(lc.get_xdata(), tilted.analytic.x * 1e3)
+    assert "tilt 0.5 mrad" in ax.get_title() and "loaded end at +x" in ax.get_title()
+    assert "tilt 0.5 mrad" in render._roller_label(tilted)
+    # the quarter model: mirrored about the centre to the whole length
+    q0 = untilted[0]
+    ax = Figure().subplots()
+    render._roller_pressure_axes(ax, q0)
+    x = ax.get_lines()[0].get_xdata()
+    assert x.size == 2 * q0.x.size - 1 and np.allclose(x, -x[::-1])
+    assert "tilt" not in ax.get_title() and "tilt" not in render._roller_label(q0)
+
+
+@pytest.mark.skipif(not can_draw, reason="pyvista or matplotlib missing")
+def test_tilted_roller_picture_from_the_results_own_raceway(tilted, tmp_path):
+    from ballrace.fem.render import render_roller, roller_raceway_state
+
+    state, u = roller_raceway_state(tilted)
+    # the half model's raceway spans both ends of the roller
+    assert state.mesh.p[0].min() < -L / 2 and state.mesh.p[0].max() > L / 2
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", DeprecationWarning)
+        p = render_roller(tilted, str(tmp_path / "tilted.png"), field="max_shear")
+    assert (tmp_path / "tilted.png").stat().st_size > 50_000 and p.endswith("tilted.png")

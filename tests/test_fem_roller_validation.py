@@ -24,7 +24,7 @@ def test_registered_as_an_fe_calculation_of_the_fem_area():
 
 def test_cases_load_with_one_quick_and_one_standard_case_per_profile():
     cases = load_cases("fem_roller.toml")
-    assert len(cases) == 6
+    assert len(cases) == 7
     levels = {c.id: tuple(c.fem_levels) for c in cases}
     for prof in ("lundberg", "crowned", "straight"):
         assert levels[f"fem-roller-{prof}-quick"] == ("quick",)
@@ -44,6 +44,16 @@ def test_cases_load_with_one_quick_and_one_standard_case_per_profile():
     crown = {e.name: e for e in by_id["fem-roller-crowned-standard"].expected}
     assert crown["max_pressure"].rtol == EDGE_TOLERANCE["crowned"]
     assert crown["peak_slice_load"].rtol == EDGE_TOLERANCE["crowned_slice_load"]
+    # the tilted crown at the quick level: TILT_TOLERANCE, the loaded end named (+x)
+    from ballrace.fem.roller import TILT_TOLERANCE
+
+    t = by_id["fem-roller-crowned-tilted-quick"]
+    assert t.fem_levels == ("quick",) and t.inputs["tilt"] == pytest.approx(5e-4, rel=1e-12)
+    exp = {e.name: e for e in t.expected}
+    assert exp["end_quarter_load"].rtol == TILT_TOLERANCE["quick"]["end_quarter_load"]
+    assert exp["end_slice_load_deviation"].max == TILT_TOLERANCE["quick"]["end_slices"]
+    assert (exp["loaded_end"].value, exp["loaded_end"].atol) == (1.0, 0.0)
+    assert "+x" in t.title
 
 
 def test_expected_values_are_line_contacts():
@@ -57,12 +67,14 @@ def test_expected_values_are_line_contacts():
         i = case.inputs
         prof = roller_profile(i["profile"], i["flat_length"], i["crown_radius"])
         c = line_contact(i["load"], 0.5 * i["roller_diameter"], i["raceway_radius"],
-                         i["roller_length"], st, st, profile=prof, n_slices=41)
+                         i["roller_length"], st, st, profile=prof, tilt=i["tilt"], n_slices=41)
         mid = 20
+        s0 = 0 if i["tilt"] else mid         # the half model compares every slice
         ref = {"centre_pressure": c.pressure[mid], "max_pressure": c.pressure.max(),
                "approach": c.approach, "centre_slice_load": c.slice_loads[mid],
                "end_slice_load": c.slice_loads[-1],
-               "peak_slice_load": c.slice_loads[mid + int(c.pressure[mid:].argmax())]}
+               "peak_slice_load": c.slice_loads[s0 + int(c.pressure[s0:].argmax())],
+               "end_quarter_load": c.slice_loads[c.x >= c.length / 4].sum()}
         for e in case.expected:
             if e.name in ref:
                 assert e.value == pytest.approx(float(ref[e.name]), rel=2e-6), (case.id, e.name)
@@ -79,7 +91,7 @@ def test_profile_inputs():
 
 def test_fem_none_skips_the_roller_cases_without_running_them():
     run = run_cases(load_cases("fem_roller.toml"), fem="none", serial=True)
-    assert [r.status for r in run.results] == ["skipped"] * 6
+    assert [r.status for r in run.results] == ["skipped"] * 7
     from ballrace.validation.figures_fem import roller_figures
 
     (fig,) = roller_figures(run)

@@ -292,13 +292,27 @@ _ROLLER_CAPTION = (
     "cut open at the section under the roller axis and at mid-length, coloured by the FE "
     "von Mises stress (the axis along the roller drawn compressed), above the pressure "
     "along the whole roller.")
+_TILTED_CAPTION = (
+    "A profiled roller tilted about the rolling direction on a flat raceway, FE "
+    "(ballrace.fem.roller_contact, half-space mode, the half model: the whole length, "
+    "both roller ends resolved) against line_contact at the same tilt (the strip method "
+    "on the half-space; a positive tilt puts the end at +x in).  Left: the pressure along "
+    "the whole roller - the FE peak over the rolling direction at the pressure nodes, the "
+    "FE pressure averaged over each of line_contact's slices, and line_contact's slice "
+    "pressures; right: the load each slice carries.  The picture (pyvista, off-screen) "
+    "shows the raceway under the roller cut open at the section under the roller axis "
+    "over the whole length, seen from the more loaded end, coloured by the FE von Mises "
+    "stress (the axis along the roller drawn compressed), above the pressure along the "
+    "roller.")
 
 
 def _steps(x, y, width):
-    """Step-line coordinates of slice values ``y`` centred at ``x`` of ``width`` [any]."""
+    """Step-line coordinates of slice values ``y`` centred at ``x`` of ``width`` [any]
+    (the slices of a half roller, all ``x >= 0``, start at its centre 0)."""
     xs, ys = [], []
+    floor = 0.0 if min(x, default=0.0) >= 0 else -math.inf
     for xc, v in zip(x, y):
-        lo = max(xc - 0.5 * width, 0.0)
+        lo = max(xc - 0.5 * width, floor)
         xs += [lo, xc + 0.5 * width]
         ys += [v, v]
     return xs, ys
@@ -324,6 +338,8 @@ def roller_panels(series: dict) -> tuple:
     mm, mpa = 1e3, 1e-6
     w = float(series["slice_width"][0]) * mm
     half = 0.5 * float(series["length"][0]) * mm
+    # the half model (a tilt) spans the whole length: both roller ends marked
+    ends = [{"x": -half}, {"x": half}] if min(series["x"]) < 0 else [{"x": half}]
     sx = [v * mm for v in series["slice_x"]]
     lx = [v * mm for v in series["line_x"]]
     fx, fy = _steps(sx, [v * mpa for v in series["slice_pressure"]], w)
@@ -336,14 +352,14 @@ def roller_panels(series: dict) -> tuple:
                            {"x": fx, "y": fy, "label": "FE: slice average", "color": "C1"},
                            {"x": ax_, "y": ay_, "label": "line_contact (slices)",
                             "style": "dashed", "color": "k"}],
-                "vlines": [{"x": half}], "legend": "below"}
+                "vlines": ends, "legend": "below"}
     loads = {"kind": "lines", "title": "slice loads", "xlabel": "slice centre x [mm]",
              "ylabel": "load per slice [N]",
              "series": [{"x": sx, "y": [float(v) for v in series["slice_loads"]],
                          "label": "FE", "style": "markers"},
                         {"x": lx, "y": [float(v) for v in series["line_slice_loads"]],
                          "label": "line_contact", "style": "dashed-markers", "color": "k"}],
-             "vlines": [{"x": half}], "legend": "below"}
+             "vlines": ends, "legend": "below"}
     return pressure, loads
 
 
@@ -371,9 +387,17 @@ def roller_figures(run=None) -> list[Figure]:
                        if "straight" in r.id else "."))
         imgs = tuple(tuple(a) for a in r.artifacts if a[1])
         note = "; ".join(a[0] for a in r.artifacts if not a[1])
+        tilt = float((s.get("tilt") or [0.0])[0])
+        if tilt:
+            end = "+x" if o.get("loaded_end", 1.0) > 0 else "-x"
+            edge += (f"  Tilt {tilt * 1e3:.3g} mrad: the loaded end at {end}; its outer "
+                     f"quarter (|x| >= L/4) carries {o.get('end_quarter_load', math.nan):.4g} N "
+                     f"in the FE, {o.get('end_quarter_load_line', math.nan):.4g} N in "
+                     f"line_contact ({100 * o.get('end_quarter_load_vs_line', math.nan):+.2f} %).")
         figs.append(Figure(f"fem-roller-{r.id}", _SECTION,
                            f"FE roller against line_contact: {r.title}",
-                           caption=_ROLLER_CAPTION + edge, panels=roller_panels(s),
+                           caption=(_TILTED_CAPTION if tilt else _ROLLER_CAPTION) + edge,
+                           panels=roller_panels(s),
                            images=imgs, note=note, size=(11.0, 3.6)))
     if seen and not figs:
         return [Figure("fem-roller", _SECTION, "FE roller against line_contact",

@@ -30,8 +30,8 @@ Time (2 cores shared with other jobs, load average 6–9, PARDISO; measured with
 /usr/bin/time): the analytic figures 4–6 s of CPU; everything at the quick level 40 s of
 CPU (100 s of wall time, 0.8 GB), at the standard level 196 s of CPU (450 s of wall time,
 3.2 GB peak: straight 207k DOFs, crowned 171k, Lundberg 139k), the meshes taken from the
-cache; the 3-D pictures (:func:`ballrace.fem.render.render_roller`, which rebuilds the
-raceway mesh) are included.
+cache; the 3-D pictures (:func:`ballrace.fem.render.render_roller`, drawn from the raceway
+each result keeps) are included.
 """
 from __future__ import annotations
 
