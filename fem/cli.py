@@ -782,7 +782,8 @@ def _roller_table(r, fc, units: str) -> None:
             f"raceway R2 = {fmt(convert(R2, 'length', units), 5)} {unit_label('length', units)}")
     total = r.timings.get("total")
     lu = unit_label("length", units)
-    title = (f"{_profile_text(fc.profile)} roller, Q = {fmt(convert(fc.load, 'force', units))} "
+    title = (f"{_profile_text(fc.profile)} roller\n"       # a line of its own: fits 80 columns
+             f"Q = {fmt(convert(fc.load, 'force', units))} "
              f"{unit_label('force', units)}, D = "
              f"{fmt(convert(2 * fc.roller_radius, 'length', units), 5)} {lu}, L = "
              f"{fmt(convert(fc.length, 'length', units), 5)} {lu}, {race}\n"

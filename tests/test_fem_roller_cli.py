@@ -233,7 +233,7 @@ def test_quick_roller_run_end_to_end(tmp_path, api_result):
     assert not logging.getLogger("ballrace.meshes.contact").isEnabledFor(logging.INFO)
     # the table: engineering units, every row within 80 columns
     assert "Lundberg roller on a flat raceway, 5 kN" in res.stdout
-    assert "lundberg roller, Q = 5000 N, D = 12 mm, L = 12 mm, flat raceway" in res.stdout
+    assert "lundberg roller\nQ = 5000 N, D = 12 mm, L = 12 mm, flat raceway" in res.stdout
     for label in ("centre pressure (slice)", "approach", "von Mises, centre", "load of end slice"):
         assert label in res.stdout
     assert "MPa" in res.stdout and "µm" in res.stdout
