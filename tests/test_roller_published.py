@@ -164,5 +164,5 @@ def test_load_distribution_figures_of_roller_cases_speak_of_rollers():
     figs = [f for f in figures.bearing_figures(run) if f.id.startswith("bearing-roller-")]
     assert figs, "the roller cases with a load distribution give a figure"
     for f in figs:
-        assert f.panels[0]["title"] == "roller loads"
+        assert f.section == "roller" and f.panels[0]["title"] == "roller loads"
         assert f.panels[0]["series"][0]["label"] == "ballrace (per roller)"

@@ -354,9 +354,10 @@ def bearing_figures(run) -> list[Figure]:
         if jones is not None:
             caption += (" Dashed: Jones's closed-form distribution at the same clearance "
                         "ratio.")
-        figs.append(Figure(f"bearing-{r.id}", "bearing", f"Load distribution: {r.title}",
+        figs.append(Figure(f"bearing-{r.id}", "roller" if element == "roller" else "bearing",
+                           f"Load distribution: {r.title}",
                            caption=caption, panels=tuple(panels), size=(5.0 * len(panels), 3.6)))
-    if not figs:
+    if not any(f.section == "bearing" for f in figs):
         figs.append(Figure("bearing", "bearing", "Load distribution",
                            note="omitted: no bearing case produced a load distribution in this "
                                 "run (module missing or cases not selected)"))
