@@ -24,9 +24,10 @@ _MARK = {"pass": "PASS", "fail": "FAIL", "error": "ERROR", "missing": "MISSING",
          "skipped": "SKIP"}
 
 def validate(
-    cases: Annotated[Optional[str], typer.Option(
+    cases: Annotated[Optional[list[str]], typer.Option(
         "--cases", help="Glob of case files (default: all packaged cases); a relative pattern "
-                        "such as 'hertz*' is also tried in the packaged case folder.")] = None,
+                        "such as 'hertz*' is also tried in the packaged case folder.  Give "
+                        "it again for more (--cases roller --cases 'fem_roller*').")] = None,
     fem: Annotated[str, typer.Option(
         "--fem", help="FE level: quick | standard | none (none reports FE cases as skipped "
                       "by request).")] = "quick",
@@ -63,9 +64,10 @@ def validate(
         _usage(console, "--update-baseline needs --baseline FILE (where to write it)")
     if baseline is not None and not update_baseline:
         _check_baseline(console, baseline)
-    if cases is not None and Path(cases).is_dir():
-        _usage(console, f"--cases {cases}: is a directory; give a file or a glob such as "
-                        f"'{Path(cases) / '*.toml'}'")
+    for pattern in cases or ():
+        if Path(pattern).is_dir():
+            _usage(console, f"--cases {pattern}: is a directory; give a file or a glob such as "
+                            f"'{Path(pattern) / '*.toml'}'")
     if report is not None and report.exists() and not report.is_dir():
         _usage(console, f"--report {report}: exists and is not a folder")
     try:

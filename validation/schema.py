@@ -463,26 +463,36 @@ def default_case_dir() -> Path:
     return Path(str(resources.files("ballrace.validation") / "cases"))
 
 
-def load_cases(pattern: str | None = None) -> list[Case]:
+def _case_files(pattern: str) -> list[Path]:
+    """The case files of one ``--cases`` glob (files only: 'fem*' run from a checkout also
+    matches the fem/ package folder), tried in the packaged case folder when a relative
+    pattern matches nothing here."""
+    files = sorted(Path(p) for p in _glob.glob(pattern) if os.path.isfile(p))
+    if not files and not os.path.isabs(pattern):
+        pat = pattern if pattern.endswith(".toml") else pattern + ".toml"
+        files = sorted(default_case_dir().glob(pat))
+    if not files:
+        raise CaseFileError(f"--cases {pattern!r}: no case files match (looked in the "
+                            f"working directory and {default_case_dir()})")
+    return files
+
+
+def load_cases(pattern=None) -> list[Case]:
     """Load every case file matching ``pattern`` (default: all packaged cases), sorted by path.
 
     The default selection leaves out the cases tagged :data:`ON_DEMAND`.
 
-    ``pattern`` is a glob; a relative pattern that matches nothing in the working
-    directory is tried inside the packaged case directory (``--cases 'hertz*'``).
-    Case ids must be unique.
+    ``pattern`` is a glob, or a list of globs (their files together, each once); a
+    relative pattern that matches nothing in the working directory is tried inside the
+    packaged case directory (``--cases 'hertz*'``).  Case ids must be unique.
     """
-    if pattern is None:
+    if pattern is None or (not isinstance(pattern, str) and not pattern):
+        pattern = None
         files = sorted(default_case_dir().glob("*.toml"))
     else:
-        # files only: 'fem*' run from a checkout also matches the fem/ package folder
-        files = sorted(Path(p) for p in _glob.glob(pattern) if os.path.isfile(p))
-        if not files and not os.path.isabs(pattern):
-            pat = pattern if pattern.endswith(".toml") else pattern + ".toml"
-            files = sorted(default_case_dir().glob(pat))
-        if not files:
-            raise CaseFileError(f"--cases {pattern!r}: no case files match (looked in the "
-                                f"working directory and {default_case_dir()})")
+        patterns = [pattern] if isinstance(pattern, str) else list(pattern)
+        found = {f.resolve(): f for pat in patterns for f in _case_files(pat)}
+        files = sorted(found.values())
     out: list[Case] = []
     seen: dict[str, str] = {}
     for f in files:
