@@ -333,9 +333,11 @@ def _render(r: dict, units: str = "eng") -> None:
     print_columns(con, "Seats: deflection and lives",
                   ["seat", f"radial defl. [{Sm}]", "L10r [h]", "ISO 281 L10 [h]"], t4)
     legend = ("Fr = sqrt(Fy^2 + Fz^2); P_d: the seat's operating diametral clearance "
-              "(negative: preload); s0 = (4200 MPa / p_max)^3 from the most loaded contact "
-              "(ISO 76 bases C0 on 4200 MPa); L10r: ISO/TS 16281 life from the ball loads, "
-              "ISO 281 L10 from P = X Fr + Y Fa")
+              "(negative: preload)")
+    if any(s.get("rolling_element") != "roller" for s in r["seats"]):      # ball seats
+        legend += ("; s0 = (4200 MPa / p_max)^3 from the most loaded contact "
+                   "(ISO 76 bases C0 on 4200 MPa); L10r: ISO/TS 16281 life from the ball "
+                   "loads, ISO 281 L10 from P = X Fr + Y Fa")
     if any(s.get("rolling_element") == "roller" for s in r["seats"]):
         legend += ("; roller seats: Q_max the largest roller load, p_max and s0 = "
                    "(4000 MPa / p_max)^2 of the most loaded slice of the lamina model (ISO 76 "
