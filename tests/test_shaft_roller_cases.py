@@ -156,6 +156,11 @@ def test_examples_run_in_table_and_json_mode(path):
     assert re.search(r"Q_max", res.stdout) and "roller" in res.stdout
     d = _json(path)
     assert all(s["rolling_element"] == "roller" for s in d["seats"] if "max_roller_load" in s)
+    # the note explains the ball rule (4200 MPa, cubic) only where a ball seat is shown
+    text = " ".join(res.stdout.split())
+    has_ball = any(s.get("rolling_element") != "roller" for s in d["seats"])
+    assert ("(4200 MPa / p_max)^3" in text) == has_ball
+    assert "(4000 MPa / p_max)^2" in text
 
 
 def _statics(d, weight_at=None):
