@@ -426,12 +426,14 @@ def _roller_half_space(res, p_in, p_out) -> Optional[dict]:
     """The most loaded roller on the half-space at the raceway of the larger lamina
     pressure: its line contact's pressure peak and the von Mises / Tresca maxima below it
     (SI), or None without load."""
+    from ballrace.analytic.roller import subsurface_stress
+
     raceway = "inner" if p_in.max() >= p_out.max() else "outer"
     j = res.most_loaded_roller(raceway)
     c = res.roller_contact(j, raceway)
     if not c.load > 0.0:
         return None
-    s = res.subsurface(raceway, roller=j)
+    s = subsurface_stress(c, nu=res.bearing.material.nu)     # = res.subsurface(raceway)
     k, i = int(np.argmax(c.pressure)), int(np.argmax(s.von_mises_max))
     t = int(np.argmax(s.tresca_max))
     return {"raceway": raceway, "roller": j, "load": float(c.load),

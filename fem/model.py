@@ -33,8 +33,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["PressureGrid", "Body", "BodyState", "assemble_body", "ContactSolution",
-           "solve_contact", "compliance", "traction_response"]
+__all__ = ["PressureGrid", "Body", "skfem_mesh", "BodyState", "assemble_body",
+           "ContactSolution", "solve_contact", "compliance", "traction_response"]
 
 log = logging.getLogger(__name__)
 
@@ -267,7 +267,17 @@ class BodyState:
         return self.basis.mesh
 
 
-def _skfem_mesh(points, tets):
+def skfem_mesh(points, tets):
+    """The scikit-fem ``MeshTet`` of a tetrahedral mesh, every tetrahedron oriented
+    positively (as the bodies are assembled).
+
+    Parameters
+    ----------
+    points : ndarray, shape (n, 3)
+        Node coordinates [m].
+    tets : ndarray, shape (m, 4)
+        Node indices of each tetrahedron [-].
+    """
     from skfem import MeshTet
 
     p = np.ascontiguousarray(points.T)
@@ -395,7 +405,7 @@ def assemble_body(body: Body, grid: PressureGrid, solver: str | None = None) -> 
 
     tm = {}
     t0 = time.perf_counter()
-    mesh = _skfem_mesh(body.points, body.tets)
+    mesh = skfem_mesh(body.points, body.tets)
     ev = ElementVector(ElementTetP2())
     basis = Basis(mesh, ev, intorder=1)        # DOF numbering only; K is assembled below
     sbasis = basis.with_element(ElementTetP2())

@@ -587,11 +587,12 @@ def roller_raceway_state(r, *, raceway_radius=None, material=None):
     """
     from types import SimpleNamespace
 
-    from skfem import Basis, ElementTetP2, ElementVector, MeshTet
+    from skfem import Basis, ElementTetP2, ElementVector
 
     from ballrace.errors import warn
 
     from . import extract as ex
+    from .model import skfem_mesh
 
     body = r.fields.get("raceway")
     if body is None:
@@ -614,14 +615,7 @@ def roller_raceway_state(r, *, raceway_radius=None, material=None):
         if not math.isclose(float(material.nu), float(body.nu), rel_tol=1e-12):
             raise ValueError(f"material: nu = {material.nu!r}, the raceway was solved with "
                              f"nu = {body.nu!r}; leave material out")
-    p = np.ascontiguousarray(np.asarray(body.points).T)
-    t = np.ascontiguousarray(np.asarray(body.tets).T)
-    a, b, cc, d = (p[:, t[i]] for i in range(4))       # positive orientation, as assembled
-    neg = np.einsum("ij,ij->j", np.cross(b - a, cc - a, axis=0), d - a) < 0
-    if np.any(neg):
-        t = t.copy()
-        t[[1, 2]] = np.where(neg, t[[2, 1]], t[[1, 2]])
-    mesh = MeshTet(p, t)
+    mesh = skfem_mesh(np.asarray(body.points), np.asarray(body.tets))   # as assembled
     sbasis = Basis(mesh, ElementVector(ElementTetP2()), intorder=1).with_element(ElementTetP2())
     surface = body.surface
     state = SimpleNamespace(body=SimpleNamespace(name=body.name, E=float(body.E),

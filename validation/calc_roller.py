@@ -26,7 +26,7 @@ ROLLER_INPUTS = {
 
 def make_roller_bearing(roller_diameter, roller_length, n_rollers, pitch_diameter,
                         kind="cylindrical", contact_angle=0.0, diametral_clearance=0.0,
-                        profile="iso", n_slices=31, E=200e9, nu=0.3):
+                        profile="iso", n_slices=31, E=200e9, nu=0.3, stiffness="iso"):
     """A :class:`ballrace.analytic.roller.RollerBearing` from SI inputs."""
     from ballrace import Material
     from ballrace.analytic.roller import RollerBearing
@@ -35,7 +35,7 @@ def make_roller_bearing(roller_diameter, roller_length, n_rollers, pitch_diamete
                          n_rollers=n_rollers, pitch_diameter=pitch_diameter, kind=kind,
                          contact_angle=contact_angle,
                          diametral_clearance=diametral_clearance, profile=profile,
-                         n_slices=n_slices, material=Material(E=E, nu=nu))
+                         n_slices=n_slices, stiffness=stiffness, material=Material(E=E, nu=nu))
 
 
 def _split(kw):

@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import math
 
+from .calc_roller import make_roller_bearing
 from .registry import Param, calculation
 
 __all__ = ["radial_integral", "axial_integral", "jr_method", "discrete_method",
@@ -136,15 +137,8 @@ def discrete_method(Fr: float, azimuths, K: float, clearance: float,
     return K * (dr - clearance / 2.0) ** n, dr
 
 
-def _bearing(roller_diameter, roller_length, n_rollers, pitch_diameter, clearance,
-             profile, n_slices, stiffness, E, nu):
-    from ballrace import Material
-    from ballrace.analytic.roller import RollerBearing
-
-    return RollerBearing(roller_diameter=roller_diameter, roller_length=roller_length,
-                         n_rollers=n_rollers, pitch_diameter=pitch_diameter,
-                         diametral_clearance=clearance, profile=profile, n_slices=n_slices,
-                         stiffness=stiffness, material=Material(E=E, nu=nu))
+def _bearing(clearance, **kw):
+    return make_roller_bearing(diametral_clearance=clearance, **kw)
 
 
 @calculation("roller.load_zone_integral", requires=(_ROLLER,),
